@@ -1,0 +1,22 @@
+#pragma once
+// The subcommands of the `scantrace` binary (design.md §7). Each add_*_command registers its
+// options on the app and returns the action to run once the whole command line has parsed, so
+// that parsing (usage errors, exit status 2) and running (bad input, exit status 1) stay apart.
+#include <functional>
+
+namespace CLI {
+class App;
+}
+
+namespace scantrace::cli {
+
+struct Command {
+  CLI::App* app = nullptr;
+  // Throws InputError for bad input data, another std::exception for any other failure.
+  std::function<void()> run;
+};
+
+Command add_render_command(CLI::App& app);
+Command add_demo_command(CLI::App& app);
+
+}  // namespace scantrace::cli

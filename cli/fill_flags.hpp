@@ -1,0 +1,26 @@
+#pragma once
+// The options that choose how triangles are filled, shared by every subcommand that fills
+// (render now; trace and explain later), so they are spelled and explained the same everywhere.
+#include <string>
+
+#include "src/fill_options.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace scantrace::cli {
+
+struct FillFlags {
+  std::string shading = "gouraud";
+  std::string fill_rule = "top-left";
+  int subpixel_bits = kDefaultSubpixelBits;
+
+  FillOptions options() const;
+};
+
+// Adds --shading, --fill-rule and --subpixel-bits to `command`, writing into `flags` (which must
+// outlive the parse). Invalid values are usage errors.
+void add_fill_flags(CLI::App& command, FillFlags& flags);
+
+}  // namespace scantrace::cli

@@ -1,0 +1,69 @@
+// The `scantrace` command: subcommand dispatch and exit status (design.md §7):
+// 0 success, 1 bad input data or a failed output (one line on stderr naming the file, the element
+// and the problem), 2 usage error.
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/log.hpp"
+
+namespace {
+
+constexpr int kExitSuccess = 0;
+constexpr int kExitBadInput = 1;
+constexpr int kExitUsage = 2;
+
+// CLI11's own message plus where to find help, naming the subcommand when one was reached.
+std::string usage_failure(const CLI::App* app, const CLI::Error& e) {
+  std::string help = "scantrace --help";
+  for (const CLI::App* sub : app->get_subcommands())
+    help = "scantrace " + sub->get_name() + " --help";
+  return "scantrace: usage error: " + std::string(e.what()) + "\nRun '" + help +
+         "' for more information.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  scantrace::cli::setup_logging();
+
+  CLI::App app("scantrace " SCANTRACE_VERSION
+               ": an educational, exact edge-table scanline rasterizer.\n"
+               "Fills triangles with the course's edge table and active edge list, flat or\n"
+               "Gouraud, in painter's order, with exact integer coverage decisions.\n",
+               "scantrace");
+  app.set_version_flag("--version", "scantrace " SCANTRACE_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough();  // app-level flags (--quiet) are accepted after the subcommand too
+  app.failure_message(usage_failure);
+  bool quiet = false;
+  app.add_flag("-q,--quiet", quiet, "print only warnings and errors");
+  app.footer(
+      "Run 'scantrace SUBCOMMAND --help' for the options of a subcommand.\n"
+      "Exit status: 0 success, 1 bad input data (one line on stderr naming the\n"
+      "file, the element and the problem) or a failed write, 2 usage error.");
+
+  const std::vector<scantrace::cli::Command> commands{scantrace::cli::add_demo_command(app),
+                                                      scantrace::cli::add_render_command(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version arrive as "errors" with status 0; every real parse error is a usage
+    // error, whatever CLI11's own code for it.
+    return app.exit(e) == 0 ? kExitSuccess : kExitUsage;
+  }
+  scantrace::cli::set_quiet(quiet);
+
+  try {
+    for (const auto& command : commands)
+      if (command.app->parsed()) command.run();
+  } catch (const std::exception& e) {
+    spdlog::error("error: {}", e.what());
+    return kExitBadInput;
+  }
+  return kExitSuccess;
+}

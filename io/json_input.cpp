@@ -1,0 +1,75 @@
+#include "io/json_input.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+namespace scantrace::json_input {
+
+std::string read_text_file(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw InputError(file.string(), "", "cannot read file: it is a directory");
+  // stdio for the errno: "No such file or directory" is the message users need most often.
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(file.c_str(), "rb"), &std::fclose);
+  if (!f)
+    throw InputError(file.string(), "", std::string("cannot read file: ") + std::strerror(errno));
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
+  if (std::ferror(f.get()))
+    throw InputError(file.string(), "", std::string("cannot read file: ") + std::strerror(errno));
+  return text;
+}
+
+TextPosition position_of(std::string_view text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  const std::string_view before = text.substr(0, offset);
+  TextPosition p;
+  p.line = 1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
+  const std::size_t last_newline = before.rfind('\n');
+  p.column = last_newline == std::string_view::npos ? offset + 1 : offset - last_newline;
+  return p;
+}
+
+namespace {
+
+// nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, column 17:
+// syntax error while parsing value - invalid literal; last read: 'tru,'"; keep what follows the
+// position, which we report in the usual file:line:column form ourselves.
+std::string explanation(const nlohmann::json::parse_error& e) {
+  const std::string what = e.what();
+  std::size_t start = what.find("parse error");
+  start = start == std::string::npos ? std::string::npos : what.find(": ", start);
+  return start == std::string::npos ? what : what.substr(start + 2);
+}
+
+}  // namespace
+
+nlohmann::json parse(std::string_view text, const std::string& name_for_errors) {
+  try {
+    return nlohmann::json::parse(text.begin(), text.end());
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.byte counts from 1 and points at the last character read, i.e. the offending one.
+    const TextPosition p = position_of(text, e.byte == 0 ? 0 : e.byte - 1);
+    throw InputError(
+        name_for_errors + ":" + std::to_string(p.line) + ":" + std::to_string(p.column), "",
+        "JSON syntax error: " + explanation(e));
+  }
+}
+
+std::string quote(const nlohmann::json& value, std::size_t max_chars) {
+  // Strings in parsed input are valid UTF-8, but replace rather than throw if one is not.
+  std::string s = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (s.size() > max_chars) {
+    std::size_t cut = max_chars;
+    while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;  // UTF-8 start
+    s = s.substr(0, cut) + "...";
+  }
+  return s;
+}
+
+}  // namespace scantrace::json_input

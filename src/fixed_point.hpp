@@ -1,0 +1,79 @@
+#pragma once
+// The subpixel grid. Coverage is decided on vertices snapped to multiples of 1/2^bits pixel, in
+// integer arithmetic, so that no pixel's fate depends on floating-point rounding: two triangles
+// sharing an edge see bit-identical edge coordinates and compute the same exact intersections.
+//
+// Ranges: |coordinate| <= kMaxCoordinate pixels (just above 1e9, so vertices a billion pixels off
+// the canvas still work) and bits <= kMaxSubpixelBits. Then a snapped coordinate needs < 2^43,
+// a difference < 2^44, the stepping increment dx·2^bits < 2^56 (int64), and the products formed
+// when starting an edge at a row or comparing two edges < 2^100 (__int128).
+#include <cmath>
+#include <cstdint>
+
+#include "vec2.hpp"
+
+namespace scantrace {
+
+using i64 = std::int64_t;
+__extension__ using i128 = __int128;
+
+inline constexpr double kMaxCoordinate = 1073741824.0;  // 2^30 px
+inline constexpr int kMaxSubpixelBits = 12;
+inline constexpr int kDefaultSubpixelBits = 8;
+
+// A point on the subpixel grid, in units of 1/2^bits pixel.
+struct FixedPoint {
+  i64 x = 0, y = 0;
+  friend constexpr bool operator==(FixedPoint, FixedPoint) = default;
+};
+
+// floor(a / b) and the matching non-negative remainder, for b > 0.
+inline constexpr i64 floor_div(i128 a, i64 b) {
+  i128 q = a / b;
+  if ((a % b) < 0) --q;
+  return static_cast<i64>(q);
+}
+
+class SubpixelGrid {
+ public:
+  explicit constexpr SubpixelGrid(int bits = kDefaultSubpixelBits) : bits_(bits) {}
+
+  constexpr int bits() const { return bits_; }
+  constexpr i64 scale() const { return i64{1} << bits_; }
+  constexpr bool valid() const { return bits_ >= 0 && bits_ <= kMaxSubpixelBits; }
+
+  // True when p is finite and inside the supported coordinate range.
+  static bool representable(Vec2 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::fabs(p.x) <= kMaxCoordinate &&
+           std::fabs(p.y) <= kMaxCoordinate;
+  }
+
+  // Round to the nearest grid point, ties upward (floor(v + 1/2)). Unlike rounding ties away from
+  // zero this commutes with translation by whole pixels, which design.md §3 requires.
+  FixedPoint snap(Vec2 p) const {
+    const double s = static_cast<double>(scale());
+    return {round_half_up(p.x * s), round_half_up(p.y * s)};
+  }
+
+  // floor(v + 1/2) without evaluating v + 1/2, which rounds the largest double below 0.5 up to
+  // 1.0. v·2^bits is exact (a power-of-two scale) and so is v − floor(v), so the tie test is exact.
+  static i64 round_half_up(double v) {
+    const double f = std::floor(v);
+    return static_cast<i64>(f) + (v - f >= 0.5 ? 1 : 0);
+  }
+
+  Vec2 to_pixels(FixedPoint p) const {
+    const double s = static_cast<double>(scale());
+    return {static_cast<double>(p.x) / s, static_cast<double>(p.y) / s};
+  }
+
+  // The smallest row/column index whose pixel centre is at or after v (grid units): ceil(v / 2^bits).
+  constexpr i64 ceil_to_pixel(i64 v) const { return -floor_div(-static_cast<i128>(v), scale()); }
+  // The largest index whose centre is at or before v: floor(v / 2^bits).
+  constexpr i64 floor_to_pixel(i64 v) const { return floor_div(v, scale()); }
+
+ private:
+  int bits_;
+};
+
+}  // namespace scantrace

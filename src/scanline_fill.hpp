@@ -1,0 +1,311 @@
+#pragma once
+// The edge-table / active-edge-list scanline fill of a convex polygon (a triangle being the
+// common case), flat or Gouraud, under the fill rules of design.md §3.
+//
+//   1. snap the vertices to the subpixel grid; reject what cannot fill a pixel (degenerate,
+//      off the canvas) before any per-row work;
+//   2. build the edge table: non-horizontal edges sorted by their first scanline;
+//   3. sweep the scanlines that are on the canvas: retire edges that ended, let edges that start
+//      enter the active list (kept in exact x order), take the span between the leftmost and
+//      rightmost active points, clip it to the canvas and write it; step every active edge to
+//      the next row exactly.
+//
+// Rows before the canvas are never iterated: an edge entering below its first row is started
+// directly at the first visible row (Edge::start_at). Columns outside are clipped before writing.
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "canvas.hpp"
+#include "edge_table.hpp"
+#include "fill_options.hpp"
+#include "tracer.hpp"
+#include "vector_interp.hpp"
+
+namespace scantrace {
+
+// One polygon to fill: its vertices (pixels) and one colour per vertex. `triangle` is the index
+// the trace reports (the face index in a scene); `depth` is reported when known.
+struct PolygonInput {
+  std::span<const Vec2> points;
+  std::span<const Color> colors;
+  int triangle = 0;
+  std::optional<double> depth;
+};
+
+struct FillResult {
+  SkipReason skipped = SkipReason::none;
+  i64 rows = 0;    // scanlines visited (on the canvas)
+  i64 pixels = 0;  // pixels written
+};
+
+// Working storage of the fill, reusable across polygons: a renderer keeps one and allocates
+// nothing per triangle once the vectors have grown to their working size.
+struct FillScratch {
+  std::vector<FixedPoint> snapped;
+  std::vector<int> order;
+  EdgeTable table;
+  std::vector<Edge> active;
+  // Only used when tracing.
+  std::vector<int> entered, retired;
+  std::vector<ActiveEdgeState> active_states;
+  std::vector<ActivePointState> active_points;
+};
+
+namespace detail {
+
+// Twice the signed area, exactly.
+inline i128 twice_area(std::span<const FixedPoint> p) {
+  i128 a = 0;
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    const FixedPoint u = p[i], v = p[(i + 1) % n];
+    a += static_cast<i128>(u.x) * v.y - static_cast<i128>(v.x) * u.y;
+  }
+  return a;
+}
+
+// The mean of the vertex colours, summed in a canonical vertex order (by snapped y, then x) so that
+// listing the same polygon's vertices in another order cannot change the last bit of the result.
+inline Color mean_color(std::span<const FixedPoint> p, std::span<const Color> colors,
+                        std::vector<int>& order) {
+  order.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return p[a].y != p[b].y ? p[a].y < p[b].y : p[a].x != p[b].x ? p[a].x < p[b].x : a < b;
+  });
+  Color sum;
+  for (int i : order) sum += colors[i];
+  return sum * (1.0 / static_cast<double>(p.size()));
+}
+
+// The colour where `e` crosses row y: the course's vector_interp along y, from the upper endpoint
+// to the lower one (a fixed direction, so both triangles sharing the edge get the same value).
+inline Color edge_color(const Edge& e, i64 y, std::span<const Color> colors,
+                        const SubpixelGrid& grid) {
+  return vector_interp(grid.to_pixels(e.p_top), grid.to_pixels(e.p_bottom), colors[e.top],
+                       colors[e.bottom], static_cast<double>(y), Axis::y);
+}
+
+}  // namespace detail
+
+template <Canvas C, FillTracer Tracer = NoTracer>
+FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& opt,
+                        FillScratch& s, Tracer& tracer) {
+  constexpr bool kTriangleLevel = Tracer::max_level >= TraceLevel::triangle;
+  constexpr bool kScanlineLevel = Tracer::max_level >= TraceLevel::scanline;
+  constexpr bool kPixelLevel = Tracer::max_level >= TraceLevel::pixel;
+  [[maybe_unused]] bool traced = false;
+  if constexpr (kTriangleLevel) traced = tracer.wants_triangle(in.triangle);
+
+  auto skip = [&](SkipReason reason) {
+    if constexpr (kTriangleLevel)
+      if (traced) tracer.triangle_skipped(in.triangle, reason);
+    return FillResult{reason, 0, 0};
+  };
+
+  const SubpixelGrid grid(opt.subpixel_bits);
+  if (!grid.valid())
+    throw std::invalid_argument("fill: subpixel_bits must be in 0…" +
+                                std::to_string(kMaxSubpixelBits));
+  const std::size_t n = in.points.size();
+  if (in.colors.size() != n)
+    throw std::invalid_argument("fill: one colour per vertex is needed");
+  if (n < 3) return skip(SkipReason::too_few_vertices);
+  s.snapped.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!SubpixelGrid::representable(in.points[i])) return skip(SkipReason::out_of_range);
+    s.snapped[i] = grid.snap(in.points[i]);
+  }
+  const std::span<const FixedPoint> pts(s.snapped);
+  // A zero-area polygon has no interior; under the top-left rule it owns no pixel, and the closed
+  // rule is defined here for polygons with an interior too, so both skip it.
+  if (detail::twice_area(pts) == 0) return skip(SkipReason::degenerate);
+
+  const bool closed = opt.fill_rule == FillRule::closed;
+  const int width = canvas.width(), height = canvas.height();
+  {
+    i64 x_min = pts[0].x, x_max = pts[0].x, y_min = pts[0].y, y_max = pts[0].y;
+    for (const FixedPoint& p : pts) {
+      x_min = std::min(x_min, p.x), x_max = std::max(x_max, p.x);
+      y_min = std::min(y_min, p.y), y_max = std::max(y_max, p.y);
+    }
+    const i64 col_last = closed ? grid.floor_to_pixel(x_max) : grid.ceil_to_pixel(x_max) - 1;
+    const i64 row_last = closed ? grid.floor_to_pixel(y_max) : grid.ceil_to_pixel(y_max) - 1;
+    if (grid.ceil_to_pixel(x_min) > std::min<i64>(col_last, width - 1) || col_last < 0 ||
+        grid.ceil_to_pixel(y_min) > std::min<i64>(row_last, height - 1) || row_last < 0)
+      return skip(SkipReason::offscreen);
+  }
+
+  const bool gouraud = opt.shading == Shading::gouraud;
+  const Color flat = detail::mean_color(pts, in.colors, s.order);
+  if constexpr (kTriangleLevel)
+    if (traced)
+      tracer.triangle_begin(
+          PolygonSetup{in.triangle, in.points, pts, in.colors, in.depth, flat, &opt, grid});
+
+  s.table.build(pts, grid, opt.fill_rule);
+  if constexpr (kTriangleLevel)
+    if (traced) tracer.edge_table(EdgeTableView{in.triangle, &s.table, pts, grid});
+
+  const std::vector<Edge>& edges = s.table.edges();
+  const i64 y_first = std::max<i64>(s.table.first_row(), 0);
+  const i64 y_last = std::min<i64>(s.table.last_row(), height - 1);
+  std::size_t next = 0;
+  s.active.clear();
+  FillResult result;
+
+  for (i64 y = y_first; y <= y_last; ++y) {
+    [[maybe_unused]] bool trace_row = false;
+    if constexpr (kScanlineLevel) {
+      trace_row = traced && tracer.wants_scanline(in.triangle, y);
+      s.entered.clear();
+      s.retired.clear();
+    }
+
+    // Retire the edges whose last row is behind us.
+    std::erase_if(s.active, [&](const Edge& e) {
+      if (e.last_row >= y) return false;
+      if constexpr (kScanlineLevel)
+        if (trace_row) s.retired.push_back(e.id);
+      return true;
+    });
+    // Let the edges that start by this row enter, in exact x order. An edge whose rows all lie
+    // above the canvas (or that crosses no scanline) is passed over without being stepped.
+    for (; next < edges.size() && edges[next].first_row <= y; ++next) {
+      if (edges[next].last_row < y) continue;
+      Edge e = edges[next];
+      e.start_at(y, grid.scale());
+      auto at = std::find_if(s.active.begin(), s.active.end(),
+                             [&](const Edge& a) { return compare_on_row(e, a) < 0; });
+      s.active.insert(at, e);
+      if constexpr (kScanlineLevel)
+        if (trace_row) s.entered.push_back(e.id);
+    }
+    ++result.rows;
+
+    // A convex polygon meets a scanline in one interval: from the leftmost to the rightmost active
+    // point. (Under the top-left rule exactly two edges are active; the closed rule can add the
+    // two edges meeting at a vertex that lies exactly on the row.)
+    const Edge* left = s.active.size() >= 2 ? &s.active.front() : nullptr;
+    const Edge* right = s.active.size() >= 2 ? &s.active.back() : nullptr;
+    i64 x_begin = 0, x_end = 0;
+    if (left) {
+      x_begin = std::max<i64>(left->ceil_x(), 0);
+      // Half-open span [ceil(xl), ceil(xr)): a centre exactly on the right edge belongs to the
+      // neighbour on the right. The closed rule includes it: [ceil(xl), floor(xr)].
+      x_end = std::min<i64>(closed ? right->floor_x() + 1 : right->ceil_x(), width);
+    }
+    const bool has_span = x_begin < x_end;
+
+    Color c_left = flat, c_right = flat, c_begin = flat, c_step{};
+    double x_left = 0, x_right = 0;
+    if (left && (gouraud || trace_row)) {
+      x_left = left->x();
+      x_right = right->x();
+      if (gouraud) {
+        c_left = detail::edge_color(*left, y, in.colors, grid);
+        c_right = detail::edge_color(*right, y, in.colors, grid);
+        // Along the span: the course's vector_interp along x for the first pixel, then a constant
+        // increment per pixel (the colour is linear along the row).
+        const Vec2 pl{x_left, static_cast<double>(y)}, pr{x_right, static_cast<double>(y)};
+        c_begin = vector_interp(pl, pr, c_left, c_right, static_cast<double>(x_begin), Axis::x);
+        if (x_right > x_left) c_step = (c_right - c_left) * (1.0 / (x_right - x_left));
+      }
+    }
+
+    if (has_span) {
+      const int yi = static_cast<int>(y), xb = static_cast<int>(x_begin),
+                xe = static_cast<int>(x_end);
+      [[maybe_unused]] bool trace_pixels = false;
+      if constexpr (kPixelLevel) trace_pixels = trace_row && tracer.wants_pixels(in.triangle, y);
+      if (!gouraud) {
+        canvas.fill_span(yi, xb, xe, flat);
+        if constexpr (kPixelLevel)
+          if (trace_pixels)
+            for (int x = xb; x < xe; ++x)
+              tracer.pixel(in.triangle, x, y, flat,
+                           x_right > x_left ? (x - x_left) / (x_right - x_left) : 0.0);
+      } else {
+        Color c = c_begin;
+        for (int x = xb; x < xe; ++x) {
+          canvas.set(x, yi, c);
+          if constexpr (kPixelLevel)
+            if (trace_pixels)
+              tracer.pixel(in.triangle, x, y, c,
+                           x_right > x_left ? (x - x_left) / (x_right - x_left) : 0.0);
+          c += c_step;
+        }
+      }
+      result.pixels += x_end - x_begin;
+    }
+
+    if constexpr (kScanlineLevel) {
+      if (trace_row) {
+        s.active_states.clear();
+        s.active_points.clear();
+        for (const Edge& e : s.active) {
+          s.active_states.push_back({e.id, e.x(), e.ceil_x()});
+          s.active_points.push_back(
+              {e.x(), e.id, gouraud ? detail::edge_color(e, y, in.colors, grid) : flat});
+        }
+        ScanlineStep step;
+        step.triangle = in.triangle;
+        step.y = y;
+        step.entered = s.entered;
+        step.retired = s.retired;
+        step.active_edges = s.active_states;
+        step.active_points = s.active_points;
+        step.has_span = has_span;
+        step.x_begin = x_begin;
+        step.x_end = x_end;
+        if (has_span && gouraud) {
+          step.has_span_colors = true;
+          step.span_begin = c_begin;
+          step.span_end = c_begin + c_step * static_cast<double>(x_end - 1 - x_begin);
+        }
+        tracer.scanline(step);
+      }
+    }
+
+    for (Edge& e : s.active) e.advance();
+  }
+
+  if constexpr (kTriangleLevel)
+    if (traced) tracer.triangle_end(in.triangle, result.rows, result.pixels);
+  return result;
+}
+
+template <Canvas C>
+FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& opt,
+                        FillScratch& s) {
+  NoTracer none;
+  return fill_polygon(canvas, in, opt, s, none);
+}
+
+// Convenience entry points for one polygon or triangle on an image.
+template <class P, class Tracer = NoTracer>
+  requires FillTracer<std::remove_cvref_t<Tracer>>
+FillResult fill_convex_polygon(Image<P>& image, std::span<const Vec2> points,
+                               std::span<const Color> colors, const FillOptions& opt = {},
+                               Tracer&& tracer = NoTracer{}) {
+  ImageCanvas<P> canvas(image);
+  FillScratch scratch;
+  return fill_polygon(canvas, PolygonInput{points, colors, 0, std::nullopt}, opt, scratch, tracer);
+}
+
+template <class P, class Tracer = NoTracer>
+  requires FillTracer<std::remove_cvref_t<Tracer>>
+FillResult fill_triangle(Image<P>& image, const std::array<Vec2, 3>& v,
+                         const std::array<Color, 3>& c, const FillOptions& opt = {},
+                         Tracer&& tracer = NoTracer{}) {
+  return fill_convex_polygon(image, std::span<const Vec2>(v), std::span<const Color>(c), opt,
+                             std::forward<Tracer>(tracer));
+}
+
+}  // namespace scantrace

@@ -1,0 +1,16 @@
+#include "tracer.hpp"
+
+namespace scantrace {
+
+const char* to_string(SkipReason r) {
+  switch (r) {
+    case SkipReason::none: return "none";
+    case SkipReason::too_few_vertices: return "too_few_vertices";
+    case SkipReason::out_of_range: return "out_of_range";
+    case SkipReason::degenerate: return "degenerate";
+    case SkipReason::offscreen: return "offscreen";
+  }
+  return "unknown";
+}
+
+}  // namespace scantrace

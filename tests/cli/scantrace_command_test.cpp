@@ -1,0 +1,240 @@
+// The scantrace binary, run through the shell as a user would: exit status, messages, outputs.
+#include <cmath>
+#include <string>
+
+#include <catch2/catch.hpp>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "cli_test_support.hpp"
+#include "io/scene_json.hpp"
+#include "scene_compare.hpp"
+#include "src/demo_scene.hpp"
+#include "src/painter.hpp"
+#include "viz/opencv_image.hpp"
+
+using namespace scantrace;
+using scantrace::test::run_scantrace;
+using scantrace::test::TempDir;
+
+namespace {
+
+// Two flat triangles far from pixel (0, 0), with known mean colours:
+// A, around (100, 100): mean of red, green, blue = (1/3, 1/3, 1/3);
+// B, around (300, 300): mean of (1, 0.5, 0), (1, 0.5, 0), (1, 0.2, 0.1) = (1, 0.4, 1/30).
+Scene two_triangles() {
+  Scene s;
+  s.vertices = {{60, 60}, {160, 70}, {90, 150}, {250, 250}, {380, 260}, {300, 380}};
+  s.vcolors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0.5, 0}, {1, 0.5, 0}, {1, 0.2, 0.1}};
+  s.faces = {{0, 1, 2}, {3, 4, 5}};
+  s.depth = {1, 1, 1, 2, 2, 2};
+  return s;
+}
+
+cv::Vec3b bgr_of(Color c) {
+  auto byte = [](double v) { return static_cast<unsigned char>(std::lround(255.0 * v)); };
+  return {byte(c.b), byte(c.g), byte(c.r)};
+}
+
+cv::Mat read_bgr(const std::filesystem::path& file) {
+  return cv::imread(file.string(), cv::IMREAD_UNCHANGED);
+}
+
+bool same_pixels(const cv::Mat& a, const cv::Mat& b) {
+  return a.size() == b.size() && a.type() == b.type() && cv::norm(a, b, cv::NORM_INF) == 0;
+}
+
+bool one_line(const std::string& s) {
+  return !s.empty() && s.find('\n') == s.size() - 1;
+}
+
+}  // namespace
+
+TEST_CASE("scantrace --version and --help exit 0", "[command]") {
+  TempDir dir;
+  const auto version = run_scantrace(dir.path(), {"--version"});
+  CHECK(version.exit_code == 0);
+  CHECK(version.out == "scantrace 0.1.0\n");
+
+  const auto help = run_scantrace(dir.path(), {"--help"});
+  CHECK(help.exit_code == 0);
+  CHECK_THAT(help.out, Catch::Contains("render") && Catch::Contains("demo") &&
+                           Catch::Contains("Exit status"));
+
+  const auto render_help = run_scantrace(dir.path(), {"render", "--help"});
+  CHECK(render_help.exit_code == 0);
+  CHECK_THAT(render_help.out, Catch::Contains("--fill-rule") && Catch::Contains("top-left") &&
+                                  Catch::Contains("closed") && Catch::Contains("--shading") &&
+                                  Catch::Contains("--subpixel-bits"));
+
+  const auto demo_help = run_scantrace(dir.path(), {"demo", "--help"});
+  CHECK(demo_help.exit_code == 0);
+  CHECK_THAT(demo_help.out, Catch::Contains("-o,--output"));
+}
+
+TEST_CASE("usage errors exit 2", "[command]") {
+  TempDir dir;
+  save_scene(two_triangles(), dir / "scene.json");
+  const std::vector<std::vector<std::string>> usage_errors{
+      {},
+      {"paint"},
+      {"render"},
+      {"render", "scene.json", "--bogus"},
+      {"render", "scene.json", "--shading", "phong"},
+      {"render", "scene.json", "--fill-rule", "even-odd"},
+      {"render", "scene.json", "--subpixel-bits", "13"},
+      {"demo", "extra"}};
+  for (const auto& args : usage_errors) {
+    const auto r = run_scantrace(dir.path(), args);
+    INFO("stderr: " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.err, Catch::Contains("--help"));
+  }
+  CHECK(test::file_names(dir.path()) == std::vector<std::string>{"scene.json"});
+}
+
+TEST_CASE("render writes the scene's pixels", "[command]") {
+  TempDir dir;
+  save_scene(two_triangles(), dir / "scene.json");
+
+  const auto r =
+      run_scantrace(dir.path(), {"render", "scene.json", "--shading", "flat", "-o", "flat.png"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(one_line(r.err));
+  CHECK_THAT(r.err, Catch::Contains("2 faces drawn") && Catch::Contains("0 skipped") &&
+                        Catch::Contains("ms"));
+
+  const cv::Mat png = read_bgr(dir / "flat.png");
+  REQUIRE(png.type() == CV_8UC3);
+  REQUIRE(png.cols == 512);
+  REQUIRE(png.rows == 512);
+  CHECK(png.at<cv::Vec3b>(0, 0) == cv::Vec3b(255, 255, 255));
+  CHECK(png.at<cv::Vec3b>(511, 511) == cv::Vec3b(255, 255, 255));
+  CHECK(png.at<cv::Vec3b>(90, 100) == bgr_of({1.0 / 3, 1.0 / 3, 1.0 / 3}));  // at(row, col)
+  CHECK(png.at<cv::Vec3b>(300, 310) == bgr_of({1.0, 0.4, 1.0 / 30}));
+}
+
+TEST_CASE("render writes SCENE's stem .png in the current directory by default", "[command]") {
+  TempDir dir;
+  std::filesystem::create_directory(dir / "scenes");
+  save_scene(two_triangles(), dir / "scenes" / "two.json");
+  const auto r = run_scantrace(dir.path(), {"render", "scenes/two.json"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(test::file_names(dir.path()) == std::vector<std::string>{"scenes", "two.png"});
+  // Default shading is Gouraud: inside triangle B the colour varies, around (300, 300) it is
+  // between the vertex colours: red 255, blue small.
+  const cv::Mat png = read_bgr(dir / "two.png");
+  REQUIRE(png.cols == 512);
+  const cv::Vec3b inside = png.at<cv::Vec3b>(300, 310);
+  CHECK(inside[2] == 255);
+  CHECK(inside[0] <= 26);
+}
+
+TEST_CASE("render of the demo scene file matches the library's render", "[command]") {
+  TempDir dir;
+  save_scene(demo_scene(), dir / "demo.json");
+  for (const char* shading : {"flat", "gouraud"}) {
+    for (const char* rule : {"top-left", "closed"}) {
+      const auto r = run_scantrace(dir.path(), {"render", "demo.json", "--shading", shading,
+                                                "--fill-rule", rule, "-o", "out.png"});
+      INFO(shading << ", " << rule << ": " << r.err);
+      REQUIRE(r.exit_code == 0);
+      FillOptions options;
+      options.shading = std::string(shading) == "flat" ? Shading::flat : Shading::gouraud;
+      options.fill_rule = std::string(rule) == "closed" ? FillRule::closed : FillRule::top_left;
+      CHECK(same_pixels(read_bgr(dir / "out.png"), to_bgr8(render(demo_scene(), options))));
+    }
+  }
+}
+
+TEST_CASE("bad input exits 1 with one line naming the file and the element", "[command]") {
+  TempDir dir;
+
+  SECTION("a missing scene file") {
+    const auto r = run_scantrace(dir.path(), {"render", "missing.json"});
+    CHECK(r.exit_code == 1);
+    CHECK(r.err == "scantrace: error: missing.json: cannot read file: No such file or directory\n");
+  }
+  SECTION("a face with an out-of-range vertex index") {
+    Scene bad = two_triangles();
+    bad.faces[1][2] = 6;
+    save_scene(bad, dir / "bad.json");
+    const auto r = run_scantrace(dir.path(), {"render", "bad.json", "-o", "bad.png"});
+    CHECK(r.exit_code == 1);
+    CHECK(r.err ==
+          "scantrace: error: bad.json: faces[1]: vertex index 6 is out of range (6 vertices)\n");
+  }
+  SECTION("a syntax error") {
+    test::write_text(dir / "bad.json", "{\"vertices\": [[1, 2],\n [3, 4]]]\n");
+    const auto r = run_scantrace(dir.path(), {"render", "bad.json", "-o", "bad.png"});
+    CHECK(r.exit_code == 1);
+    CHECK(one_line(r.err));
+    CHECK_THAT(r.err, Catch::StartsWith("scantrace: error: bad.json:2:9: JSON syntax error: "));
+  }
+  SECTION("an output that cannot be written") {
+    save_scene(two_triangles(), dir / "scene.json");
+    const auto r = run_scantrace(dir.path(), {"render", "scene.json", "-o", "no/such/dir.png"});
+    CHECK(r.exit_code == 1);
+    CHECK(r.err ==
+          "scantrace: error: no/such/dir.png: cannot create file: No such file or "
+          "directory\n");
+  }
+  // Never a half-written (or any) output file.
+  for (const auto& name : test::file_names(dir.path())) CHECK_THAT(name, !Catch::EndsWith(".png"));
+}
+
+TEST_CASE("demo writes the demo renders, the example triangle and the scene", "[command]") {
+  TempDir dir;
+  const auto r = run_scantrace(dir.path(), {"demo", "-o", "out"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const std::vector<std::string> expected{"demo_flat.png", "demo_gouraud.png", "demo_scene.json",
+                                          "triangle_gouraud.png"};
+  CHECK(test::file_names(dir / "out") == expected);
+  for (const auto& name : expected) CHECK_THAT(r.err, Catch::Contains("out/" + name));
+
+  for (const char* name : {"demo_flat.png", "demo_gouraud.png", "triangle_gouraud.png"}) {
+    const cv::Mat png = read_bgr(dir / "out" / name);
+    INFO(name);
+    REQUIRE(png.type() == CV_8UC3);
+    CHECK(png.cols == 512);
+    CHECK(png.rows == 512);
+    CHECK(png.at<cv::Vec3b>(0, 0) == cv::Vec3b(255, 255, 255));
+  }
+  FillOptions flat;
+  flat.shading = Shading::flat;
+  CHECK(same_pixels(read_bgr(dir / "out" / "demo_flat.png"), to_bgr8(render(demo_scene(), flat))));
+  CHECK(same_pixels(read_bgr(dir / "out" / "demo_gouraud.png"), to_bgr8(render(demo_scene()))));
+
+  // The course's triangle (20,20) red, (250,80) green, (300,400) blue: at its centroid
+  // (190, 166.67) the colour is close to the mean (1/3 each).
+  const cv::Vec3b centre = read_bgr(dir / "out" / "triangle_gouraud.png").at<cv::Vec3b>(167, 190);
+  for (int k = 0; k < 3; ++k) CHECK(std::abs(centre[k] - 85) <= 2);
+
+  test::require_equal_scenes(load_scene(dir / "out" / "demo_scene.json"), demo_scene());
+
+  // The default directory.
+  const auto default_run = run_scantrace(dir.path(), {"demo"});
+  CHECK(default_run.exit_code == 0);
+  CHECK(test::file_names(dir / "scantrace-demo") == expected);
+}
+
+TEST_CASE("render of the course scene writes a 512x512 PNG", "[command][shared_data]") {
+  const auto scene = test::shared_data("hw1_2024.json");
+  if (!std::filesystem::exists(scene)) {
+    WARN("skipped: " << scene << " does not exist");
+    return;
+  }
+  TempDir dir;
+  const auto r = run_scantrace(dir.path(), {"render", scene.string()});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("faces drawn"));
+  const cv::Mat png = read_bgr(dir / "hw1_2024.png");
+  REQUIRE(png.type() == CV_8UC3);
+  CHECK(png.cols == 512);
+  CHECK(png.rows == 512);
+  CHECK(png.at<cv::Vec3b>(0, 0) == cv::Vec3b(255, 255, 255));
+}

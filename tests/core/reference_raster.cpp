@@ -1,0 +1,118 @@
+#include "reference_raster.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sttest {
+
+i64 ref_snap(double v, int bits) {
+  const double scaled = std::ldexp(v, bits);  // exact: a power-of-two scaling
+  const double f = std::floor(scaled);
+  // f + 0.5 is exact for |f| < 2^52, so this comparison decides floor(scaled + 1/2) exactly.
+  return static_cast<i64>(f) + (scaled >= f + 0.5 ? 1 : 0);
+}
+
+GridPt ref_snap(scantrace::Vec2 p, int bits) {
+  return {ref_snap(p.x, bits), ref_snap(p.y, bits)};
+}
+
+i64 floor_div(i64 a, i64 b) {
+  const i64 q = a / b;
+  return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+i64 ceil_div(i64 a, i64 b) {
+  return -floor_div(-a, b);
+}
+
+RefPolygon::RefPolygon(std::span<const scantrace::Vec2> points, int bits) : scale_(i64{1} << bits) {
+  for (const scantrace::Vec2& p : points) v_.push_back(ref_snap(p, bits));
+  const std::size_t n = v_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const GridPt a = v_[i], b = v_[(i + 1) % n];
+    twice_area_ += static_cast<i128>(a.x) * b.y - static_cast<i128>(b.x) * a.y;
+  }
+  orientation_ = twice_area_ > 0 ? 1 : twice_area_ < 0 ? -1 : 0;
+  // With y pointing down, the gradient of the (oriented) edge function is the inward normal
+  // orientation · (-dy, dx). Left edge: the normal points right. Top edge: horizontal with the
+  // normal pointing down (interior at larger y).
+  for (std::size_t i = 0; i < n; ++i) {
+    const GridPt a = v_[i], b = v_[(i + 1) % n];
+    const i64 dx = b.x - a.x, dy = b.y - a.y;
+    const bool left = orientation_ * -dy > 0;
+    const bool top = dy == 0 && orientation_ * dx > 0;
+    owns_ties_.push_back(left || top);
+  }
+  min_ = max_ = v_.empty() ? GridPt{} : v_[0];
+  for (const GridPt& p : v_) {
+    min_.x = std::min(min_.x, p.x), min_.y = std::min(min_.y, p.y);
+    max_.x = std::max(max_.x, p.x), max_.y = std::max(max_.y, p.y);
+  }
+}
+
+i128 RefPolygon::raw_edge(std::size_t i, i64 gx, i64 gy) const {
+  const GridPt a = v_[i], b = v_[(i + 1) % v_.size()];
+  return static_cast<i128>(b.x - a.x) * (gy - a.y) - static_cast<i128>(b.y - a.y) * (gx - a.x);
+}
+
+i128 RefPolygon::inside(std::size_t i, i64 gx, i64 gy) const {
+  return orientation_ * raw_edge(i, gx, gy);
+}
+
+bool RefPolygon::covers(i64 px, i64 py, RefRule rule) const {
+  if (degenerate()) return false;
+  const i64 gx = px * scale_, gy = py * scale_;
+  for (std::size_t i = 0; i < v_.size(); ++i) {
+    const i128 e = inside(i, gx, gy);
+    if (e < 0) return false;
+    if (e == 0 && rule == RefRule::top_left && !owns_ties_[i]) return false;
+  }
+  return true;
+}
+
+std::array<double, 3> RefPolygon::barycentric(i64 px, i64 py) const {
+  if (v_.size() != 3) throw std::logic_error("barycentric weights are defined for triangles");
+  const i64 gx = px * scale_, gy = py * scale_;
+  // The weight of vertex k is the sub-area opposite to it over the whole area; all exact until
+  // the final division.
+  const double area = static_cast<double>(twice_area_);
+  return {static_cast<double>(raw_edge(1, gx, gy)) / area,
+          static_cast<double>(raw_edge(2, gx, gy)) / area,
+          static_cast<double>(raw_edge(0, gx, gy)) / area};
+}
+
+RefRaster ref_rasterize(int width, int height, std::span<const scantrace::Vec2> points,
+                        std::span<const scantrace::Color> colors, RefRule rule, int bits) {
+  RefRaster out;
+  out.width = width;
+  out.height = height;
+  out.covered.assign(static_cast<std::size_t>(width) * height, 0);
+  out.color.assign(out.covered.size(), scantrace::Color{});
+  const RefPolygon poly(points, bits);
+  const bool interpolate = points.size() == 3 && colors.size() == 3;
+  // The bounding box only saves time: every centre outside it fails some half-plane test anyway.
+  const i64 x0 = std::max<i64>(poly.min_px(), 0), x1 = std::min<i64>(poly.max_px(), width - 1);
+  const i64 y0 = std::max<i64>(poly.min_py(), 0), y1 = std::min<i64>(poly.max_py(), height - 1);
+  for (i64 y = y0; y <= y1; ++y) {
+    for (i64 x = x0; x <= x1; ++x) {
+      if (!poly.covers(x, y, rule)) continue;
+      const std::size_t k = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
+      out.covered[k] = 1;
+      ++out.count;
+      if (interpolate) {
+        const std::array<double, 3> w = poly.barycentric(x, y);
+        out.color[k] = colors[0] * w[0] + colors[1] * w[1] + colors[2] * w[2];
+      }
+    }
+  }
+  return out;
+}
+
+scantrace::Color mean_color(std::span<const scantrace::Color> colors) {
+  scantrace::Color sum;
+  for (const scantrace::Color& c : colors) sum += c;
+  return sum * (1.0 / static_cast<double>(colors.size()));
+}
+
+}  // namespace sttest

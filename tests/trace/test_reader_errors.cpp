@@ -1,0 +1,59 @@
+// A bad trace is a clear error naming the line; an interrupted one is readable but incomplete.
+#include <catch2/catch.hpp>
+#include <sstream>
+
+#include "trace/trace.hpp"
+
+using namespace scantrace::trace;
+
+namespace {
+
+const std::string kHeader =
+    R"({"type":"header","format":"scantrace-trace","version":1,"canvas":{"width":8,"height":8},)"
+    R"("shading":"flat","fill_rule":"top-left","subpixel_bits":8,"level":"scanline","generator":"scantrace 0.1.0"})";
+const std::string kSkipped = R"({"type":"triangle_skipped","triangle":0,"reason":"degenerate"})";
+const std::string kFooter = R"({"type":"footer","events":1,"truncated":false})";
+
+Trace parse(const std::string& text) {
+  std::istringstream in(text);
+  return Trace::parse(in, "t.jsonl");
+}
+
+}  // namespace
+
+TEST_CASE("a well-formed trace parses; without its footer it is incomplete", "[trace][reader]") {
+  const Trace t = parse(kHeader + "\n" + kSkipped + "\n" + kFooter + "\n");
+  CHECK(t.complete());
+  CHECK(t.skipped(0)->reason == "degenerate");
+  const Trace cut = parse(kHeader + "\n" + kSkipped + "\n");
+  CHECK_FALSE(cut.complete());
+  CHECK_FALSE(cut.truncated());
+}
+
+TEST_CASE("malformed traces name the file, the line and the problem", "[trace][reader]") {
+  CHECK_THROWS_WITH(parse(kHeader + "\n" + kSkipped + "\n{not json\n"),
+                    Catch::StartsWith("t.jsonl:3: not valid JSON"));
+  CHECK_THROWS_WITH(parse(kSkipped + "\n"), Catch::Contains("t.jsonl:1:") && Catch::Contains("header"));
+  std::string v2 = kHeader;
+  v2.replace(v2.find("\"version\":1"), 11, "\"version\":2");
+  CHECK_THROWS_WITH(parse(v2 + "\n"), Catch::Contains("version 2 is not supported"));
+  std::string other = kHeader;
+  other.replace(other.find("scantrace-trace"), 15, "something-else!");
+  CHECK_THROWS_WITH(parse(other + "\n"), Catch::Contains("not a scantrace trace"));
+  CHECK_THROWS_WITH(parse(kHeader + "\n" + R"({"type":"scanline","triangle":0})" + "\n"),
+                    Catch::StartsWith("t.jsonl:2: malformed event"));
+  CHECK_THROWS_WITH(parse(kHeader + "\n" + R"({"type":"bogus"})" + "\n"),
+                    Catch::Contains("unknown event type"));
+  CHECK_THROWS_WITH(parse(kHeader + "\n" + kFooter + "\n" + kSkipped + "\n"),
+                    Catch::Contains("t.jsonl:3: event after the footer"));
+  CHECK_THROWS_WITH(parse(""), Catch::Contains("empty file"));
+  CHECK_THROWS_WITH(Trace::load("/nonexistent/x.jsonl"), Catch::Contains("cannot open"));
+}
+
+TEST_CASE("queries about absent things say what is missing", "[trace][reader]") {
+  const Trace t = parse(kHeader + "\n" + kSkipped + "\n" + kFooter + "\n");
+  CHECK_THROWS_WITH(t.scanline(0, 3), Catch::Contains("no scanline 3"));
+  CHECK_THROWS_WITH(t.edge_table(7), Catch::Contains("triangle 7 is not in the trace"));
+  CHECK(t.pixel_history(1, 1).empty());
+  CHECK_THROWS(t.pixel_history(1, 1).final());
+}

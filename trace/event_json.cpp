@@ -1,0 +1,188 @@
+#include "event_json.hpp"
+
+#include <stdexcept>
+
+namespace scantrace {
+
+void to_json(nlohmann::ordered_json& j, const Vec2& p) { j = nlohmann::ordered_json::array({p.x, p.y}); }
+void to_json(nlohmann::ordered_json& j, const Color& c) {
+  j = nlohmann::ordered_json::array({c.r, c.g, c.b});
+}
+
+void from_json(const nlohmann::json& j, Vec2& p) {
+  if (!j.is_array() || j.size() != 2) throw std::invalid_argument("expected a point [x, y]");
+  p = {j[0].get<double>(), j[1].get<double>()};
+}
+void from_json(const nlohmann::json& j, Color& c) {
+  if (!j.is_array() || j.size() != 3) throw std::invalid_argument("expected a colour [r, g, b]");
+  c = {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
+
+}  // namespace scantrace
+
+namespace scantrace::trace {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+using json = nlohmann::json;
+
+template <class T>
+ojson list(const std::vector<T>& items) {
+  ojson a = ojson::array();
+  for (const T& item : items) a.push_back(item);
+  return a;
+}
+
+ojson encode(const Header& h) {
+  return {{"type", "header"},           {"format", h.format},
+          {"version", h.version},       {"canvas", {{"width", h.canvas.width}, {"height", h.canvas.height}}},
+          {"shading", h.shading},       {"fill_rule", h.fill_rule},
+          {"subpixel_bits", h.subpixel_bits}, {"level", h.level},
+          {"generator", h.generator}};
+}
+
+ojson encode(const TriangleBegin& e) {
+  ojson j = {{"type", "triangle_begin"}, {"triangle", e.triangle},  {"vertices", list(e.vertices)},
+             {"snapped", list(e.snapped)}, {"colors", list(e.colors)}};
+  if (e.depth) j["depth"] = *e.depth;
+  if (e.flat_color) j["flat_color"] = *e.flat_color;
+  return j;
+}
+
+ojson encode(const EdgeTableEvent& e) {
+  ojson edges = ojson::array(), horizontal = ojson::array();
+  for (const EdgeEntry& x : e.edges)
+    edges.push_back({{"edge", x.edge}, {"from", x.from}, {"to", x.to}, {"y_min", x.y_min},
+                     {"y_max", x.y_max}, {"x_at_y_min", x.x_at_y_min}, {"dx_dy", x.dx_dy},
+                     {"first_row", x.first_row}, {"last_row", x.last_row}});
+  for (const HorizontalEntry& h : e.horizontal)
+    horizontal.push_back(
+        {{"edge", h.edge}, {"from", h.from}, {"to", h.to}, {"y", h.y}, {"reason", h.reason}});
+  return {{"type", "edge_table"}, {"triangle", e.triangle}, {"edges", edges}, {"horizontal", horizontal}};
+}
+
+ojson encode(const Scanline& s) {
+  ojson active = ojson::array(), points = ojson::array();
+  for (const ActiveEdge& a : s.active_edges) active.push_back({{"edge", a.edge}, {"x", a.x}});
+  for (const ActivePoint& p : s.active_points)
+    points.push_back({{"x", p.x}, {"edge", p.edge}, {"color", p.color}});
+  ojson j = {{"type", "scanline"},          {"triangle", s.triangle}, {"y", s.y},
+             {"entered", s.entered},        {"retired", s.retired},   {"active_edges", active},
+             {"active_points", points}};
+  if (s.span) j["span"] = {{"x_begin", s.span->x_begin}, {"x_end", s.span->x_end}};
+  if (s.span_colors) j["span_colors"] = {{"begin", s.span_colors->begin}, {"end", s.span_colors->end}};
+  return j;
+}
+
+ojson encode(const Pixel& p) {
+  return {{"type", "pixel"}, {"triangle", p.triangle}, {"x", p.x},
+          {"y", p.y},        {"color", p.color},       {"t", p.t}};
+}
+ojson encode(const TriangleEnd& e) {
+  return {{"type", "triangle_end"}, {"triangle", e.triangle}, {"rows", e.rows}, {"pixels", e.pixels}};
+}
+ojson encode(const TriangleSkipped& e) {
+  return {{"type", "triangle_skipped"}, {"triangle", e.triangle}, {"reason", e.reason}};
+}
+ojson encode(const Footer& f) {
+  return {{"type", "footer"}, {"events", f.events}, {"truncated", f.truncated}};
+}
+
+template <class T>
+std::vector<T> list_of(const json& j, const char* key) {
+  std::vector<T> out;
+  for (const json& item : j.at(key)) out.push_back(item.get<T>());
+  return out;
+}
+
+Header decode_header(const json& j) {
+  Header h;
+  h.format = j.at("format").get<std::string>();
+  h.version = j.at("version").get<int>();
+  h.canvas = {j.at("canvas").at("width").get<int>(), j.at("canvas").at("height").get<int>()};
+  h.shading = j.at("shading").get<std::string>();
+  h.fill_rule = j.at("fill_rule").get<std::string>();
+  h.subpixel_bits = j.at("subpixel_bits").get<int>();
+  h.level = j.at("level").get<std::string>();
+  h.generator = j.at("generator").get<std::string>();
+  return h;
+}
+
+TriangleBegin decode_begin(const json& j) {
+  TriangleBegin e;
+  e.triangle = j.at("triangle").get<int>();
+  e.vertices = list_of<Vec2>(j, "vertices");
+  e.snapped = list_of<Vec2>(j, "snapped");
+  e.colors = list_of<Color>(j, "colors");
+  if (j.contains("depth")) e.depth = j["depth"].get<double>();
+  if (j.contains("flat_color")) e.flat_color = j["flat_color"].get<Color>();
+  return e;
+}
+
+EdgeTableEvent decode_edge_table(const json& j) {
+  EdgeTableEvent e;
+  e.triangle = j.at("triangle").get<int>();
+  for (const json& x : j.at("edges"))
+    e.edges.push_back({x.at("edge").get<int>(), x.at("from").get<Vec2>(), x.at("to").get<Vec2>(),
+                       x.at("y_min").get<double>(), x.at("y_max").get<double>(),
+                       x.at("x_at_y_min").get<double>(), x.at("dx_dy").get<double>(),
+                       x.at("first_row").get<i64>(), x.at("last_row").get<i64>()});
+  for (const json& h : j.at("horizontal"))
+    e.horizontal.push_back({h.at("edge").get<int>(), h.at("from").get<Vec2>(),
+                            h.at("to").get<Vec2>(), h.at("y").get<double>(),
+                            h.at("reason").get<std::string>()});
+  return e;
+}
+
+Scanline decode_scanline(const json& j) {
+  Scanline s;
+  s.triangle = j.at("triangle").get<int>();
+  s.y = j.at("y").get<i64>();
+  s.entered = j.at("entered").get<std::vector<int>>();
+  s.retired = j.at("retired").get<std::vector<int>>();
+  for (const json& a : j.at("active_edges"))
+    s.active_edges.push_back({a.at("edge").get<int>(), a.at("x").get<double>()});
+  for (const json& p : j.at("active_points"))
+    s.active_points.push_back(
+        {p.at("x").get<double>(), p.at("edge").get<int>(), p.at("color").get<Color>()});
+  if (j.contains("span"))
+    s.span = Span{j["span"].at("x_begin").get<i64>(), j["span"].at("x_end").get<i64>()};
+  if (j.contains("span_colors"))
+    s.span_colors =
+        SpanColors{j["span_colors"].at("begin").get<Color>(), j["span_colors"].at("end").get<Color>()};
+  return s;
+}
+
+}  // namespace
+
+const char* type_name(const Event& e) {
+  static constexpr const char* kNames[] = {"header",       "triangle_begin", "edge_table",
+                                           "scanline",     "pixel",          "triangle_end",
+                                           "triangle_skipped", "footer"};
+  return kNames[e.index()];
+}
+
+ojson event_to_json(const Event& e) {
+  return std::visit([](const auto& v) { return encode(v); }, e);
+}
+
+Event event_from_json(const json& j) {
+  if (!j.is_object()) throw std::invalid_argument("an event must be a JSON object");
+  const std::string type = j.at("type").get<std::string>();
+  if (type == "header") return decode_header(j);
+  if (type == "triangle_begin") return decode_begin(j);
+  if (type == "edge_table") return decode_edge_table(j);
+  if (type == "scanline") return decode_scanline(j);
+  if (type == "pixel")
+    return Pixel{j.at("triangle").get<int>(), j.at("x").get<i64>(), j.at("y").get<i64>(),
+                 j.at("color").get<Color>(), j.at("t").get<double>()};
+  if (type == "triangle_end")
+    return TriangleEnd{j.at("triangle").get<int>(), j.at("rows").get<i64>(), j.at("pixels").get<i64>()};
+  if (type == "triangle_skipped")
+    return TriangleSkipped{j.at("triangle").get<int>(), j.at("reason").get<std::string>()};
+  if (type == "footer")
+    return Footer{j.at("events").get<i64>(), j.at("truncated").get<bool>()};
+  throw std::invalid_argument("unknown event type \"" + type + "\"");
+}
+
+}  // namespace scantrace::trace

@@ -1,0 +1,68 @@
+#include "event_tracer.hpp"
+
+namespace scantrace::trace {
+
+Header make_header(int width, int height, const FillOptions& options, TraceLevel level) {
+  Header h;
+  h.canvas = {width, height};
+  h.shading = to_string(options.shading);
+  h.fill_rule = to_string(options.fill_rule);
+  h.subpixel_bits = options.subpixel_bits;
+  h.level = to_string(level);
+  h.generator = std::string("scantrace ") + SCANTRACE_VERSION;
+  return h;
+}
+
+TriangleBegin to_event(const PolygonSetup& s) {
+  TriangleBegin e;
+  e.triangle = s.triangle;
+  e.vertices.assign(s.vertices.begin(), s.vertices.end());
+  for (const FixedPoint& p : s.snapped) e.snapped.push_back(s.grid.to_pixels(p));
+  e.colors.assign(s.colors.begin(), s.colors.end());
+  e.depth = s.depth;
+  if (s.options->shading == Shading::flat) e.flat_color = s.flat_color;
+  return e;
+}
+
+EdgeTableEvent to_event(const EdgeTableView& v) {
+  EdgeTableEvent t;
+  t.triangle = v.triangle;
+  const std::size_t n = v.snapped.size();
+  for (const Edge& e : v.table->edges()) {
+    EdgeEntry x;
+    x.edge = e.id;
+    x.from = v.grid.to_pixels(v.snapped[e.id]);
+    x.to = v.grid.to_pixels(v.snapped[(e.id + 1) % n]);
+    const Vec2 top = v.grid.to_pixels(e.p_top), bottom = v.grid.to_pixels(e.p_bottom);
+    x.y_min = top.y;
+    x.y_max = bottom.y;
+    x.x_at_y_min = top.x;
+    x.dx_dy = static_cast<double>(e.dx()) / static_cast<double>(e.dy());
+    x.first_row = e.first_row;
+    x.last_row = e.last_row;
+    t.edges.push_back(x);
+  }
+  for (const HorizontalEdge& h : v.table->horizontal())
+    t.horizontal.push_back({h.id, v.grid.to_pixels(v.snapped[h.from]),
+                            v.grid.to_pixels(v.snapped[h.to]),
+                            static_cast<double>(h.y) / static_cast<double>(v.grid.scale()),
+                            "horizontal: it lies along one row and never crosses a scanline; the "
+                            "fill rule decides its row through the neighbouring edges"});
+  return t;
+}
+
+Scanline to_event(const ScanlineStep& s) {
+  Scanline e;
+  e.triangle = s.triangle;
+  e.y = s.y;
+  e.entered.assign(s.entered.begin(), s.entered.end());
+  e.retired.assign(s.retired.begin(), s.retired.end());
+  for (const ActiveEdgeState& a : s.active_edges) e.active_edges.push_back({a.edge, a.x});
+  for (const scantrace::ActivePointState& p : s.active_points)
+    e.active_points.push_back({p.x, p.edge, p.color});
+  if (s.has_span) e.span = Span{s.x_begin, s.x_end};
+  if (s.has_span_colors) e.span_colors = SpanColors{s.span_begin, s.span_end};
+  return e;
+}
+
+}  // namespace scantrace::trace

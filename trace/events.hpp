@@ -1,0 +1,128 @@
+#pragma once
+// The events of trace format v1 (design.md §5) as value types. One event is one line of a
+// .jsonl trace; to_json/from_json live in event_json.hpp.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "src/color.hpp"
+#include "src/vec2.hpp"
+
+namespace scantrace::trace {
+
+using i64 = std::int64_t;
+
+inline constexpr const char* kFormatName = "scantrace-trace";
+inline constexpr int kFormatVersion = 1;
+
+struct Canvas {
+  int width = 0, height = 0;
+};
+
+struct Header {
+  std::string format = kFormatName;
+  int version = kFormatVersion;
+  Canvas canvas;
+  std::string shading;    // "flat" | "gouraud"
+  std::string fill_rule;  // "top-left" | "closed"
+  int subpixel_bits = 8;
+  std::string level;      // "triangle" | "scanline" | "pixel"
+  std::string generator;  // "scantrace X.Y.Z"
+};
+
+struct TriangleBegin {
+  int triangle = 0;
+  std::vector<Vec2> vertices;  // as given
+  std::vector<Vec2> snapped;   // on the subpixel grid: what coverage is decided on
+  std::vector<Color> colors;
+  std::optional<double> depth;
+  std::optional<Color> flat_color;  // flat shading only
+};
+
+struct EdgeEntry {
+  int edge = 0;           // the edge from vertex `edge` to vertex (edge + 1) mod n
+  Vec2 from, to;          // snapped endpoints, in that direction
+  double y_min = 0, y_max = 0;
+  double x_at_y_min = 0;  // x of the upper endpoint
+  double dx_dy = 0;       // the inverse slope: x moves by dx_dy per row
+  i64 first_row = 0, last_row = 0;  // scanlines it is active on (first > last: none)
+};
+
+struct HorizontalEntry {
+  int edge = 0;
+  Vec2 from, to;
+  double y = 0;
+  std::string reason;
+};
+
+struct EdgeTableEvent {
+  int triangle = 0;
+  std::vector<EdgeEntry> edges;  // sorted by first row (y_min), then id
+  std::vector<HorizontalEntry> horizontal;
+};
+
+struct ActiveEdge {
+  int edge = 0;
+  double x = 0;  // the exact intersection with the row, rounded to double
+  friend bool operator==(const ActiveEdge&, const ActiveEdge&) = default;
+};
+
+struct ActivePoint {
+  double x = 0;
+  int edge = 0;
+  Color color;
+};
+
+struct Span {
+  i64 x_begin = 0, x_end = 0;  // half-open, clipped to the canvas
+  i64 size() const { return x_end - x_begin; }
+  bool contains(i64 x) const { return x >= x_begin && x < x_end; }
+};
+
+struct SpanColors {
+  Color begin;  // colour of pixel x_begin
+  Color end;    // colour of pixel x_end - 1
+};
+
+struct Scanline {
+  int triangle = 0;
+  i64 y = 0;
+  std::vector<int> entered, retired;
+  std::vector<ActiveEdge> active_edges;
+  std::vector<ActivePoint> active_points;  // sorted by x
+  std::optional<Span> span;
+  std::optional<SpanColors> span_colors;  // Gouraud
+};
+
+struct Pixel {
+  int triangle = 0;
+  i64 x = 0, y = 0;
+  Color color;
+  double t = 0;  // weight along the span: 0 at the left active point, 1 at the right
+};
+
+struct TriangleEnd {
+  int triangle = 0;
+  i64 rows = 0, pixels = 0;
+};
+
+struct TriangleSkipped {
+  int triangle = 0;
+  std::string reason;
+};
+
+struct Footer {
+  i64 events = 0;  // events between header and footer
+  bool truncated = false;
+};
+
+using Event = std::variant<Header, TriangleBegin, EdgeTableEvent, Scanline, Pixel, TriangleEnd,
+                           TriangleSkipped, Footer>;
+
+// The `type` of an event as it appears in the file.
+const char* type_name(const Event& e);
+
+}  // namespace scantrace::trace

@@ -1,0 +1,36 @@
+#pragma once
+// One-call tracing of a triangle or a scene with the real fill: in memory (a Trace to query) or
+// to a .jsonl file. Each call also gives back the image it rendered, so a caller can compare the
+// narration with the pixels.
+#include <array>
+#include <filesystem>
+
+#include "src/image.hpp"
+#include "src/scene.hpp"
+#include "trace.hpp"
+#include "trace_filter.hpp"
+
+namespace scantrace::trace {
+
+struct TriangleInput {
+  std::array<Vec2, 3> vertices{};
+  std::array<Color, 3> colors{};
+  int width = 512, height = 512;  // the course's canvas
+  Color background{1, 1, 1};
+};
+
+// In memory.
+Trace record_triangle(const TriangleInput& triangle, const FillOptions& options,
+                      const TraceFilter& filter = {}, RgbImage* image = nullptr);
+Trace record_scene(const Scene& scene, const FillOptions& options, const TraceFilter& filter = {},
+                   RgbImage* image = nullptr);
+
+// To a .jsonl file (written under a temporary name, renamed into place when complete).
+Footer write_triangle_trace(const std::filesystem::path& path, const TriangleInput& triangle,
+                            const FillOptions& options, const TraceFilter& filter = {},
+                            RgbImage* image = nullptr);
+Footer write_scene_trace(const std::filesystem::path& path, const Scene& scene,
+                         const FillOptions& options, const TraceFilter& filter = {},
+                         RgbImage* image = nullptr);
+
+}  // namespace scantrace::trace

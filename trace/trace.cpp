@@ -1,0 +1,197 @@
+#include "trace.hpp"
+
+#include <fstream>
+#include <istream>
+#include <nlohmann/json.hpp>
+
+#include "event_json.hpp"
+
+namespace scantrace::trace {
+namespace {
+
+// Lines longer than this are not a trace line but damage (or another file).
+constexpr std::size_t kMaxLineBytes = std::size_t{64} << 20;
+
+std::uint64_t pixel_key(i64 x, i64 y) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) |
+         static_cast<std::uint32_t>(y);
+}
+
+}  // namespace
+
+const PixelWrite& PixelHistory::final() const {
+  if (writes.empty()) throw std::out_of_range("no triangle wrote this pixel");
+  return writes.back();
+}
+
+Trace Trace::load(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw TraceError(path.string() + ": cannot open trace");
+  return parse(in, path.string());
+}
+
+Trace Trace::parse(std::istream& in, const std::string& name) {
+  std::vector<Event> events;
+  std::string line;
+  std::size_t number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const std::string where = name + ":" + std::to_string(number) + ": ";
+    if (line.size() > kMaxLineBytes) throw TraceError(where + "line too long to be a trace event");
+    if (line.empty()) throw TraceError(where + "empty line (one JSON object per line expected)");
+    try {
+      events.push_back(event_from_json(nlohmann::json::parse(line)));
+    } catch (const nlohmann::json::parse_error& e) {
+      throw TraceError(where + "not valid JSON (" + e.what() + ")");
+    } catch (const std::exception& e) {
+      throw TraceError(where + "malformed event: " + e.what());
+    }
+    if (number == 1) {
+      const Header* h = std::get_if<Header>(&events.front());
+      if (!h) throw TraceError(where + "the first line must be the header");
+      if (h->format != kFormatName)
+        throw TraceError(where + "format is \"" + h->format + "\", not a scantrace trace");
+      if (h->version != kFormatVersion)
+        throw TraceError(where + "trace format version " + std::to_string(h->version) +
+                         " is not supported (this build reads version " +
+                         std::to_string(kFormatVersion) + ")");
+    }
+  }
+  if (events.empty()) throw TraceError(name + ": empty file, not a trace");
+  return from_events(std::move(events), name);
+}
+
+Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
+  Trace t;
+  t.name_ = name;
+  if (events.empty() || !std::holds_alternative<Header>(events.front()))
+    throw TraceError(name + ": a trace starts with its header");
+  for (std::size_t i = 1; i < events.size(); ++i) {
+    const Event& e = events[i];
+    auto fail = [&](const std::string& what) {
+      throw TraceError(name + ":" + std::to_string(i + 1) + ": " + what);
+    };
+    if (t.footer_) fail("event after the footer");
+    if (std::holds_alternative<Header>(e)) fail("a second header");
+    if (const Footer* f = std::get_if<Footer>(&e)) {
+      t.footer_ = *f;
+      continue;
+    }
+    const int tri = std::visit(
+        [](const auto& v) -> int {
+          if constexpr (requires { v.triangle; }) return v.triangle;
+          else return -1;
+        },
+        e);
+    if (!t.index_.count(tri)) t.order_.push_back(tri);
+    TriangleIndex& ix = t.index_[tri];
+    if (std::holds_alternative<TriangleBegin>(e)) ix.begin = i;
+    else if (std::holds_alternative<EdgeTableEvent>(e)) ix.edge_table = i;
+    else if (std::holds_alternative<TriangleEnd>(e)) ix.end = i;
+    else if (std::holds_alternative<TriangleSkipped>(e)) ix.skipped = i;
+    else if (const Scanline* s = std::get_if<Scanline>(&e)) {
+      ix.scanlines[s->y] = i;
+      t.rows_[s->y].push_back(i);
+    } else if (const Pixel* p = std::get_if<Pixel>(&e)) {
+      ix.pixels.push_back(i);
+      t.pixel_events_[pixel_key(p->x, p->y)].push_back(i);
+    }
+  }
+  t.events_ = std::move(events);
+  return t;
+}
+
+const Header& Trace::header() const { return std::get<Header>(events_.front()); }
+
+std::vector<int> Trace::triangles() const { return order_; }
+
+const Trace::TriangleIndex& Trace::at(int t) const {
+  auto it = index_.find(t);
+  if (it == index_.end())
+    throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " is not in the trace");
+  return it->second;
+}
+
+const TriangleBegin& Trace::triangle_begin(int t) const {
+  const auto& ix = at(t);
+  if (!ix.begin)
+    throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " has no triangle_begin");
+  return std::get<TriangleBegin>(events_[*ix.begin]);
+}
+
+const EdgeTableEvent& Trace::edge_table(int t) const {
+  const auto& ix = at(t);
+  if (!ix.edge_table)
+    throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " has no edge table");
+  return std::get<EdgeTableEvent>(events_[*ix.edge_table]);
+}
+
+bool Trace::has_scanline(int t, i64 y) const {
+  auto it = index_.find(t);
+  return it != index_.end() && it->second.scanlines.count(y) > 0;
+}
+
+const Scanline& Trace::scanline(int t, i64 y) const {
+  const auto& ix = at(t);
+  auto it = ix.scanlines.find(y);
+  if (it == ix.scanlines.end())
+    throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " has no scanline " +
+                            std::to_string(y) + " in the trace");
+  return std::get<Scanline>(events_[it->second]);
+}
+
+std::vector<const Scanline*> Trace::scanlines(int t) const {
+  std::vector<const Scanline*> out;
+  for (const auto& [y, i] : at(t).scanlines) out.push_back(&std::get<Scanline>(events_[i]));
+  return out;
+}
+
+std::vector<const Pixel*> Trace::pixels(int t) const {
+  std::vector<const Pixel*> out;
+  for (std::size_t i : at(t).pixels) out.push_back(&std::get<Pixel>(events_[i]));
+  return out;
+}
+
+std::optional<TriangleEnd> Trace::triangle_end(int t) const {
+  const auto& ix = at(t);
+  if (!ix.end) return std::nullopt;
+  return std::get<TriangleEnd>(events_[*ix.end]);
+}
+
+std::optional<TriangleSkipped> Trace::skipped(int t) const {
+  const auto& ix = at(t);
+  if (!ix.skipped) return std::nullopt;
+  return std::get<TriangleSkipped>(events_[*ix.skipped]);
+}
+
+PixelHistory Trace::pixel_history(i64 x, i64 y) const {
+  PixelHistory h;
+  // Pixel events (level pixel) are the record itself; without them the write is reconstructed
+  // from the scanline: the pixel is in the span, and its colour is the flat colour or the linear
+  // interpolation of the span's end colours (Gouraud colour is linear along a row).
+  std::map<std::size_t, PixelWrite> by_event;
+  if (auto it = pixel_events_.find(pixel_key(x, y)); it != pixel_events_.end())
+    for (std::size_t i : it->second) {
+      const Pixel& p = std::get<Pixel>(events_[i]);
+      if (p.x == x && p.y == y) by_event[i] = {p.triangle, p.color, true};
+    }
+  if (auto it = rows_.find(y); it != rows_.end())
+    for (std::size_t i : it->second) {
+      const Scanline& s = std::get<Scanline>(events_[i]);
+      if (!s.span || !s.span->contains(x) || !at(s.triangle).pixels.empty()) continue;
+      Color c;
+      if (s.span_colors) {
+        const i64 last = s.span->x_end - 1 - s.span->x_begin;
+        const double w = last > 0 ? static_cast<double>(x - s.span->x_begin) / last : 0.0;
+        c = s.span_colors->begin + (s.span_colors->end - s.span_colors->begin) * w;
+      } else if (const auto& ix = at(s.triangle); ix.begin) {
+        const TriangleBegin& b = std::get<TriangleBegin>(events_[*ix.begin]);
+        if (b.flat_color) c = *b.flat_color;
+      }
+      by_event[i] = {s.triangle, c, false};
+    }
+  for (auto& [i, w] : by_event) h.writes.push_back(w);
+  return h;
+}
+
+}  // namespace scantrace::trace

@@ -1,0 +1,86 @@
+#pragma once
+// A trace, read from a .jsonl file or recorded in memory, and the questions one asks of it:
+//
+//   Trace t = Trace::load("triangle.jsonl");
+//   t.triangles();                        // the triangles traced, in order
+//   t.edge_table(0).edges[1].dx_dy;       // the edge table of triangle 0
+//   t.scanline(0, 42).active_points;      // triangle 0 at row 42: active edges, points, span…
+//   t.pixel_history(100, 200).final();    // who wrote pixel (100, 200), in order, and the last
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "events.hpp"
+#include "io/input_error.hpp"
+
+namespace scantrace::trace {
+
+// A malformed trace: one line naming the file and, when it is about one line, its number
+// ("t.jsonl:3: not valid JSON …"). It is bad input data, so it is an InputError (exit status 1).
+class TraceError : public InputError {
+ public:
+  explicit TraceError(const std::string& message) : InputError(message, "", "") {}
+};
+
+struct PixelWrite {
+  int triangle = 0;
+  Color color;
+  bool from_pixel_event = false;  // false: reconstructed from the scanline's span and colours
+};
+
+struct PixelHistory {
+  std::vector<PixelWrite> writes;  // in drawing order
+  bool empty() const { return writes.empty(); }
+  // The write that is visible in the image (the last one); throws if nobody wrote the pixel.
+  const PixelWrite& final() const;
+};
+
+class Trace {
+ public:
+  static Trace load(const std::filesystem::path& path);
+  static Trace parse(std::istream& in, const std::string& name);
+  // Checks the structure (header first, version, footer last) and indexes the events.
+  static Trace from_events(std::vector<Event> events, const std::string& name);
+
+  const Header& header() const;
+  const std::vector<Event>& events() const { return events_; }
+  bool complete() const { return footer_.has_value(); }  // false: the writer was interrupted
+  bool truncated() const { return footer_ && footer_->truncated; }
+  const std::optional<Footer>& footer() const { return footer_; }
+
+  std::vector<int> triangles() const;  // traced (begun or skipped), in order of appearance
+  bool has_triangle(int t) const { return index_.count(t) > 0; }
+  const TriangleBegin& triangle_begin(int t) const;
+  const EdgeTableEvent& edge_table(int t) const;
+  const Scanline& scanline(int t, i64 y) const;
+  bool has_scanline(int t, i64 y) const;
+  std::vector<const Scanline*> scanlines(int t) const;  // by increasing y
+  std::vector<const Pixel*> pixels(int t) const;        // pixel events, in order
+  std::optional<TriangleEnd> triangle_end(int t) const;
+  std::optional<TriangleSkipped> skipped(int t) const;
+  PixelHistory pixel_history(i64 x, i64 y) const;
+
+ private:
+  struct TriangleIndex {
+    std::optional<std::size_t> begin, edge_table, end, skipped;
+    std::map<i64, std::size_t> scanlines;
+    std::vector<std::size_t> pixels;
+  };
+  const TriangleIndex& at(int t) const;
+
+  std::string name_;
+  std::vector<Event> events_;
+  std::optional<Footer> footer_;
+  std::vector<int> order_;
+  std::map<int, TriangleIndex> index_;
+  std::map<i64, std::vector<std::size_t>> rows_;  // scanline events by row, in order
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> pixel_events_;  // by (x, y)
+};
+
+}  // namespace scantrace::trace

@@ -1,0 +1,43 @@
+#pragma once
+// What to trace: the level of detail, which triangles, which rows, and how many events at most.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "src/tracer.hpp"
+
+namespace scantrace::trace {
+
+// A set of triangle indices written as "3,17,40-45" (ranges inclusive).
+class IndexSet {
+ public:
+  IndexSet() = default;
+  // Throws std::invalid_argument naming the offending item.
+  static IndexSet parse(const std::string& text);
+  bool contains(int i) const;
+  const std::vector<std::pair<int, int>>& ranges() const { return ranges_; }
+
+ private:
+  std::vector<std::pair<int, int>> ranges_;  // sorted, inclusive
+};
+
+// Rows A…B inclusive, written "A:B"; either side may be omitted ("100:" or ":50").
+struct RowRange {
+  std::int64_t first = INT64_MIN, last = INT64_MAX;
+  static RowRange parse(const std::string& text);  // throws std::invalid_argument
+  bool contains(std::int64_t y) const { return y >= first && y <= last; }
+};
+
+struct TraceFilter {
+  TraceLevel level = TraceLevel::scanline;
+  std::optional<IndexSet> triangles{};  // none: every triangle
+  std::optional<RowRange> rows{};       // none: every row (scanline and pixel events only)
+  std::optional<std::int64_t> max_events{};  // cap on the events between header and footer
+};
+
+const char* to_string(TraceLevel level);
+TraceLevel parse_level(const std::string& text);  // throws std::invalid_argument
+
+}  // namespace scantrace::trace

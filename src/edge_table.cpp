@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 
 namespace scantrace {
 
@@ -36,9 +37,11 @@ void EdgeTable::build(std::span<const FixedPoint> points, const SubpixelGrid& gr
     }
     edges_.push_back(e);
   }
-  std::sort(edges_.begin(), edges_.end(), [](const Edge& a, const Edge& b) {
-    return a.first_row != b.first_row ? a.first_row < b.first_row : a.id < b.id;
-  });
+  // Insertion sort: a polygon has few edges, most already in order, and std::sort's set-up costs
+  // more than sorting three.
+  for (std::size_t i = 1; i < edges_.size(); ++i)
+    for (std::size_t j = i; j > 0 && edges_[j].first_row < edges_[j - 1].first_row; --j)
+      std::swap(edges_[j], edges_[j - 1]);
   if (first_row_ > last_row_) first_row_ = 0, last_row_ = -1;
 }
 

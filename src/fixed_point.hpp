@@ -27,8 +27,15 @@ struct FixedPoint {
   friend constexpr bool operator==(FixedPoint, FixedPoint) = default;
 };
 
-// floor(a / b) and the matching non-negative remainder, for b > 0.
+// floor(a / b) for b > 0. The quotient must fit in 64 bits. A 128-bit division is a library call
+// costing tens of cycles, and the numerator usually fits in 64 bits (coordinates within a few
+// million pixels), so that case takes the hardware division.
 inline constexpr i64 floor_div(i128 a, i64 b) {
+  if (a >= INT64_MIN && a <= INT64_MAX) {
+    const i64 n = static_cast<i64>(a);
+    const i64 q = n / b;
+    return (n % b) < 0 ? q - 1 : q;
+  }
   i128 q = a / b;
   if ((a % b) < 0) --q;
   return static_cast<i64>(q);
@@ -68,9 +75,10 @@ class SubpixelGrid {
   }
 
   // The smallest row/column index whose pixel centre is at or after v (grid units): ceil(v / 2^bits).
-  constexpr i64 ceil_to_pixel(i64 v) const { return -floor_div(-static_cast<i128>(v), scale()); }
+  // Since C++20 >> of a negative value is an arithmetic shift, i.e. exactly floor(v / 2^bits).
+  constexpr i64 ceil_to_pixel(i64 v) const { return -((-v) >> bits_); }
   // The largest index whose centre is at or before v: floor(v / 2^bits).
-  constexpr i64 floor_to_pixel(i64 v) const { return floor_div(v, scale()); }
+  constexpr i64 floor_to_pixel(i64 v) const { return v >> bits_; }
 
  private:
   int bits_;

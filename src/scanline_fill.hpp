@@ -74,11 +74,16 @@ inline i128 twice_area(std::span<const FixedPoint> p) {
 // listing the same polygon's vertices in another order cannot change the last bit of the result.
 inline Color mean_color(std::span<const FixedPoint> p, std::span<const Color> colors,
                         std::vector<int>& order) {
-  order.resize(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) order[i] = static_cast<int>(i);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
+  // Insertion sort: polygons are small, and std::sort's set-up costs more than three vertices.
+  const auto before = [&](int a, int b) {
     return p[a].y != p[b].y ? p[a].y < p[b].y : p[a].x != p[b].x ? p[a].x < p[b].x : a < b;
-  });
+  };
+  order.resize(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    std::size_t j = i;
+    for (; j > 0 && before(static_cast<int>(i), order[j - 1]); --j) order[j] = order[j - 1];
+    order[j] = static_cast<int>(i);
+  }
   Color sum;
   for (int i : order) sum += colors[i];
   return sum * (1.0 / static_cast<double>(p.size()));
@@ -135,10 +140,12 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
       x_min = std::min(x_min, p.x), x_max = std::max(x_max, p.x);
       y_min = std::min(y_min, p.y), y_max = std::max(y_max, p.y);
     }
+    // The pixel rows and columns the bounding box spans under the fill rule, before clipping.
+    const i64 col_first = grid.ceil_to_pixel(x_min), row_first = grid.ceil_to_pixel(y_min);
     const i64 col_last = closed ? grid.floor_to_pixel(x_max) : grid.ceil_to_pixel(x_max) - 1;
     const i64 row_last = closed ? grid.floor_to_pixel(y_max) : grid.ceil_to_pixel(y_max) - 1;
-    if (grid.ceil_to_pixel(x_min) > std::min<i64>(col_last, width - 1) || col_last < 0 ||
-        grid.ceil_to_pixel(y_min) > std::min<i64>(row_last, height - 1) || row_last < 0)
+    if (col_first > col_last || row_first > row_last) return skip(SkipReason::no_pixel_centre);
+    if (col_last < 0 || col_first >= width || row_last < 0 || row_first >= height)
       return skip(SkipReason::offscreen);
   }
 

@@ -8,6 +8,7 @@ const char* to_string(SkipReason r) {
     case SkipReason::too_few_vertices: return "too_few_vertices";
     case SkipReason::out_of_range: return "out_of_range";
     case SkipReason::degenerate: return "degenerate";
+    case SkipReason::no_pixel_centre: return "no_pixel_centre";
     case SkipReason::offscreen: return "offscreen";
   }
   return "unknown";

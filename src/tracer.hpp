@@ -34,6 +34,7 @@ enum class SkipReason {
   too_few_vertices,  // fewer than three vertices
   out_of_range,      // a coordinate is NaN, infinite or beyond kMaxCoordinate
   degenerate,        // zero area after snapping: fills nothing under either rule
+  no_pixel_centre,   // its bounding box holds no pixel centre: too small to own a pixel
   offscreen,         // no row or no column of its bounding box is on the canvas
 };
 const char* to_string(SkipReason r);

@@ -28,7 +28,7 @@ inline std::string format_points(std::span<const scantrace::Vec2> pts) {
 
 inline std::string format_color(scantrace::Color c) {
   char buf[96];
-  std::snprintf(buf, sizeof buf, "(%.9g, %.9g, %.9g)", c.r, c.g, c.b);
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g)", c.r, c.g, c.b);
   return buf;
 }
 

@@ -227,6 +227,17 @@ TEST_CASE("a triangle touching the canvas with its right edge", "[edge][offscree
   CHECK(fill(t, kClosed) == std::vector<std::string>{"(0,0)", "(0,1)", "(0,2)", "(0,3)", "(0,4)"});
 }
 
+// A triangle on the canvas whose bounding box holds no pixel centre — columns ceil(1.1) = 2 …
+// ceil(1.6) − 1 = 1 — cannot own a pixel; it is skipped for that reason, not as "offscreen". The
+// closed rule needs a centre on the boundary: 1.1…1.6 still contains none.
+TEST_CASE("a triangle between pixel centres is skipped as having none", "[edge][subpixel]") {
+  const Triangle t{Vec2{1.1, 1.1}, Vec2{1.6, 1.2}, Vec2{1.3, 1.8}};
+  check_skipped(t, kTopLeft, SkipReason::no_pixel_centre);
+  check_skipped(t, kClosed, SkipReason::no_pixel_centre);
+  // Between rows only (columns 1 … 4 are spanned, no row centre in 2.2 … 2.9).
+  check_skipped({Vec2{0.5, 2.2}, Vec2{4.5, 2.4}, Vec2{2, 2.9}}, kTopLeft, SkipReason::no_pixel_centre);
+}
+
 // A vertex a billion pixels away: the visible part must be exact, and the rows visited are the
 // canvas rows at most (rows outside the canvas are never iterated).
 TEST_CASE("vertices far outside the canvas give the exact visible result", "[edge][huge]") {
@@ -238,6 +249,16 @@ TEST_CASE("vertices far outside the canvas give the exact visible result", "[edg
   const double m = std::ldexp(1.0, 30);
   check_against_reference({Vec2{-m, -m}, Vec2{m, 5}, Vec2{3, m}}, 64, 64, 12);
   check_against_reference({Vec2{-m, 10}, Vec2{m, 10.5}, Vec2{30, 11}}, 64, 64, 12);
+}
+
+// Rows visited are counted on the canvas only: (100,50),(400,300),(1e9,1e9) spans rows 50 and
+// down, far past the last canvas row 511.
+TEST_CASE("only canvas rows are visited", "[edge][huge]") {
+  RgbImage img(512, 512, sttest::kSentinel);
+  const Triangle t{Vec2{100, 50}, Vec2{400, 300}, Vec2{1e9, 1e9}};
+  CHECK(scantrace::fill_triangle(img, t, kRgb, kTopLeft).rows == 511 - 50 + 1);
+  const Triangle above{Vec2{-1e9, -1e9}, Vec2{300, 20.5}, Vec2{10, 99.5}};
+  CHECK(scantrace::fill_triangle(img, above, kRgb, kTopLeft).rows == 99 - 0 + 1);
 }
 
 TEST_CASE("a triangle around the whole canvas fills every pixel once", "[edge][huge]") {

@@ -27,20 +27,21 @@ constexpr std::array<FillOptions, 4> kModes{{{Shading::flat, FillRule::top_left}
                                              {Shading::flat, FillRule::closed},
                                              {Shading::gouraud, FillRule::closed}}};
 
-// A random triangle of one of three kinds: integer vertices (ties everywhere), multiples of 2^-16
-// (fractional, and exactly representable after a whole-pixel translation), and small ones.
+// v rounded to a multiple of 2^-16: fractional, and still exact after adding whole pixels.
+double dyadic(double v) {
+  return std::ldexp(std::round(std::ldexp(v, 16)), -16);
+}
+
+// A random triangle of one of three kinds: integer vertices (ties everywhere), fractional ones
+// (multiples of 2^-16) anywhere in [lo, hi]², and small fractional ones.
 Triangle random_triangle(Rng& r, double lo, double hi) {
   Triangle t;
   const long long kind = r.integer(0, 2);
   const Vec2 c = r.point(lo, hi, lo, hi);
   for (Vec2& p : t) {
     if (kind == 0) p = {std::round(r.uniform(lo, hi)), std::round(r.uniform(lo, hi))};
-    if (kind == 1)
-      p = {std::ldexp(std::round(std::ldexp(r.uniform(lo, hi), 16)), -16),
-           std::ldexp(std::round(std::ldexp(r.uniform(lo, hi), 16)), -16)};
-    if (kind == 2)
-      p = {std::round(std::ldexp(c.x + r.uniform(-2, 2), 16)) / 65536.0,
-           std::round(std::ldexp(c.y + r.uniform(-2, 2), 16)) / 65536.0};
+    if (kind == 1) p = {dyadic(r.uniform(lo, hi)), dyadic(r.uniform(lo, hi))};
+    if (kind == 2) p = {dyadic(c.x + r.uniform(-2, 2)), dyadic(c.y + r.uniform(-2, 2))};
   }
   return t;
 }

@@ -3,6 +3,8 @@
 // interpolation, flat colours against the mean, and the pixel count the fill reports.
 #include <array>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -22,22 +24,22 @@ using sttest::Rng;
 using Triangle = std::array<Vec2, 3>;
 using Generator = std::function<Triangle(Rng&, int width, int height)>;
 
-struct Canvas {
+struct CanvasSize {
   int width, height;
 };
-constexpr std::array<Canvas, 3> kCanvases{{{64, 48}, {200, 150}, {7, 5}}};
+constexpr std::array<CanvasSize, 3> kCanvases{{{64, 48}, {200, 150}, {7, 5}}};
 
 // Fills `count` random triangles of one family on every canvas, in the given mode, and compares
 // each with the reference. Stops after a few failing triangles to keep the report readable.
 void agree_with_reference(std::uint64_t seed, int count, const Generator& make, FillRule rule,
-                          Shading shading, int bits = 8, bool random_bits = false) {
+                          Shading shading, bool random_bits) {
   Rng rng(seed);
   int failures = 0;
-  for (const Canvas cv : kCanvases) {
+  for (const CanvasSize cv : kCanvases) {
     for (int i = 0; i < count && failures < 3; ++i) {
       const Triangle v = make(rng, cv.width, cv.height);
       const std::array<Color, 3> c{rng.color(), rng.color(), rng.color()};
-      const int b = random_bits ? std::array{0, 1, 4, 8, 12}[rng.integer(0, 4)] : bits;
+      const int b = random_bits ? std::array{0, 1, 4, 8, 12}[rng.integer(0, 4)] : 8;
 
       scantrace::RgbImage img(cv.width, cv.height, sttest::kSentinel);
       const FillOptions opt{shading, rule, b};
@@ -67,16 +69,16 @@ void agree_with_reference(std::uint64_t seed, int count, const Generator& make, 
 
 void all_modes(std::uint64_t seed, int count, const Generator& make, bool random_bits = false) {
   SECTION("top-left, flat") {
-    agree_with_reference(seed, count, make, FillRule::top_left, Shading::flat, 8, random_bits);
+    agree_with_reference(seed, count, make, FillRule::top_left, Shading::flat, random_bits);
   }
   SECTION("top-left, gouraud") {
-    agree_with_reference(seed, count, make, FillRule::top_left, Shading::gouraud, 8, random_bits);
+    agree_with_reference(seed, count, make, FillRule::top_left, Shading::gouraud, random_bits);
   }
   SECTION("closed, flat") {
-    agree_with_reference(seed, count, make, FillRule::closed, Shading::flat, 8, random_bits);
+    agree_with_reference(seed, count, make, FillRule::closed, Shading::flat, random_bits);
   }
   SECTION("closed, gouraud") {
-    agree_with_reference(seed, count, make, FillRule::closed, Shading::gouraud, 8, random_bits);
+    agree_with_reference(seed, count, make, FillRule::closed, Shading::gouraud, random_bits);
   }
 }
 

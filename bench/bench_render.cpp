@@ -29,8 +29,8 @@ void register_scene(const std::string& name, const Scene& scene) {
       }
       state.counters["triangles/s"] = benchmark::Counter(
           static_cast<double>(scene.faces.size()), benchmark::Counter::kIsIterationInvariantRate);
-      state.counters["pixels/s"] = benchmark::Counter(static_cast<double>(stats.pixels),
-                                                      benchmark::Counter::kIsIterationInvariantRate);
+      state.counters["pixels/s"] = benchmark::Counter(
+          static_cast<double>(stats.pixels), benchmark::Counter::kIsIterationInvariantRate);
     })->Unit(benchmark::kMicrosecond);
   }
 }

@@ -18,5 +18,6 @@ struct Command {
 
 Command add_render_command(CLI::App& app);
 Command add_demo_command(CLI::App& app);
+Command add_trace_command(CLI::App& app);
 
 }  // namespace scantrace::cli

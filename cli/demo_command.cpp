@@ -15,6 +15,7 @@
 #include "io/scene_json.hpp"
 #include "src/demo_scene.hpp"
 #include "src/painter.hpp"
+#include "trace/record.hpp"
 #include "viz/image_file.hpp"
 
 namespace scantrace::cli {
@@ -45,15 +46,24 @@ void render_scene(const Scene& scene, Shading shading, const std::filesystem::pa
       stats.pixels, ms);
 }
 
-void fill_demo_triangle(const std::filesystem::path& file) {
+// The course's example triangle, filled once under a scanline-level tracer: the PNG and the trace
+// come from the same fill, so the narration is of exactly the pixels in the image.
+void trace_demo_triangle(const std::filesystem::path& image_file,
+                         const std::filesystem::path& trace_file) {
   const DemoTriangle t;
-  RgbImage image(kDefaultCanvasSize, kDefaultCanvasSize, Rgb32f{1, 1, 1});
-  const FillResult r = fill_triangle(image, t.vertices, t.colors);  // Gouraud, top-left
-  write_png(image, file);
+  trace::TriangleInput input;
+  input.vertices = t.vertices;
+  input.colors = t.colors;
+  RgbImage image;
+  const trace::Footer footer =
+      trace::write_triangle_trace(trace_file, input, FillOptions{}, trace::TraceFilter{}, &image);
+  write_png(image, image_file);
   spdlog::info(
       "wrote {}: the course's example triangle (20,20) (250,80) (300,400), red, green "
-      "and blue vertices, Gouraud ({} rows, {} pixels)",
-      file.string(), r.rows, r.pixels);
+      "and blue vertices, Gouraud",
+      image_file.string());
+  spdlog::info("wrote {}: its step-by-step trace, {} events (edge table, then every scanline)",
+               trace_file.string(), footer.events);
 }
 
 void run_demo(const DemoArgs& args) {
@@ -62,7 +72,7 @@ void run_demo(const DemoArgs& args) {
   const Scene scene = demo_scene();
   render_scene(scene, Shading::flat, dir / "demo_flat.png");
   render_scene(scene, Shading::gouraud, dir / "demo_gouraud.png");
-  fill_demo_triangle(dir / "triangle_gouraud.png");
+  trace_demo_triangle(dir / "triangle_gouraud.png", dir / "triangle.jsonl");
   const std::filesystem::path scene_file = dir / "demo_scene.json";
   save_scene(scene, scene_file);
   spdlog::info(

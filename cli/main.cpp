@@ -48,7 +48,8 @@ int main(int argc, char** argv) {
       "file, the element and the problem) or a failed write, 2 usage error.");
 
   const std::vector<scantrace::cli::Command> commands{scantrace::cli::add_demo_command(app),
-                                                      scantrace::cli::add_render_command(app)};
+                                                      scantrace::cli::add_render_command(app),
+                                                      scantrace::cli::add_trace_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

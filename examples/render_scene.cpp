@@ -22,9 +22,8 @@ int main(int argc, char** argv) {
       const RgbImage image = render(scene, FillOptions{.shading = shading}, &stats);
       const std::string out = std::string(argv[2]) + "_" + to_string(shading) + ".png";
       write_png(image, out);
-      std::printf("%s: %lld triangles drawn, %lld skipped, %lld pixels -> %s\n",
-                  to_string(shading), stats.triangles_filled, stats.triangles_skipped,
-                  stats.pixels, out.c_str());
+      std::printf("%s: %lld triangles drawn, %lld skipped, %lld pixels -> %s\n", to_string(shading),
+                  stats.triangles_filled, stats.triangles_skipped, stats.pixels, out.c_str());
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "render_scene: %s\n", e.what());

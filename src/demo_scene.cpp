@@ -75,8 +75,8 @@ void add_sun(Scene& s) {
     const double a = 2.0 * std::numbers::pi * k / kRays;
     const double radius = (k % 2 == 0) ? 92.0 : 70.0;
     const Color rim = (k % 2 == 0) ? Color{1.0, 0.35, 0.05} : Color{0.95, 0.65, 0.1};
-    const int v = add_vertex(s, {kCentre.x + radius * std::cos(a), kCentre.y + radius * std::sin(a)},
-                             rim, 5.0);
+    const int v = add_vertex(
+        s, {kCentre.x + radius * std::cos(a), kCentre.y + radius * std::sin(a)}, rim, 5.0);
     if (prev >= 0) s.faces.push_back({centre, prev, v});
     if (first < 0) first = v;
     prev = v;

@@ -3,9 +3,9 @@
 //
 // The textbook active-edge loop keeps x as a float and adds 1/m per row; after a few hundred rows
 // the sum has drifted and shared edges of neighbouring triangles disagree about a pixel. Here x is
-// kept as an exact rational q + r/den (pixels), den = 2^bits · dy, 0 <= r < den: moving one row down
-// adds the constant dx·2^bits / den, done with an integer quotient and remainder, so the value at
-// every row is exactly the value the edge equation gives (Bresenham's idea, in fixed point).
+// kept as an exact rational q + r/den (pixels), den = 2^bits · dy, 0 <= r < den: moving one row
+// down adds the constant dx·2^bits / den, done with an integer quotient and remainder, so the value
+// at every row is exactly the value the edge equation gives (Bresenham's idea, in fixed point).
 #include <compare>
 
 #include "fixed_point.hpp"
@@ -13,9 +13,9 @@
 namespace scantrace {
 
 struct Edge {
-  int id = 0;         // the edge from polygon vertex id to vertex (id + 1) mod n
-  int top = 0;        // index of the upper endpoint (smaller y)
-  int bottom = 0;     // index of the lower endpoint
+  int id = 0;      // the edge from polygon vertex id to vertex (id + 1) mod n
+  int top = 0;     // index of the upper endpoint (smaller y)
+  int bottom = 0;  // index of the lower endpoint
   FixedPoint p_top, p_bottom;
   i64 first_row = 0;  // first scanline this edge is active on
   i64 last_row = -1;  // last scanline (first_row > last_row: the edge crosses no scanline)
@@ -31,7 +31,8 @@ struct Edge {
   // rows above the canvas are skipped without being iterated).
   void start_at(i64 row, i64 scale) {
     den = scale * dy();
-    const i128 num = static_cast<i128>(p_top.x) * dy() + static_cast<i128>(dx()) * (row * scale - p_top.y);
+    const i128 num =
+        static_cast<i128>(p_top.x) * dy() + static_cast<i128>(dx()) * (row * scale - p_top.y);
     q = floor_div(num, den);
     r = static_cast<i64>(num - static_cast<i128>(q) * den);
     const i64 inc = dx() * scale;
@@ -50,7 +51,9 @@ struct Edge {
 
   i64 ceil_x() const { return q + (r != 0); }
   i64 floor_x() const { return q; }
-  double x() const { return static_cast<double>(q) + static_cast<double>(r) / static_cast<double>(den); }
+  double x() const {
+    return static_cast<double>(q) + static_cast<double>(r) / static_cast<double>(den);
+  }
 };
 
 // Exact order of two edges on the current row: by x, then (where they meet) by slope dx/dy, so

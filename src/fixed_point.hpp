@@ -74,8 +74,9 @@ class SubpixelGrid {
     return {static_cast<double>(p.x) / s, static_cast<double>(p.y) / s};
   }
 
-  // The smallest row/column index whose pixel centre is at or after v (grid units): ceil(v / 2^bits).
-  // Since C++20 >> of a negative value is an arithmetic shift, i.e. exactly floor(v / 2^bits).
+  // The smallest row/column index whose pixel centre is at or after v (grid units): ceil(v /
+  // 2^bits). Since C++20 >> of a negative value is an arithmetic shift, i.e. exactly floor(v /
+  // 2^bits).
   constexpr i64 ceil_to_pixel(i64 v) const { return -((-v) >> bits_); }
   // The largest index whose centre is at or before v: floor(v / 2^bits).
   constexpr i64 floor_to_pixel(i64 v) const { return v >> bits_; }

@@ -31,7 +31,8 @@ RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt, T
                                 scene.vertices[face[2]]};
     const std::array<Color, 3> c{scene.vcolors[face[0]], scene.vcolors[face[1]],
                                  scene.vcolors[face[2]]};
-    const FillResult r = fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, tracer);
+    const FillResult r =
+        fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, tracer);
     (r.skipped == SkipReason::none ? stats.triangles_filled : stats.triangles_skipped) += 1;
     stats.pixels += r.pixels;
   }

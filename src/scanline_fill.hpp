@@ -100,8 +100,8 @@ inline Color edge_color(const Edge& e, i64 y, std::span<const Color> colors,
 }  // namespace detail
 
 template <Canvas C, FillTracer Tracer = NoTracer>
-FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& opt,
-                        FillScratch& s, Tracer& tracer) {
+FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& opt, FillScratch& s,
+                        Tracer& tracer) {
   constexpr bool kTriangleLevel = Tracer::max_level >= TraceLevel::triangle;
   constexpr bool kScanlineLevel = Tracer::max_level >= TraceLevel::scanline;
   constexpr bool kPixelLevel = Tracer::max_level >= TraceLevel::pixel;
@@ -119,8 +119,7 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
     throw std::invalid_argument("fill: subpixel_bits must be in 0…" +
                                 std::to_string(kMaxSubpixelBits));
   const std::size_t n = in.points.size();
-  if (in.colors.size() != n)
-    throw std::invalid_argument("fill: one colour per vertex is needed");
+  if (in.colors.size() != n) throw std::invalid_argument("fill: one colour per vertex is needed");
   if (n < 3) return skip(SkipReason::too_few_vertices);
   s.snapped.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -289,28 +288,25 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
 }
 
 template <Canvas C>
-FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& opt,
-                        FillScratch& s) {
+FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& opt, FillScratch& s) {
   NoTracer none;
   return fill_polygon(canvas, in, opt, s, none);
 }
 
 // Convenience entry points for one polygon or triangle on an image.
 template <class P, class Tracer = NoTracer>
-  requires FillTracer<std::remove_cvref_t<Tracer>>
-FillResult fill_convex_polygon(Image<P>& image, std::span<const Vec2> points,
-                               std::span<const Color> colors, const FillOptions& opt = {},
-                               Tracer&& tracer = NoTracer{}) {
+requires FillTracer<std::remove_cvref_t<Tracer>> FillResult
+fill_convex_polygon(Image<P>& image, std::span<const Vec2> points, std::span<const Color> colors,
+                    const FillOptions& opt = {}, Tracer&& tracer = NoTracer{}) {
   ImageCanvas<P> canvas(image);
   FillScratch scratch;
   return fill_polygon(canvas, PolygonInput{points, colors, 0, std::nullopt}, opt, scratch, tracer);
 }
 
 template <class P, class Tracer = NoTracer>
-  requires FillTracer<std::remove_cvref_t<Tracer>>
-FillResult fill_triangle(Image<P>& image, const std::array<Vec2, 3>& v,
-                         const std::array<Color, 3>& c, const FillOptions& opt = {},
-                         Tracer&& tracer = NoTracer{}) {
+requires FillTracer<std::remove_cvref_t<Tracer>> FillResult
+fill_triangle(Image<P>& image, const std::array<Vec2, 3>& v, const std::array<Color, 3>& c,
+              const FillOptions& opt = {}, Tracer&& tracer = NoTracer{}) {
   return fill_convex_polygon(image, std::span<const Vec2>(v), std::span<const Color>(c), opt,
                              std::forward<Tracer>(tracer));
 }

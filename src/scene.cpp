@@ -9,9 +9,15 @@ std::string at(const char* array, std::size_t i) {
   return std::string(array) + "[" + std::to_string(i) + "]";
 }
 
-bool finite(Color c) { return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b); }
-bool in_unit_range(double v) { return v >= 0.0 && v <= 1.0; }
-bool in_unit_range(Color c) { return in_unit_range(c.r) && in_unit_range(c.g) && in_unit_range(c.b); }
+bool finite(Color c) {
+  return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+}
+bool in_unit_range(double v) {
+  return v >= 0.0 && v <= 1.0;
+}
+bool in_unit_range(Color c) {
+  return in_unit_range(c.r) && in_unit_range(c.g) && in_unit_range(c.b);
+}
 
 }  // namespace
 
@@ -29,8 +35,7 @@ std::optional<SceneProblem> validate(const Scene& scene) {
   const std::size_t n = scene.vertices.size();
   if (scene.vcolors.size() != n)
     return SceneProblem{"vcolors", "has " + std::to_string(scene.vcolors.size()) +
-                                       " entries but there are " + std::to_string(n) +
-                                       " vertices"};
+                                       " entries but there are " + std::to_string(n) + " vertices"};
   if (scene.depth.size() != n)
     return SceneProblem{"depth", "has " + std::to_string(scene.depth.size()) +
                                      " entries but there are " + std::to_string(n) + " vertices"};

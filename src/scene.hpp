@@ -17,10 +17,10 @@ inline constexpr int kDefaultCanvasSize = 512;
 inline constexpr long long kMaxCanvasPixels = 1LL << 28;
 
 struct Scene {
-  std::vector<Vec2> vertices;                // [x, y]: x = column, y = row (pointing down)
-  std::vector<Color> vcolors;                // one RGB colour per vertex, in [0, 1]
-  std::vector<std::array<int, 3>> faces;     // 0-based vertex indices
-  std::vector<double> depth;                 // one depth per vertex (larger = farther)
+  std::vector<Vec2> vertices;             // [x, y]: x = column, y = row (pointing down)
+  std::vector<Color> vcolors;             // one RGB colour per vertex, in [0, 1]
+  std::vector<std::array<int, 3>> faces;  // 0-based vertex indices
+  std::vector<double> depth;              // one depth per vertex (larger = farther)
   int width = kDefaultCanvasSize;
   int height = kDefaultCanvasSize;
   Color background{1, 1, 1};

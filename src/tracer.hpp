@@ -40,8 +40,8 @@ enum class SkipReason {
 const char* to_string(SkipReason r);
 
 struct PolygonSetup {
-  int triangle = 0;                   // face index (position in the scene)
-  std::span<const Vec2> vertices;     // as given
+  int triangle = 0;                // face index (position in the scene)
+  std::span<const Vec2> vertices;  // as given
   std::span<const FixedPoint> snapped;
   std::span<const Color> colors;
   std::optional<double> depth;
@@ -59,14 +59,14 @@ struct EdgeTableView {
 
 struct ActiveEdgeState {
   int edge = 0;
-  double x = 0;     // exact intersection with the row (rounded to double for display)
-  i64 ceil_x = 0;   // ceil(x), computed exactly
+  double x = 0;    // exact intersection with the row (rounded to double for display)
+  i64 ceil_x = 0;  // ceil(x), computed exactly
 };
 
 struct ActivePointState {
   double x = 0;
   int edge = 0;
-  Color color;      // interpolated along the edge (Gouraud) or the flat colour
+  Color color;  // interpolated along the edge (Gouraud) or the flat colour
 };
 
 struct ScanlineStep {
@@ -87,6 +87,8 @@ struct NoTracer {
 };
 
 template <class T>
-concept FillTracer = requires { { T::max_level } -> std::convertible_to<TraceLevel>; };
+concept FillTracer = requires {
+  { T::max_level } -> std::convertible_to<TraceLevel>;
+};
 
 }  // namespace scantrace

@@ -4,7 +4,9 @@
 
 namespace scantrace {
 
-void to_json(nlohmann::ordered_json& j, const Vec2& p) { j = nlohmann::ordered_json::array({p.x, p.y}); }
+void to_json(nlohmann::ordered_json& j, const Vec2& p) {
+  j = nlohmann::ordered_json::array({p.x, p.y});
+}
 void to_json(nlohmann::ordered_json& j, const Color& c) {
   j = nlohmann::ordered_json::array({c.r, c.g, c.b});
 }
@@ -34,16 +36,23 @@ ojson list(const std::vector<T>& items) {
 }
 
 ojson encode(const Header& h) {
-  return {{"type", "header"},           {"format", h.format},
-          {"version", h.version},       {"canvas", {{"width", h.canvas.width}, {"height", h.canvas.height}}},
-          {"shading", h.shading},       {"fill_rule", h.fill_rule},
-          {"subpixel_bits", h.subpixel_bits}, {"level", h.level},
+  return {{"type", "header"},
+          {"format", h.format},
+          {"version", h.version},
+          {"canvas", {{"width", h.canvas.width}, {"height", h.canvas.height}}},
+          {"shading", h.shading},
+          {"fill_rule", h.fill_rule},
+          {"subpixel_bits", h.subpixel_bits},
+          {"level", h.level},
           {"generator", h.generator}};
 }
 
 ojson encode(const TriangleBegin& e) {
-  ojson j = {{"type", "triangle_begin"}, {"triangle", e.triangle},  {"vertices", list(e.vertices)},
-             {"snapped", list(e.snapped)}, {"colors", list(e.colors)}};
+  ojson j = {{"type", "triangle_begin"},
+             {"triangle", e.triangle},
+             {"vertices", list(e.vertices)},
+             {"snapped", list(e.snapped)},
+             {"colors", list(e.colors)}};
   if (e.depth) j["depth"] = *e.depth;
   if (e.flat_color) j["flat_color"] = *e.flat_color;
   return j;
@@ -52,13 +61,22 @@ ojson encode(const TriangleBegin& e) {
 ojson encode(const EdgeTableEvent& e) {
   ojson edges = ojson::array(), horizontal = ojson::array();
   for (const EdgeEntry& x : e.edges)
-    edges.push_back({{"edge", x.edge}, {"from", x.from}, {"to", x.to}, {"y_min", x.y_min},
-                     {"y_max", x.y_max}, {"x_at_y_min", x.x_at_y_min}, {"dx_dy", x.dx_dy},
-                     {"first_row", x.first_row}, {"last_row", x.last_row}});
+    edges.push_back({{"edge", x.edge},
+                     {"from", x.from},
+                     {"to", x.to},
+                     {"y_min", x.y_min},
+                     {"y_max", x.y_max},
+                     {"x_at_y_min", x.x_at_y_min},
+                     {"dx_dy", x.dx_dy},
+                     {"first_row", x.first_row},
+                     {"last_row", x.last_row}});
   for (const HorizontalEntry& h : e.horizontal)
     horizontal.push_back(
         {{"edge", h.edge}, {"from", h.from}, {"to", h.to}, {"y", h.y}, {"reason", h.reason}});
-  return {{"type", "edge_table"}, {"triangle", e.triangle}, {"edges", edges}, {"horizontal", horizontal}};
+  return {{"type", "edge_table"},
+          {"triangle", e.triangle},
+          {"edges", edges},
+          {"horizontal", horizontal}};
 }
 
 ojson encode(const Scanline& s) {
@@ -66,11 +84,12 @@ ojson encode(const Scanline& s) {
   for (const ActiveEdge& a : s.active_edges) active.push_back({{"edge", a.edge}, {"x", a.x}});
   for (const ActivePoint& p : s.active_points)
     points.push_back({{"x", p.x}, {"edge", p.edge}, {"color", p.color}});
-  ojson j = {{"type", "scanline"},          {"triangle", s.triangle}, {"y", s.y},
-             {"entered", s.entered},        {"retired", s.retired},   {"active_edges", active},
+  ojson j = {{"type", "scanline"},     {"triangle", s.triangle}, {"y", s.y},
+             {"entered", s.entered},   {"retired", s.retired},   {"active_edges", active},
              {"active_points", points}};
   if (s.span) j["span"] = {{"x_begin", s.span->x_begin}, {"x_end", s.span->x_end}};
-  if (s.span_colors) j["span_colors"] = {{"begin", s.span_colors->begin}, {"end", s.span_colors->end}};
+  if (s.span_colors)
+    j["span_colors"] = {{"begin", s.span_colors->begin}, {"end", s.span_colors->end}};
   return j;
 }
 
@@ -79,7 +98,8 @@ ojson encode(const Pixel& p) {
           {"y", p.y},        {"color", p.color},       {"t", p.t}};
 }
 ojson encode(const TriangleEnd& e) {
-  return {{"type", "triangle_end"}, {"triangle", e.triangle}, {"rows", e.rows}, {"pixels", e.pixels}};
+  return {
+      {"type", "triangle_end"}, {"triangle", e.triangle}, {"rows", e.rows}, {"pixels", e.pixels}};
 }
 ojson encode(const TriangleSkipped& e) {
   return {{"type", "triangle_skipped"}, {"triangle", e.triangle}, {"reason", e.reason}};
@@ -148,16 +168,16 @@ Scanline decode_scanline(const json& j) {
   if (j.contains("span"))
     s.span = Span{j["span"].at("x_begin").get<i64>(), j["span"].at("x_end").get<i64>()};
   if (j.contains("span_colors"))
-    s.span_colors =
-        SpanColors{j["span_colors"].at("begin").get<Color>(), j["span_colors"].at("end").get<Color>()};
+    s.span_colors = SpanColors{j["span_colors"].at("begin").get<Color>(),
+                               j["span_colors"].at("end").get<Color>()};
   return s;
 }
 
 }  // namespace
 
 const char* type_name(const Event& e) {
-  static constexpr const char* kNames[] = {"header",       "triangle_begin", "edge_table",
-                                           "scanline",     "pixel",          "triangle_end",
+  static constexpr const char* kNames[] = {"header",           "triangle_begin", "edge_table",
+                                           "scanline",         "pixel",          "triangle_end",
                                            "triangle_skipped", "footer"};
   return kNames[e.index()];
 }
@@ -177,11 +197,11 @@ Event event_from_json(const json& j) {
     return Pixel{j.at("triangle").get<int>(), j.at("x").get<i64>(), j.at("y").get<i64>(),
                  j.at("color").get<Color>(), j.at("t").get<double>()};
   if (type == "triangle_end")
-    return TriangleEnd{j.at("triangle").get<int>(), j.at("rows").get<i64>(), j.at("pixels").get<i64>()};
+    return TriangleEnd{j.at("triangle").get<int>(), j.at("rows").get<i64>(),
+                       j.at("pixels").get<i64>()};
   if (type == "triangle_skipped")
     return TriangleSkipped{j.at("triangle").get<int>(), j.at("reason").get<std::string>()};
-  if (type == "footer")
-    return Footer{j.at("events").get<i64>(), j.at("truncated").get<bool>()};
+  if (type == "footer") return Footer{j.at("events").get<i64>(), j.at("truncated").get<bool>()};
   throw std::invalid_argument("unknown event type \"" + type + "\"");
 }
 

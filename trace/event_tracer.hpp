@@ -32,7 +32,8 @@ class EventTracer {
            (!filter_.triangles || filter_.triangles->contains(t));
   }
   bool wants_scanline(int, i64 y) const {
-    return !full_ && filter_.level >= TraceLevel::scanline && (!filter_.rows || filter_.rows->contains(y));
+    return !full_ && filter_.level >= TraceLevel::scanline &&
+           (!filter_.rows || filter_.rows->contains(y));
   }
   bool wants_pixels(int, i64) const { return !full_ && filter_.level >= TraceLevel::pixel; }
 

@@ -43,11 +43,11 @@ struct TriangleBegin {
 };
 
 struct EdgeEntry {
-  int edge = 0;           // the edge from vertex `edge` to vertex (edge + 1) mod n
-  Vec2 from, to;          // snapped endpoints, in that direction
+  int edge = 0;   // the edge from vertex `edge` to vertex (edge + 1) mod n
+  Vec2 from, to;  // snapped endpoints, in that direction
   double y_min = 0, y_max = 0;
-  double x_at_y_min = 0;  // x of the upper endpoint
-  double dx_dy = 0;       // the inverse slope: x moves by dx_dy per row
+  double x_at_y_min = 0;            // x of the upper endpoint
+  double dx_dy = 0;                 // the inverse slope: x moves by dx_dy per row
   i64 first_row = 0, last_row = 0;  // scanlines it is active on (first > last: none)
 };
 

@@ -7,7 +7,9 @@
 
 namespace scantrace::trace {
 
-JsonlWriter::JsonlWriter(std::ostream& out, const Header& header) : out_(&out) { write(header); }
+JsonlWriter::JsonlWriter(std::ostream& out, const Header& header) : out_(&out) {
+  write(header);
+}
 
 void JsonlWriter::write(const Event& e) {
   *out_ << event_to_json(e).dump() << '\n';

@@ -3,11 +3,11 @@
 // are flushed at the end of every triangle, so a trace cut short by a crash is readable up to the
 // last finished triangle, and its missing footer says that it is incomplete.
 #include <filesystem>
-#include <ostream>
 #include <memory>
+#include <ostream>
 
-#include "io/atomic_write.hpp"
 #include "events.hpp"
+#include "io/atomic_write.hpp"
 
 namespace scantrace::trace {
 

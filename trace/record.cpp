@@ -24,10 +24,18 @@ void fill_traced(Tracer& tracer, const Scene& scene, const FillOptions& options,
   if (image) *image = std::move(canvas);
 }
 
-int width_of(const TriangleInput& t) { return t.width; }
-int height_of(const TriangleInput& t) { return t.height; }
-int width_of(const Scene& s) { return s.width; }
-int height_of(const Scene& s) { return s.height; }
+int width_of(const TriangleInput& t) {
+  return t.width;
+}
+int height_of(const TriangleInput& t) {
+  return t.height;
+}
+int width_of(const Scene& s) {
+  return s.width;
+}
+int height_of(const Scene& s) {
+  return s.height;
+}
 
 template <class Input>
 Trace record(const Input& input, const FillOptions& options, const TraceFilter& filter,

@@ -79,16 +79,22 @@ Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
     }
     const int tri = std::visit(
         [](const auto& v) -> int {
-          if constexpr (requires { v.triangle; }) return v.triangle;
-          else return -1;
+          if constexpr (requires { v.triangle; })
+            return v.triangle;
+          else
+            return -1;
         },
         e);
     if (!t.index_.count(tri)) t.order_.push_back(tri);
     TriangleIndex& ix = t.index_[tri];
-    if (std::holds_alternative<TriangleBegin>(e)) ix.begin = i;
-    else if (std::holds_alternative<EdgeTableEvent>(e)) ix.edge_table = i;
-    else if (std::holds_alternative<TriangleEnd>(e)) ix.end = i;
-    else if (std::holds_alternative<TriangleSkipped>(e)) ix.skipped = i;
+    if (std::holds_alternative<TriangleBegin>(e))
+      ix.begin = i;
+    else if (std::holds_alternative<EdgeTableEvent>(e))
+      ix.edge_table = i;
+    else if (std::holds_alternative<TriangleEnd>(e))
+      ix.end = i;
+    else if (std::holds_alternative<TriangleSkipped>(e))
+      ix.skipped = i;
     else if (const Scanline* s = std::get_if<Scanline>(&e)) {
       ix.scanlines[s->y] = i;
       t.rows_[s->y].push_back(i);
@@ -101,9 +107,13 @@ Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
   return t;
 }
 
-const Header& Trace::header() const { return std::get<Header>(events_.front()); }
+const Header& Trace::header() const {
+  return std::get<Header>(events_.front());
+}
 
-std::vector<int> Trace::triangles() const { return order_; }
+std::vector<int> Trace::triangles() const {
+  return order_;
+}
 
 const Trace::TriangleIndex& Trace::at(int t) const {
   auto it = index_.find(t);

@@ -31,8 +31,8 @@ IndexSet IndexSet::parse(const std::string& text) {
     const std::int64_t hi =
         dash == std::string_view::npos ? lo : parse_integer(item.substr(dash + 1), context);
     if (lo < 0 || hi < lo || hi > INT32_MAX)
-      throw std::invalid_argument("\"" + std::string(item) + "\" is not a valid index or range in " +
-                                  context);
+      throw std::invalid_argument("\"" + std::string(item) +
+                                  "\" is not a valid index or range in " + context);
     set.ranges_.emplace_back(static_cast<int>(lo), static_cast<int>(hi));
   }
   if (set.ranges_.empty()) throw std::invalid_argument("empty " + context);
@@ -40,7 +40,8 @@ IndexSet IndexSet::parse(const std::string& text) {
   std::sort(set.ranges_.begin(), set.ranges_.end());
   std::vector<std::pair<int, int>> merged;
   for (const auto& r : set.ranges_)
-    if (!merged.empty() && static_cast<std::int64_t>(r.first) <= merged.back().second + std::int64_t{1})
+    if (!merged.empty() &&
+        static_cast<std::int64_t>(r.first) <= merged.back().second + std::int64_t{1})
       merged.back().second = std::max(merged.back().second, r.second);  // touching or overlapping
     else
       merged.push_back(r);
@@ -68,10 +69,14 @@ RowRange RowRange::parse(const std::string& text) {
 
 const char* to_string(TraceLevel level) {
   switch (level) {
-    case TraceLevel::none: return "none";
-    case TraceLevel::triangle: return "triangle";
-    case TraceLevel::scanline: return "scanline";
-    case TraceLevel::pixel: return "pixel";
+    case TraceLevel::none:
+      return "none";
+    case TraceLevel::triangle:
+      return "triangle";
+    case TraceLevel::scanline:
+      return "scanline";
+    case TraceLevel::pixel:
+      return "pixel";
   }
   return "none";
 }

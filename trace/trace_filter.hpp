@@ -32,8 +32,8 @@ struct RowRange {
 
 struct TraceFilter {
   TraceLevel level = TraceLevel::scanline;
-  std::optional<IndexSet> triangles{};  // none: every triangle
-  std::optional<RowRange> rows{};       // none: every row (scanline and pixel events only)
+  std::optional<IndexSet> triangles{};       // none: every triangle
+  std::optional<RowRange> rows{};            // none: every row (scanline and pixel events only)
   std::optional<std::int64_t> max_events{};  // cap on the events between header and footer
 };
 

@@ -46,11 +46,18 @@ struct RecordingTracer {
   void triangle_end(int t, i64, i64) { ended.push_back(t); }
   void triangle_skipped(int t, SkipReason r) { skipped[t] = r; }
   void scanline(const ScanlineStep& s) {
-    scanlines.push_back({s.triangle, s.y, {s.entered.begin(), s.entered.end()},
+    scanlines.push_back({s.triangle,
+                         s.y,
+                         {s.entered.begin(), s.entered.end()},
                          {s.retired.begin(), s.retired.end()},
                          {s.active_edges.begin(), s.active_edges.end()},
-                         {s.active_points.begin(), s.active_points.end()}, s.has_span, s.x_begin,
-                         s.x_end, s.has_span_colors, s.span_begin, s.span_end});
+                         {s.active_points.begin(), s.active_points.end()},
+                         s.has_span,
+                         s.x_begin,
+                         s.x_end,
+                         s.has_span_colors,
+                         s.span_begin,
+                         s.span_end});
   }
   void pixel(int t, i64 x, i64 y, Color c, double w) { pixels.push_back({t, x, y, c, w}); }
 };

@@ -29,7 +29,9 @@ RandomTriangle random_triangle(std::mt19937_64& rng) {
   return t;
 }
 
-bool written(const RgbImage& img, int x, int y) { return !(img(x, y) == kBackground); }
+bool written(const RgbImage& img, int x, int y) {
+  return !(img(x, y) == kBackground);
+}
 
 }  // namespace
 

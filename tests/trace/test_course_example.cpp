@@ -21,7 +21,9 @@ struct Line {  // the edge (x0,y0)→(x1,y1) and the colours at its ends
 };
 
 // ceil((a + b·k) / d) for integers, d > 0: the exact first pixel at or after an intersection.
-long long ceil_div(long long num, long long den) { return num >= 0 ? (num + den - 1) / den : -((-num) / den); }
+long long ceil_div(long long num, long long den) {
+  return num >= 0 ? (num + den - 1) / den : -((-num) / den);
+}
 
 const Color kRed{1, 0, 0}, kGreen{0, 1, 0}, kBlue{0, 0, 1};
 const Line kEdge0{20, 20, 250, 80, kRed, kGreen};     // v0 → v1
@@ -49,8 +51,9 @@ void check_color(Color got, Color want) {
 }  // namespace
 
 TEST_CASE("course example: scanline records equal the geometry", "[trace][course]") {
-  const Trace trace = record_triangle({{Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}}, {kRed, kGreen, kBlue}},
-                                      FillOptions{.shading = Shading::gouraud});
+  const Trace trace =
+      record_triangle({{Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}}, {kRed, kGreen, kBlue}},
+                      FillOptions{.shading = Shading::gouraud});
   REQUIRE(trace.triangles() == std::vector<int>{0});
 
   for (long long y : {20LL, 21LL, 50LL, 79LL, 80LL, 81LL, 200LL, 333LL, 399LL}) {
@@ -71,8 +74,8 @@ TEST_CASE("course example: scanline records equal the geometry", "[trace][course
 
     // Exact span ends from integer arithmetic: x = (x0·Δy + Δx·(y − y0)) / Δy.
     const long long begin = ceil_div(20 * 380 + 280 * (y - 20), 380);
-    const long long end = y < 80 ? ceil_div(20 * 60 + 230 * (y - 20), 60)
-                                 : ceil_div(250 * 320 + 50 * (y - 80), 320);
+    const long long end =
+        y < 80 ? ceil_div(20 * 60 + 230 * (y - 20), 60) : ceil_div(250 * 320 + 50 * (y - 80), 320);
     if (begin < end) {
       REQUIRE(row.span.has_value());
       CHECK(row.span->x_begin == begin);
@@ -95,8 +98,8 @@ TEST_CASE("course example: scanline records equal the geometry", "[trace][course
 }
 
 TEST_CASE("course example: the edge table", "[trace][course]") {
-  const Trace trace = record_triangle({{Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}}, {kRed, kGreen, kBlue}},
-                                      FillOptions{});
+  const Trace trace = record_triangle(
+      {{Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}}, {kRed, kGreen, kBlue}}, FillOptions{});
   const EdgeTableEvent& table = trace.edge_table(0);
   REQUIRE(table.edges.size() == 3);
   CHECK(table.horizontal.empty());

@@ -31,7 +31,8 @@ Scene grid_scene() {
 }
 
 fs::path temp_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("scantrace-trace-test-" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("scantrace-trace-test-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir;
 }

@@ -33,7 +33,8 @@ TEST_CASE("a well-formed trace parses; without its footer it is incomplete", "[t
 TEST_CASE("malformed traces name the file, the line and the problem", "[trace][reader]") {
   CHECK_THROWS_WITH(parse(kHeader + "\n" + kSkipped + "\n{not json\n"),
                     Catch::StartsWith("t.jsonl:3: not valid JSON"));
-  CHECK_THROWS_WITH(parse(kSkipped + "\n"), Catch::Contains("t.jsonl:1:") && Catch::Contains("header"));
+  CHECK_THROWS_WITH(parse(kSkipped + "\n"),
+                    Catch::Contains("t.jsonl:1:") && Catch::Contains("header"));
   std::string v2 = kHeader;
   v2.replace(v2.find("\"version\":1"), 11, "\"version\":2");
   CHECK_THROWS_WITH(parse(v2 + "\n"), Catch::Contains("version 2 is not supported"));

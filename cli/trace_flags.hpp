@@ -1,0 +1,46 @@
+#pragma once
+// What to trace and how much, shared by `trace` and (with the replay issue) `explain`:
+//   (SCENE | --triangle "x0,y0 x1,y1 x2,y2" [--colors "r,g,b r,g,b r,g,b"] [--size WxH])
+//   [--level triangle|scanline|pixel] [--triangles 3,17,40-45] [--rows A:B] [--max-events N]
+#include <array>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "src/scene.hpp"
+#include "trace/record.hpp"
+#include "trace/trace_filter.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace scantrace::cli {
+
+struct TraceFlags {
+  std::string scene;
+  std::string triangle;
+  std::string colors = "1,0,0 0,1,0 0,0,1";
+  std::string size = "512x512";
+  std::string level = "scanline";
+  std::string triangles;
+  std::string rows;
+  std::optional<long long> max_events;
+
+  // Throws InputError when the scene file is bad.
+  std::variant<Scene, trace::TriangleInput> input() const;
+  trace::TraceFilter filter() const;
+  // "SCENE" or "the triangle (x0,y0) (x1,y1) (x2,y2)", for messages.
+  std::string input_name() const;
+};
+
+// Adds the options above to `command`. Malformed values (a triangle that is not three points, a
+// bad range) are usage errors, reported before anything runs.
+void add_trace_flags(CLI::App& command, TraceFlags& flags);
+
+// Parsers for the text forms (throw std::invalid_argument naming the problem).
+std::array<Vec2, 3> parse_triangle(const std::string& text);
+std::array<Color, 3> parse_colors(const std::string& text);
+std::pair<int, int> parse_size(const std::string& text);
+
+}  // namespace scantrace::cli

@@ -11,6 +11,7 @@
 #include "scene_compare.hpp"
 #include "src/demo_scene.hpp"
 #include "src/painter.hpp"
+#include "trace/trace.hpp"
 #include "viz/opencv_image.hpp"
 
 using namespace scantrace;
@@ -191,7 +192,7 @@ TEST_CASE("demo writes the demo renders, the example triangle and the scene", "[
   INFO("stderr: " << r.err);
   REQUIRE(r.exit_code == 0);
   const std::vector<std::string> expected{"demo_flat.png", "demo_gouraud.png", "demo_scene.json",
-                                          "triangle_gouraud.png"};
+                                          "triangle.jsonl", "triangle_gouraud.png"};
   CHECK(test::file_names(dir / "out") == expected);
   for (const auto& name : expected) CHECK_THAT(r.err, Catch::Contains("out/" + name));
 
@@ -214,6 +215,17 @@ TEST_CASE("demo writes the demo renders, the example triangle and the scene", "[
   for (int k = 0; k < 3; ++k) CHECK(std::abs(centre[k] - 85) <= 2);
 
   test::require_equal_scenes(load_scene(dir / "out" / "demo_scene.json"), demo_scene());
+
+  // The trace narrates that triangle: its spans cover exactly the non-white pixels of the PNG.
+  const trace::Trace tr = trace::Trace::load(dir / "out" / "triangle.jsonl");
+  CHECK(tr.triangles() == std::vector<int>{0});
+  const cv::Mat triangle_png = read_bgr(dir / "out" / "triangle_gouraud.png");
+  for (const trace::Scanline* s : tr.scanlines(0))
+    for (int x = 0; x < 512; ++x) {
+      const bool in_span = s->span && s->span->contains(x);
+      CHECK(in_span ==
+            (triangle_png.at<cv::Vec3b>(static_cast<int>(s->y), x) != cv::Vec3b(255, 255, 255)));
+    }
 
   // The default directory.
   const auto default_run = run_scantrace(dir.path(), {"demo"});

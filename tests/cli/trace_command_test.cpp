@@ -1,0 +1,80 @@
+// `scantrace trace`: what it writes is the recorded narration of the same fill; filters and caps
+// are honoured and reported; bad arguments are usage errors, bad input files input errors.
+#include <catch2/catch.hpp>
+
+#include "cli_test_support.hpp"
+#include "io/scene_json.hpp"
+#include "src/demo_scene.hpp"
+#include "trace/event_json.hpp"
+#include "trace/record.hpp"
+
+using namespace scantrace;
+using scantrace::test::run_scantrace;
+using scantrace::test::TempDir;
+
+TEST_CASE("trace --triangle writes the recorded narration of that triangle", "[command][trace]") {
+  TempDir dir;
+  const auto r = run_scantrace(
+      dir.path(), {"trace", "--triangle", "20,20 250,80 300,400", "--colors", "1,0,0 0,1,0 0,0,1",
+                   "--shading", "flat", "--level", "pixel", "-o", "t.jsonl"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const trace::Trace written = trace::Trace::load(dir / "t.jsonl");
+  trace::TriangleInput in;
+  in.vertices = {Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}};
+  in.colors = {Color{1, 0, 0}, Color{0, 1, 0}, Color{0, 0, 1}};
+  const trace::Trace recorded = trace::record_triangle(
+      in, FillOptions{.shading = Shading::flat}, trace::TraceFilter{.level = TraceLevel::pixel});
+  REQUIRE(written.events().size() == recorded.events().size());
+  for (std::size_t i = 0; i < written.events().size(); ++i)
+    CHECK(trace::event_to_json(written.events()[i]).dump() ==
+          trace::event_to_json(recorded.events()[i]).dump());
+  CHECK(written.header().shading == "flat");
+  CHECK(written.header().level == "pixel");
+}
+
+TEST_CASE("trace of a scene file honours the filters and reports a cap", "[command][trace]") {
+  TempDir dir;
+  save_scene(demo_scene(), dir / "scene.json");
+  const auto r = run_scantrace(dir.path(), {"trace", "scene.json", "--triangles", "5,7-9", "--rows",
+                                            "120:160", "-o", "part.jsonl"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const trace::Trace part = trace::Trace::load(dir / "part.jsonl");
+  for (int t : part.triangles()) CHECK((t == 5 || (t >= 7 && t <= 9)));
+  for (int t : part.triangles())
+    for (const trace::Scanline* s : part.scanlines(t)) CHECK((s->y >= 120 && s->y <= 160));
+
+  const auto capped =
+      run_scantrace(dir.path(), {"trace", "scene.json", "--max-events", "40", "-o", "cap.jsonl"});
+  REQUIRE(capped.exit_code == 0);
+  CHECK_THAT(capped.err, Catch::Contains("truncated after 40 events"));
+  const trace::Trace cap = trace::Trace::load(dir / "cap.jsonl");
+  CHECK(cap.truncated());
+  CHECK(cap.footer()->events == 40);
+}
+
+TEST_CASE("trace: usage errors exit 2, bad input exits 1 naming the file", "[command][trace]") {
+  TempDir dir;
+  CHECK(run_scantrace(dir.path(), {"trace", "-o", "x.jsonl"}).exit_code == 2);
+  CHECK(run_scantrace(dir.path(), {"trace", "--triangle", "1,2 3,4", "-o", "x.jsonl"}).exit_code ==
+        2);
+  CHECK(run_scantrace(dir.path(), {"trace", "--triangle", "0,0 9,0 0,9", "--colors",
+                                   "2,0,0 0,1,0 "
+                                   "0,0,1",
+                                   "-o", "x.jsonl"})
+            .exit_code == 2);
+  CHECK(run_scantrace(dir.path(),
+                      {"trace", "--triangle", "0,0 9,0 0,9", "--triangles", "3-1", "-o", "x.jsonl"})
+            .exit_code == 2);
+  CHECK(run_scantrace(dir.path(),
+                      {"trace", "--triangle", "0,0 9,0 0,9", "--level", "every", "-o", "x.jsonl"})
+            .exit_code == 2);
+  test::write_text(
+      dir / "bad.json",
+      R"({"vertices": [[0,0]], "vcolors": [[0,0,0]], "faces": [[0,0,3]], "depth": [1]})");
+  const auto bad = run_scantrace(dir.path(), {"trace", "bad.json", "-o", "x.jsonl"});
+  CHECK(bad.exit_code == 1);
+  CHECK_THAT(bad.err, Catch::StartsWith("scantrace: error: bad.json: faces[0]"));
+  CHECK_FALSE(std::filesystem::exists(dir / "x.jsonl"));
+}

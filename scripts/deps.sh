@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 libcli11-dev
-          libbenchmark-dev)
+          libbenchmark-dev python3-jsonschema)
 
 if ! command -v dpkg >/dev/null 2>&1; then
   echo "deps.sh: dpkg not found (not Debian/Ubuntu?); install these yourself: ${packages[*]}" >&2

@@ -30,6 +30,15 @@
 
 namespace scantrace {
 
+// Built with SCANTRACE_NO_TRACE_HOOKS, the fill contains no hook call at all, whatever the tracer.
+// Only the tracer-overhead benchmark uses it, to show side by side that the default no-op tracer
+// costs exactly nothing (bench/tracer_overhead.cpp).
+#ifdef SCANTRACE_NO_TRACE_HOOKS
+inline constexpr bool kTraceHooks = false;
+#else
+inline constexpr bool kTraceHooks = true;
+#endif
+
 // One polygon to fill: its vertices (pixels) and one colour per vertex. `triangle` is the index
 // the trace reports (the face index in a scene); `depth` is reported when known.
 struct PolygonInput {
@@ -102,9 +111,9 @@ inline Color edge_color(const Edge& e, i64 y, std::span<const Color> colors,
 template <Canvas C, FillTracer Tracer = NoTracer>
 FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& opt, FillScratch& s,
                         Tracer& tracer) {
-  constexpr bool kTriangleLevel = Tracer::max_level >= TraceLevel::triangle;
-  constexpr bool kScanlineLevel = Tracer::max_level >= TraceLevel::scanline;
-  constexpr bool kPixelLevel = Tracer::max_level >= TraceLevel::pixel;
+  constexpr bool kTriangleLevel = kTraceHooks && Tracer::max_level >= TraceLevel::triangle;
+  constexpr bool kScanlineLevel = kTraceHooks && Tracer::max_level >= TraceLevel::scanline;
+  constexpr bool kPixelLevel = kTraceHooks && Tracer::max_level >= TraceLevel::pixel;
   [[maybe_unused]] bool traced = false;
   if constexpr (kTriangleLevel) traced = tracer.wants_triangle(in.triangle);
 

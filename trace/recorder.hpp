@@ -1,6 +1,7 @@
 #pragma once
 // The in-memory sink: keeps every event, and on finish() gives them back as a Trace with the same
 // query API as a trace read from a file.
+#include <utility>
 #include <vector>
 
 #include "events.hpp"
@@ -10,10 +11,10 @@ namespace scantrace::trace {
 
 class Recorder {
  public:
-  explicit Recorder(const Header& header) { events_.push_back(header); }
+  explicit Recorder(const Header& header) { events_.emplace_back(std::in_place_type<Header>, header); }
   void write(const Event& e) { events_.push_back(e); }
   Trace finish(const Footer& footer) {
-    events_.push_back(footer);
+    events_.emplace_back(std::in_place_type<Footer>, footer);
     return Trace::from_events(std::move(events_), "(memory)");
   }
 

@@ -137,40 +137,39 @@ void check_translated(const RgbImage& base, const RgbImage& moved, int dx, int d
 
 }  // namespace
 
+namespace {
+
+// Fills t and t moved by (dx, dy) on size × size canvases in every mode and compares.
+void check_shift(const Triangle& t, const Colors& c, int dx, int dy, int size) {
+  const Triangle moved{Vec2{t[0].x + dx, t[0].y + dy}, Vec2{t[1].x + dx, t[1].y + dy},
+                       Vec2{t[2].x + dx, t[2].y + dy}};
+  for (const FillOptions& opt : kModes) {
+    INFO("triangle " << sttest::format_points(t) << "shift (" << dx << ", " << dy << "), "
+                     << scantrace::to_string(opt.shading) << ", "
+                     << scantrace::to_string(opt.fill_rule));
+    check_translated(render(t, c, opt, size, size), render(moved, c, opt, size, size), dx, dy,
+                     opt.shading == Shading::gouraud);
+  }
+}
+
+}  // namespace
+
 TEST_CASE("translation by whole pixels translates the image", "[invariance]") {
   Rng rng(0x4002);
   SECTION("small shifts on a small canvas") {
     for (int i = 0; i < 400; ++i) {
       const Triangle t = random_triangle(rng, 12, 28);
       const Colors c{rng.color(), rng.color(), rng.color()};
-      const int dx = static_cast<int>(rng.integer(-9, 9)),
-                dy = static_cast<int>(rng.integer(-9, 9));
-      const Triangle moved{Vec2{t[0].x + dx, t[0].y + dy}, Vec2{t[1].x + dx, t[1].y + dy},
-                           Vec2{t[2].x + dx, t[2].y + dy}};
-      for (const FillOptions& opt : kModes) {
-        INFO("triangle " << sttest::format_points(t) << "shift (" << dx << ", " << dy << "), "
-                         << scantrace::to_string(opt.shading) << ", "
-                         << scantrace::to_string(opt.fill_rule));
-        check_translated(render(t, c, opt, 40, 40), render(moved, c, opt, 40, 40), dx, dy,
-                         opt.shading == Shading::gouraud);
-      }
+      check_shift(t, c, static_cast<int>(rng.integer(-9, 9)), static_cast<int>(rng.integer(-9, 9)),
+                  40);
     }
   }
   SECTION("shifts of hundreds of pixels, in both directions") {
     for (int i = 0; i < 16; ++i) {
       const Triangle t = random_triangle(rng, 310, 390);
       const Colors c{rng.color(), rng.color(), rng.color()};
-      const int dx = std::array{-300, 300, -299, 301}[i % 4],
-                dy = std::array{300, -300, 0, -17}[i / 4];
-      const Triangle moved{Vec2{t[0].x + dx, t[0].y + dy}, Vec2{t[1].x + dx, t[1].y + dy},
-                           Vec2{t[2].x + dx, t[2].y + dy}};
-      for (const FillOptions& opt : kModes) {
-        INFO("triangle " << sttest::format_points(t) << "shift (" << dx << ", " << dy << "), "
-                         << scantrace::to_string(opt.shading) << ", "
-                         << scantrace::to_string(opt.fill_rule));
-        check_translated(render(t, c, opt, 704, 704), render(moved, c, opt, 704, 704), dx, dy,
-                         opt.shading == Shading::gouraud);
-      }
+      check_shift(t, c, std::array{-300, 300, -299, 301}[i % 4],
+                  std::array{300, -300, 0, -17}[i / 4], 704);
     }
   }
 }

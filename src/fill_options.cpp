@@ -1,5 +1,8 @@
 #include "fill_options.hpp"
 
+#include <cstring>
+#include <initializer_list>
+
 namespace scantrace {
 
 const char* to_string(Shading s) {
@@ -7,6 +10,29 @@ const char* to_string(Shading s) {
 }
 const char* to_string(FillRule r) {
   return r == FillRule::top_left ? "top-left" : "closed";
+}
+
+const char* to_string(Method m) {
+  switch (m) {
+    case Method::exact:
+      return "exact";
+    case Method::float32:
+      return "float";
+    case Method::double64:
+      return "double";
+    case Method::halfspace:
+      return "halfspace";
+  }
+  return "exact";
+}
+
+bool parse_method(const char* name, Method& out) {
+  for (Method m : {Method::exact, Method::float32, Method::double64, Method::halfspace})
+    if (std::strcmp(name, to_string(m)) == 0) {
+      out = m;
+      return true;
+    }
+  return false;
 }
 
 }  // namespace scantrace

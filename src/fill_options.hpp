@@ -13,13 +13,25 @@ enum class Shading { flat, gouraud };
 // course's and OpenCV's behaviour, kept to show why shared edges get painted twice.
 enum class FillRule { top_left, closed };
 
+// How coverage and colour are computed (docs/accuracy.md compares them):
+// exact: the edge table with exact fixed-point stepping (the default, design.md §3);
+// float: the same edge table stepped the textbook way, x += 1/m and colours += Δ in float32;
+// double: the same edge table, x recomputed from the edge equation in double on every row;
+// halfspace: no edge table — bounding box and exact edge functions per pixel (tinyrenderer's
+// barycentric approach), the other classic family.
+enum class Method { exact, float32, double64, halfspace };
+
 struct FillOptions {
   Shading shading = Shading::gouraud;
   FillRule fill_rule = FillRule::top_left;
   int subpixel_bits = kDefaultSubpixelBits;
+  Method method = Method::exact;
 };
 
 const char* to_string(Shading s);
 const char* to_string(FillRule r);
+const char* to_string(Method m);  // "exact", "float", "double", "halfspace"
+// The method named `name`, or false when there is none.
+bool parse_method(const char* name, Method& out);
 
 }  // namespace scantrace

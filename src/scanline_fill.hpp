@@ -23,8 +23,10 @@
 #include <vector>
 
 #include "canvas.hpp"
+#include "edge_stepper.hpp"
 #include "edge_table.hpp"
 #include "fill_options.hpp"
+#include "halfspace_fill.hpp"
 #include "tracer.hpp"
 #include "vector_interp.hpp"
 
@@ -48,23 +50,29 @@ struct PolygonInput {
   std::optional<double> depth;
 };
 
-struct FillResult {
-  SkipReason skipped = SkipReason::none;
-  i64 rows = 0;    // scanlines visited (on the canvas)
-  i64 pixels = 0;  // pixels written
-};
-
 // Working storage of the fill, reusable across polygons: a renderer keeps one and allocates
 // nothing per triangle once the vectors have grown to their working size.
 struct FillScratch {
   std::vector<FixedPoint> snapped;
   std::vector<int> order;
   EdgeTable table;
-  std::vector<Edge> active;
+  std::vector<ActiveEdge<ExactStepper>> active_exact;
+  std::vector<ActiveEdge<DoubleStepper>> active_double;
+  std::vector<ActiveEdge<FloatStepper>> active_float;
   // Only used when tracing.
   std::vector<int> entered, retired;
   std::vector<ActiveEdgeState> active_states;
   std::vector<ActivePointState> active_points;
+
+  template <class Stepper>
+  std::vector<ActiveEdge<Stepper>>& active() {
+    if constexpr (std::is_same_v<Stepper, ExactStepper>)
+      return active_exact;
+    else if constexpr (std::is_same_v<Stepper, DoubleStepper>)
+      return active_double;
+    else
+      return active_float;
+  }
 };
 
 namespace detail {
@@ -98,22 +106,201 @@ inline Color mean_color(std::span<const FixedPoint> p, std::span<const Color> co
   return sum * (1.0 / static_cast<double>(p.size()));
 }
 
-// The colour where `e` crosses row y: the course's vector_interp along y, from the upper endpoint
-// to the lower one (a fixed direction, so both triangles sharing the edge get the same value).
-inline Color edge_color(const Edge& e, i64 y, std::span<const Color> colors,
-                        const SubpixelGrid& grid) {
-  return vector_interp(grid.to_pixels(e.p_top), grid.to_pixels(e.p_bottom), colors[e.top],
-                       colors[e.bottom], static_cast<double>(y), Axis::y);
+// Colours along one span, the way each method computes them.
+template <class Stepper>
+struct SpanShader {
+  // exact: the first pixel by the course's vector_interp along x, then one increment per pixel
+  // in double (the colour is linear along the row; 16,384 increments drift by ~1e-12).
+  Color c, step;
+  SpanShader(Color left, Color right, double xl, double xr, i64 x_begin)
+      : c(vector_interp({xl, 0}, {xr, 0}, left, right, static_cast<double>(x_begin), Axis::x)),
+        step(xr > xl ? (right - left) * (1.0 / (xr - xl)) : Color{}) {}
+  Color color() const { return c; }
+  void next() { c += step; }
+};
+
+template <>
+struct SpanShader<DoubleStepper> {
+  // double: every pixel evaluated from the span's end colours, nothing accumulated.
+  Color left, slope;
+  double xl, x;
+  SpanShader(Color l, Color r, double x_left, double x_right, i64 x_begin)
+      : left(l),
+        slope(x_right > x_left ? (r - l) * (1.0 / (x_right - x_left)) : Color{}),
+        xl(x_left),
+        x(static_cast<double>(x_begin)) {}
+  Color color() const { return left + slope * (x - xl); }
+  void next() { x += 1.0; }
+};
+
+template <>
+struct SpanShader<FloatStepper> {
+  // float: the textbook's c += Δc per pixel in float32.
+  std::array<float, 3> c, dc;
+  SpanShader(Color l, Color r, double x_left, double x_right, i64 x_begin) {
+    const float w = static_cast<float>(x_right) - static_cast<float>(x_left);
+    const float off = static_cast<float>(x_begin) - static_cast<float>(x_left);
+    const std::array<double, 3> a{l.r, l.g, l.b}, b{r.r, r.g, r.b};
+    for (int k = 0; k < 3; ++k) {
+      dc[k] = w > 0 ? static_cast<float>(b[k] - a[k]) / w : 0.0f;
+      c[k] = static_cast<float>(a[k]) + off * dc[k];
+    }
+  }
+  Color color() const { return {c[0], c[1], c[2]}; }
+  void next() {
+    for (int k = 0; k < 3; ++k) c[k] += dc[k];
+  }
+};
+
+// What the set-up hands to the sweep.
+struct Setup {
+  SubpixelGrid grid;
+  Color flat;
+  bool traced = false;
+};
+
+// Step 3 of the fill for one stepper: the scanline sweep over the canvas rows.
+template <class Stepper, Canvas C, FillTracer Tracer>
+FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, FillScratch& s,
+                 Tracer& tracer, const Setup& setup) {
+  constexpr bool kScanlineLevel = kTraceHooks && Tracer::max_level >= TraceLevel::scanline;
+  constexpr bool kPixelLevel = kTraceHooks && Tracer::max_level >= TraceLevel::pixel;
+  const SubpixelGrid& grid = setup.grid;
+  const bool closed = opt.fill_rule == FillRule::closed;
+  const bool gouraud = opt.shading == Shading::gouraud;
+  const int width = canvas.width(), height = canvas.height();
+  const std::vector<Edge>& edges = s.table.edges();
+  const i64 y_first = std::max<i64>(s.table.first_row(), 0);
+  const i64 y_last = std::min<i64>(s.table.last_row(), height - 1);
+  std::vector<ActiveEdge<Stepper>>& active = s.active<Stepper>();
+  active.clear();
+  std::size_t next = 0;
+  FillResult result;
+
+  for (i64 y = y_first; y <= y_last; ++y) {
+    [[maybe_unused]] bool trace_row = false;
+    if constexpr (kScanlineLevel) {
+      trace_row = setup.traced && tracer.wants_scanline(in.triangle, y);
+      s.entered.clear();
+      s.retired.clear();
+    }
+
+    // Retire the edges whose last row is behind us.
+    std::erase_if(active, [&](const ActiveEdge<Stepper>& a) {
+      if (a.edge.last_row >= y) return false;
+      if constexpr (kScanlineLevel)
+        if (trace_row) s.retired.push_back(a.edge.id);
+      return true;
+    });
+    // Let the edges that start by this row enter, in x order. An edge whose rows all lie above
+    // the canvas (or that crosses no scanline) is passed over without being stepped.
+    for (; next < edges.size() && edges[next].first_row <= y; ++next) {
+      if (edges[next].last_row < y) continue;
+      ActiveEdge<Stepper> a{edges[next], {}};
+      a.at.start(a.edge, y, grid, in.colors);
+      auto at = std::find_if(active.begin(), active.end(),
+                             [&](const ActiveEdge<Stepper>& b) { return before_on_row(a, b); });
+      active.insert(at, a);
+      if constexpr (kScanlineLevel)
+        if (trace_row) s.entered.push_back(a.edge.id);
+    }
+    ++result.rows;
+
+    // A convex polygon meets a scanline in one interval: from the leftmost to the rightmost active
+    // point. (Under the top-left rule exactly two edges are active; the closed rule can add the
+    // two edges meeting at a vertex that lies exactly on the row.)
+    const ActiveEdge<Stepper>* left = active.size() >= 2 ? &active.front() : nullptr;
+    const ActiveEdge<Stepper>* right = active.size() >= 2 ? &active.back() : nullptr;
+    i64 x_begin = 0, x_end = 0;
+    if (left) {
+      x_begin = std::max<i64>(left->at.ceil_x(), 0);
+      // Half-open span [ceil(xl), ceil(xr)): a centre exactly on the right edge belongs to the
+      // neighbour on the right. The closed rule includes it: [ceil(xl), floor(xr)].
+      x_end = std::min<i64>(closed ? right->at.floor_x() + 1 : right->at.ceil_x(), width);
+    }
+    const bool has_span = x_begin < x_end;
+    Color c_left = setup.flat, c_right = setup.flat;
+    double x_left = 0, x_right = 0;
+    if (left && (gouraud || trace_row)) {
+      x_left = left->at.x();
+      x_right = right->at.x();
+      if (gouraud) {
+        c_left = left->at.color(left->edge, y, in.colors, grid);
+        c_right = right->at.color(right->edge, y, in.colors, grid);
+      }
+    }
+
+    [[maybe_unused]] Color span_first = setup.flat, span_last = setup.flat;
+    if (has_span) {
+      const int yi = static_cast<int>(y), xb = static_cast<int>(x_begin),
+                xe = static_cast<int>(x_end);
+      [[maybe_unused]] bool trace_pixels = false;
+      if constexpr (kPixelLevel) trace_pixels = trace_row && tracer.wants_pixels(in.triangle, y);
+      [[maybe_unused]] auto weight = [&](int x) {
+        return x_right > x_left ? (x - x_left) / (x_right - x_left) : 0.0;
+      };
+      if (!gouraud) {
+        canvas.fill_span(yi, xb, xe, setup.flat);
+        if constexpr (kPixelLevel)
+          if (trace_pixels)
+            for (int x = xb; x < xe; ++x) tracer.pixel(in.triangle, x, y, setup.flat, weight(x));
+      } else {
+        SpanShader<Stepper> shade(c_left, c_right, x_left, x_right, x_begin);
+        if constexpr (kScanlineLevel)
+          if (trace_row) span_first = shade.color();
+        for (int x = xb; x < xe; ++x) {
+          const Color c = shade.color();
+          canvas.set(x, yi, c);
+          if constexpr (kPixelLevel)
+            if (trace_pixels) tracer.pixel(in.triangle, x, y, c, weight(x));
+          if constexpr (kScanlineLevel)
+            if (trace_row) span_last = c;
+          shade.next();
+        }
+      }
+      result.pixels += x_end - x_begin;
+    }
+
+    if constexpr (kScanlineLevel) {
+      if (trace_row) {
+        s.active_states.clear();
+        s.active_points.clear();
+        for (const ActiveEdge<Stepper>& a : active) {
+          s.active_states.push_back({a.edge.id, a.at.x(), a.at.ceil_x()});
+          s.active_points.push_back(
+              {a.at.x(), a.edge.id, gouraud ? a.at.color(a.edge, y, in.colors, grid) : setup.flat});
+        }
+        ScanlineStep step;
+        step.triangle = in.triangle;
+        step.y = y;
+        step.entered = s.entered;
+        step.retired = s.retired;
+        step.active_edges = s.active_states;
+        step.active_points = s.active_points;
+        step.has_span = has_span;
+        step.x_begin = x_begin;
+        step.x_end = x_end;
+        if (has_span && gouraud) {
+          step.has_span_colors = true;
+          step.span_begin = span_first;
+          step.span_end = span_last;
+        }
+        tracer.scanline(step);
+      }
+    }
+
+    for (ActiveEdge<Stepper>& a : active) a.at.advance();
+  }
+  return result;
 }
 
 }  // namespace detail
 
+// Fills one convex polygon (a triangle being the common case) with the method of `opt`.
 template <Canvas C, FillTracer Tracer = NoTracer>
 FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& opt, FillScratch& s,
                         Tracer& tracer) {
   constexpr bool kTriangleLevel = kTraceHooks && Tracer::max_level >= TraceLevel::triangle;
-  constexpr bool kScanlineLevel = kTraceHooks && Tracer::max_level >= TraceLevel::scanline;
-  constexpr bool kPixelLevel = kTraceHooks && Tracer::max_level >= TraceLevel::pixel;
   [[maybe_unused]] bool traced = false;
   if constexpr (kTriangleLevel) traced = tracer.wants_triangle(in.triangle);
 
@@ -141,7 +328,6 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   if (detail::twice_area(pts) == 0) return skip(SkipReason::degenerate);
 
   const bool closed = opt.fill_rule == FillRule::closed;
-  const int width = canvas.width(), height = canvas.height();
   {
     i64 x_min = pts[0].x, x_max = pts[0].x, y_min = pts[0].y, y_max = pts[0].y;
     for (const FixedPoint& p : pts) {
@@ -153,144 +339,35 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
     const i64 col_last = closed ? grid.floor_to_pixel(x_max) : grid.ceil_to_pixel(x_max) - 1;
     const i64 row_last = closed ? grid.floor_to_pixel(y_max) : grid.ceil_to_pixel(y_max) - 1;
     if (col_first > col_last || row_first > row_last) return skip(SkipReason::no_pixel_centre);
-    if (col_last < 0 || col_first >= width || row_last < 0 || row_first >= height)
+    if (col_last < 0 || col_first >= canvas.width() || row_last < 0 || row_first >= canvas.height())
       return skip(SkipReason::offscreen);
   }
 
-  const bool gouraud = opt.shading == Shading::gouraud;
   const Color flat = detail::mean_color(pts, in.colors, s.order);
   if constexpr (kTriangleLevel)
     if (traced)
       tracer.triangle_begin(
           PolygonSetup{in.triangle, in.points, pts, in.colors, in.depth, flat, &opt, grid});
 
-  s.table.build(pts, grid, opt.fill_rule);
-  if constexpr (kTriangleLevel)
-    if (traced) tracer.edge_table(EdgeTableView{in.triangle, &s.table, pts, grid});
-
-  const std::vector<Edge>& edges = s.table.edges();
-  const i64 y_first = std::max<i64>(s.table.first_row(), 0);
-  const i64 y_last = std::min<i64>(s.table.last_row(), height - 1);
-  std::size_t next = 0;
-  s.active.clear();
   FillResult result;
-
-  for (i64 y = y_first; y <= y_last; ++y) {
-    [[maybe_unused]] bool trace_row = false;
-    if constexpr (kScanlineLevel) {
-      trace_row = traced && tracer.wants_scanline(in.triangle, y);
-      s.entered.clear();
-      s.retired.clear();
+  if (opt.method == Method::halfspace) {
+    result = fill_halfspace(canvas, pts, in.colors, opt, flat);
+  } else {
+    s.table.build(pts, grid, opt.fill_rule);
+    if constexpr (kTriangleLevel)
+      if (traced) tracer.edge_table(EdgeTableView{in.triangle, &s.table, pts, grid});
+    const detail::Setup setup{grid, flat, traced};
+    switch (opt.method) {
+      case Method::float32:
+        result = detail::sweep<FloatStepper>(canvas, in, opt, s, tracer, setup);
+        break;
+      case Method::double64:
+        result = detail::sweep<DoubleStepper>(canvas, in, opt, s, tracer, setup);
+        break;
+      default:
+        result = detail::sweep<ExactStepper>(canvas, in, opt, s, tracer, setup);
     }
-
-    // Retire the edges whose last row is behind us.
-    std::erase_if(s.active, [&](const Edge& e) {
-      if (e.last_row >= y) return false;
-      if constexpr (kScanlineLevel)
-        if (trace_row) s.retired.push_back(e.id);
-      return true;
-    });
-    // Let the edges that start by this row enter, in exact x order. An edge whose rows all lie
-    // above the canvas (or that crosses no scanline) is passed over without being stepped.
-    for (; next < edges.size() && edges[next].first_row <= y; ++next) {
-      if (edges[next].last_row < y) continue;
-      Edge e = edges[next];
-      e.start_at(y, grid.scale());
-      auto at = std::find_if(s.active.begin(), s.active.end(),
-                             [&](const Edge& a) { return compare_on_row(e, a) < 0; });
-      s.active.insert(at, e);
-      if constexpr (kScanlineLevel)
-        if (trace_row) s.entered.push_back(e.id);
-    }
-    ++result.rows;
-
-    // A convex polygon meets a scanline in one interval: from the leftmost to the rightmost active
-    // point. (Under the top-left rule exactly two edges are active; the closed rule can add the
-    // two edges meeting at a vertex that lies exactly on the row.)
-    const Edge* left = s.active.size() >= 2 ? &s.active.front() : nullptr;
-    const Edge* right = s.active.size() >= 2 ? &s.active.back() : nullptr;
-    i64 x_begin = 0, x_end = 0;
-    if (left) {
-      x_begin = std::max<i64>(left->ceil_x(), 0);
-      // Half-open span [ceil(xl), ceil(xr)): a centre exactly on the right edge belongs to the
-      // neighbour on the right. The closed rule includes it: [ceil(xl), floor(xr)].
-      x_end = std::min<i64>(closed ? right->floor_x() + 1 : right->ceil_x(), width);
-    }
-    const bool has_span = x_begin < x_end;
-
-    Color c_left = flat, c_right = flat, c_begin = flat, c_step{};
-    double x_left = 0, x_right = 0;
-    if (left && (gouraud || trace_row)) {
-      x_left = left->x();
-      x_right = right->x();
-      if (gouraud) {
-        c_left = detail::edge_color(*left, y, in.colors, grid);
-        c_right = detail::edge_color(*right, y, in.colors, grid);
-        // Along the span: the course's vector_interp along x for the first pixel, then a constant
-        // increment per pixel (the colour is linear along the row).
-        const Vec2 pl{x_left, static_cast<double>(y)}, pr{x_right, static_cast<double>(y)};
-        c_begin = vector_interp(pl, pr, c_left, c_right, static_cast<double>(x_begin), Axis::x);
-        if (x_right > x_left) c_step = (c_right - c_left) * (1.0 / (x_right - x_left));
-      }
-    }
-
-    if (has_span) {
-      const int yi = static_cast<int>(y), xb = static_cast<int>(x_begin),
-                xe = static_cast<int>(x_end);
-      [[maybe_unused]] bool trace_pixels = false;
-      if constexpr (kPixelLevel) trace_pixels = trace_row && tracer.wants_pixels(in.triangle, y);
-      if (!gouraud) {
-        canvas.fill_span(yi, xb, xe, flat);
-        if constexpr (kPixelLevel)
-          if (trace_pixels)
-            for (int x = xb; x < xe; ++x)
-              tracer.pixel(in.triangle, x, y, flat,
-                           x_right > x_left ? (x - x_left) / (x_right - x_left) : 0.0);
-      } else {
-        Color c = c_begin;
-        for (int x = xb; x < xe; ++x) {
-          canvas.set(x, yi, c);
-          if constexpr (kPixelLevel)
-            if (trace_pixels)
-              tracer.pixel(in.triangle, x, y, c,
-                           x_right > x_left ? (x - x_left) / (x_right - x_left) : 0.0);
-          c += c_step;
-        }
-      }
-      result.pixels += x_end - x_begin;
-    }
-
-    if constexpr (kScanlineLevel) {
-      if (trace_row) {
-        s.active_states.clear();
-        s.active_points.clear();
-        for (const Edge& e : s.active) {
-          s.active_states.push_back({e.id, e.x(), e.ceil_x()});
-          s.active_points.push_back(
-              {e.x(), e.id, gouraud ? detail::edge_color(e, y, in.colors, grid) : flat});
-        }
-        ScanlineStep step;
-        step.triangle = in.triangle;
-        step.y = y;
-        step.entered = s.entered;
-        step.retired = s.retired;
-        step.active_edges = s.active_states;
-        step.active_points = s.active_points;
-        step.has_span = has_span;
-        step.x_begin = x_begin;
-        step.x_end = x_end;
-        if (has_span && gouraud) {
-          step.has_span_colors = true;
-          step.span_begin = c_begin;
-          step.span_end = c_begin + c_step * static_cast<double>(x_end - 1 - x_begin);
-        }
-        tracer.scanline(step);
-      }
-    }
-
-    for (Edge& e : s.active) e.advance();
   }
-
   if constexpr (kTriangleLevel)
     if (traced) tracer.triangle_end(in.triangle, result.rows, result.pixels);
   return result;

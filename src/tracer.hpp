@@ -23,21 +23,12 @@
 #include "color.hpp"
 #include "edge_table.hpp"
 #include "fill_options.hpp"
+#include "fill_result.hpp"
 #include "vec2.hpp"
 
 namespace scantrace {
 
 enum class TraceLevel { none = 0, triangle = 1, scanline = 2, pixel = 3 };
-
-enum class SkipReason {
-  none,
-  too_few_vertices,  // fewer than three vertices
-  out_of_range,      // a coordinate is NaN, infinite or beyond kMaxCoordinate
-  degenerate,        // zero area after snapping: fills nothing under either rule
-  no_pixel_centre,   // its bounding box holds no pixel centre: too small to own a pixel
-  offscreen,         // no row or no column of its bounding box is on the canvas
-};
-const char* to_string(SkipReason r);
 
 struct PolygonSetup {
   int triangle = 0;                // face index (position in the scene)

@@ -1,20 +1,20 @@
-#include "reference_raster.hpp"
+#include "exact_reference.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace sttest {
+namespace scantrace::reference {
 
-i64 ref_snap(double v, int bits) {
+i64 snap(double v, int bits) {
   const double scaled = std::ldexp(v, bits);  // exact: a power-of-two scaling
   const double f = std::floor(scaled);
   // f + 0.5 is exact for |f| < 2^52, so this comparison decides floor(scaled + 1/2) exactly.
   return static_cast<i64>(f) + (scaled >= f + 0.5 ? 1 : 0);
 }
 
-GridPt ref_snap(scantrace::Vec2 p, int bits) {
-  return {ref_snap(p.x, bits), ref_snap(p.y, bits)};
+GridPt snap(scantrace::Vec2 p, int bits) {
+  return {snap(p.x, bits), snap(p.y, bits)};
 }
 
 i64 floor_div(i64 a, i64 b) {
@@ -26,8 +26,8 @@ i64 ceil_div(i64 a, i64 b) {
   return -floor_div(-a, b);
 }
 
-RefPolygon::RefPolygon(std::span<const scantrace::Vec2> points, int bits) : scale_(i64{1} << bits) {
-  for (const scantrace::Vec2& p : points) v_.push_back(ref_snap(p, bits));
+Polygon::Polygon(std::span<const scantrace::Vec2> points, int bits) : scale_(i64{1} << bits) {
+  for (const scantrace::Vec2& p : points) v_.push_back(snap(p, bits));
   const std::size_t n = v_.size();
   for (std::size_t i = 0; i < n; ++i) {
     const GridPt a = v_[i], b = v_[(i + 1) % n];
@@ -51,27 +51,27 @@ RefPolygon::RefPolygon(std::span<const scantrace::Vec2> points, int bits) : scal
   }
 }
 
-i128 RefPolygon::raw_edge(std::size_t i, i64 gx, i64 gy) const {
+i128 Polygon::raw_edge(std::size_t i, i64 gx, i64 gy) const {
   const GridPt a = v_[i], b = v_[(i + 1) % v_.size()];
   return static_cast<i128>(b.x - a.x) * (gy - a.y) - static_cast<i128>(b.y - a.y) * (gx - a.x);
 }
 
-i128 RefPolygon::inside(std::size_t i, i64 gx, i64 gy) const {
+i128 Polygon::inside(std::size_t i, i64 gx, i64 gy) const {
   return orientation_ * raw_edge(i, gx, gy);
 }
 
-bool RefPolygon::covers(i64 px, i64 py, RefRule rule) const {
+bool Polygon::covers(i64 px, i64 py, FillRule rule) const {
   if (degenerate()) return false;
   const i64 gx = px * scale_, gy = py * scale_;
   for (std::size_t i = 0; i < v_.size(); ++i) {
     const i128 e = inside(i, gx, gy);
     if (e < 0) return false;
-    if (e == 0 && rule == RefRule::top_left && !owns_ties_[i]) return false;
+    if (e == 0 && rule == FillRule::top_left && !owns_ties_[i]) return false;
   }
   return true;
 }
 
-std::array<double, 3> RefPolygon::barycentric(i64 px, i64 py) const {
+std::array<double, 3> Polygon::barycentric(i64 px, i64 py) const {
   if (v_.size() != 3) throw std::logic_error("barycentric weights are defined for triangles");
   const i64 gx = px * scale_, gy = py * scale_;
   // The weight of vertex k is the sub-area opposite to it over the whole area; all exact until
@@ -82,14 +82,14 @@ std::array<double, 3> RefPolygon::barycentric(i64 px, i64 py) const {
           static_cast<double>(raw_edge(0, gx, gy)) / area};
 }
 
-RefRaster ref_rasterize(int width, int height, std::span<const scantrace::Vec2> points,
-                        std::span<const scantrace::Color> colors, RefRule rule, int bits) {
-  RefRaster out;
+Raster rasterize(int width, int height, std::span<const scantrace::Vec2> points,
+                 std::span<const scantrace::Color> colors, FillRule rule, int bits) {
+  Raster out;
   out.width = width;
   out.height = height;
   out.covered.assign(static_cast<std::size_t>(width) * height, 0);
   out.color.assign(out.covered.size(), scantrace::Color{});
-  const RefPolygon poly(points, bits);
+  const Polygon poly(points, bits);
   const bool interpolate = points.size() == 3 && colors.size() == 3;
   // The bounding box only saves time: every centre outside it fails some half-plane test anyway.
   const i64 x0 = std::max<i64>(poly.min_px(), 0), x1 = std::min<i64>(poly.max_px(), width - 1);
@@ -115,4 +115,4 @@ scantrace::Color mean_color(std::span<const scantrace::Color> colors) {
   return sum * (1.0 / static_cast<double>(colors.size()));
 }
 
-}  // namespace sttest
+}  // namespace scantrace::reference

@@ -1,0 +1,106 @@
+#pragma once
+// The other classic family, for comparison with the edge table: visit every pixel of the
+// bounding box (clipped to the canvas) and test its centre against the three edge functions, as
+// tinyrenderer does with barycentric coordinates. The edge functions are exact integers on the
+// snapped vertices, stepped by one constant per pixel, and ties follow the same top-left (or
+// closed) rule, so coverage equals the exact edge-table fill's; the cost is the whole bounding box
+// rather than the triangle. Gouraud colours are the barycentric weights at the pixel centre.
+#include <algorithm>
+#include <array>
+#include <span>
+
+#include "canvas.hpp"
+#include "fill_options.hpp"
+#include "fill_result.hpp"
+
+namespace scantrace {
+
+namespace detail {
+
+template <Canvas C>
+FillResult fill_halfspace_triangle(C& canvas, const std::array<FixedPoint, 3>& v,
+                                   const std::array<Color, 3>& colors, const FillOptions& opt,
+                                   Color flat) {
+  const SubpixelGrid grid(opt.subpixel_bits);
+  const i64 s = grid.scale();
+  const i128 area2 = static_cast<i128>(v[1].x - v[0].x) * (v[2].y - v[0].y) -
+                     static_cast<i128>(v[1].y - v[0].y) * (v[2].x - v[0].x);
+  FillResult result;
+  if (area2 == 0) return result;
+  const int sign = area2 > 0 ? 1 : -1;
+  const bool closed = opt.fill_rule == FillRule::closed;
+
+  // Edge i runs from v[i] to v[i+1]; E_i(p) = sign·((b−a) × (p−a)) is positive inside. A centre
+  // on the edge (E_i = 0) belongs to the triangle under the top-left rule when the edge is a left
+  // edge (the interior lies to its right, ∂E/∂x > 0) or a top edge (horizontal, interior below).
+  std::array<i64, 3> ex{}, ey{};  // ∂E_i/∂x and ∂E_i/∂y per grid unit
+  std::array<bool, 3> owns_ties{};
+  for (int i = 0; i < 3; ++i) {
+    const FixedPoint a = v[i], b = v[(i + 1) % 3];
+    ex[i] = -sign * (b.y - a.y);
+    ey[i] = sign * (b.x - a.x);
+    owns_ties[i] = closed || ex[i] > 0 || (ex[i] == 0 && ey[i] > 0);
+  }
+  const i64 x_min = std::min({v[0].x, v[1].x, v[2].x}), x_max = std::max({v[0].x, v[1].x, v[2].x});
+  const i64 y_min = std::min({v[0].y, v[1].y, v[2].y}), y_max = std::max({v[0].y, v[1].y, v[2].y});
+  const i64 col0 = std::max<i64>(grid.ceil_to_pixel(x_min), 0);
+  const i64 col1 = std::min<i64>(grid.floor_to_pixel(x_max), canvas.width() - 1);
+  const i64 row0 = std::max<i64>(grid.ceil_to_pixel(y_min), 0);
+  const i64 row1 = std::min<i64>(grid.floor_to_pixel(y_max), canvas.height() - 1);
+  const bool gouraud = opt.shading == Shading::gouraud;
+  const double inv_area = 1.0 / static_cast<double>(area2 * sign);
+
+  for (i64 y = row0; y <= row1; ++y) {
+    ++result.rows;
+    std::array<i128, 3> e;  // at the centre of pixel (col0, y)
+    for (int i = 0; i < 3; ++i)
+      e[i] = static_cast<i128>(ex[i]) * (col0 * s - v[i].x) +
+             static_cast<i128>(ey[i]) * (y * s - v[i].y);
+    i64 run_begin = -1, run_end = -1;  // a convex shape meets a row in one run
+    for (i64 x = col0; x <= col1; ++x) {
+      bool inside = true;
+      for (int i = 0; i < 3; ++i) inside &= e[i] > 0 || (e[i] == 0 && owns_ties[i]);
+      if (inside) {
+        if (run_begin < 0) run_begin = x;
+        run_end = x + 1;
+        if (gouraud) {
+          // The weight of vertex k is the edge function of the edge opposite it.
+          const double w0 = static_cast<double>(e[1]) * inv_area;
+          const double w1 = static_cast<double>(e[2]) * inv_area;
+          const double w2 = static_cast<double>(e[0]) * inv_area;
+          canvas.set(static_cast<int>(x), static_cast<int>(y),
+                     colors[0] * w0 + colors[1] * w1 + colors[2] * w2);
+        }
+      } else if (run_begin >= 0) {
+        break;
+      }
+      for (int i = 0; i < 3; ++i) e[i] += static_cast<i128>(ex[i]) * s;
+    }
+    if (run_begin >= 0) {
+      if (!gouraud)
+        canvas.fill_span(static_cast<int>(y), static_cast<int>(run_begin),
+                         static_cast<int>(run_end), flat);
+      result.pixels += run_end - run_begin;
+    }
+  }
+  return result;
+}
+
+}  // namespace detail
+
+// A convex polygon by half-space tests: a triangle directly, a larger polygon as the fan of
+// triangles (v0, vi, vi+1), which the tie rule makes tile the polygon exactly — each pixel once.
+template <Canvas C>
+FillResult fill_halfspace(C& canvas, std::span<const FixedPoint> pts, std::span<const Color> colors,
+                          const FillOptions& opt, Color flat) {
+  FillResult total;
+  for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
+    const FillResult r = detail::fill_halfspace_triangle(
+        canvas, {pts[0], pts[i], pts[i + 1]}, {colors[0], colors[i], colors[i + 1]}, opt, flat);
+    total.rows += r.rows;
+    total.pixels += r.pixels;
+  }
+  return total;
+}
+
+}  // namespace scantrace

@@ -19,5 +19,8 @@ struct Command {
 Command add_render_command(CLI::App& app);
 Command add_demo_command(CLI::App& app);
 Command add_trace_command(CLI::App& app);
+Command add_replay_command(CLI::App& app);
+Command add_explain_command(CLI::App& app);
+Command add_stress_command(CLI::App& app);
 
 }  // namespace scantrace::cli

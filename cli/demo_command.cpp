@@ -1,6 +1,7 @@
 // scantrace demo [-o DIR]: the embedded default, no input needed. Renders the built-in demo scene
-// both ways, fills the course's example triangle, and saves the scene so that `scantrace render`
-// can reproduce the renders from a file.
+// both ways, fills the course's example triangle, traces it and replays the trace into the
+// explanatory video, and saves the scene so that `scantrace render` can reproduce the renders
+// from a file.
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -17,6 +18,8 @@
 #include "src/painter.hpp"
 #include "trace/record.hpp"
 #include "viz/image_file.hpp"
+#include "viz/progress.hpp"
+#include "viz/replay.hpp"
 
 namespace scantrace::cli {
 namespace {
@@ -66,6 +69,24 @@ void trace_demo_triangle(const std::filesystem::path& image_file,
                trace_file.string(), footer.events);
 }
 
+// The video is made from the trace file just written, so it explains exactly what the file holds.
+void explain_demo_triangle(const std::filesystem::path& trace_file,
+                           const std::filesystem::path& video) {
+  const trace::Trace t = trace::Trace::load(trace_file);
+  viz::ReplayOptions options;
+  options.source = trace_file.string();
+  std::unique_ptr<viz::Progress> progress;
+  if (spdlog::should_log(spdlog::level::info))
+    progress = std::make_unique<viz::StderrProgress>(video.string(), "frames");
+  const Stopwatch clock;
+  const viz::ReplayResult r = viz::replay(t, video, options, progress.get());
+  spdlog::info(
+      "wrote {}: the explanatory video of that trace, {} steps, {:.0f} s ({} {}x{}, {} "
+      "frames, made in {:.1f} s)",
+      video.string(), r.steps, r.seconds, r.format == "h264" ? "H.264" : "MPEG-4",
+      options.size.width, options.size.height, r.frames, clock.ms() / 1000);
+}
+
 void run_demo(const DemoArgs& args) {
   const std::filesystem::path dir = args.dir;
   make_output_directory(dir);
@@ -73,6 +94,7 @@ void run_demo(const DemoArgs& args) {
   render_scene(scene, Shading::flat, dir / "demo_flat.png");
   render_scene(scene, Shading::gouraud, dir / "demo_gouraud.png");
   trace_demo_triangle(dir / "triangle_gouraud.png", dir / "triangle.jsonl");
+  explain_demo_triangle(dir / "triangle.jsonl", dir / "triangle.mp4");
   const std::filesystem::path scene_file = dir / "demo_scene.json";
   save_scene(scene, scene_file);
   spdlog::info(
@@ -90,12 +112,14 @@ Command add_demo_command(CLI::App& app) {
                                      "built-in demo scene (a mesh of triangles sharing edges,\n"
                                      "a sun of thin triangles, three overlapping triangles at\n"
                                      "different depths) flat and Gouraud, fills the course's\n"
-                                     "example triangle, and saves the scene as a scene file.");
+                                     "example triangle, traces it and turns the trace into an\n"
+                                     "explanatory video, and saves the scene as a scene file.");
   cmd->add_option("-o,--output", args->dir, "directory to write into (created if missing)")
       ->capture_default_str();
   cmd->footer(
       "Writes DIR/demo_flat.png, DIR/demo_gouraud.png, DIR/triangle_gouraud.png\n"
-      "(512x512 each) and DIR/demo_scene.json.");
+      "(512x512 each), DIR/triangle.jsonl (its trace), DIR/triangle.mp4 (the video\n"
+      "of that trace, 1280x720, under a minute) and DIR/demo_scene.json.");
   return {cmd, [args] { run_demo(*args); }};
 }
 

@@ -9,6 +9,8 @@ FillOptions FillFlags::options() const {
   o.shading = shading == "flat" ? Shading::flat : Shading::gouraud;
   o.fill_rule = fill_rule == "closed" ? FillRule::closed : FillRule::top_left;
   o.subpixel_bits = subpixel_bits;
+  // Validated by the option's check, so parsing cannot fail here.
+  parse_method(method.c_str(), o.method);
   return o;
 }
 
@@ -35,6 +37,15 @@ void add_fill_flags(CLI::App& command, FillFlags& flags) {
                   "coverage decision is exact integer arithmetic\n"
                   "(0 = whole pixels)")
       ->check(CLI::Range(0, kMaxSubpixelBits))
+      ->capture_default_str();
+  command
+      .add_option("--method", flags.method,
+                  "exact: fixed-point edge table, exact decisions\n"
+                  "float: the textbook loop, x += 1/m in float32\n"
+                  "double: x recomputed per row in double\n"
+                  "halfspace: bounding box + exact edge functions\n"
+                  "(docs/accuracy.md: what each gets wrong)")
+      ->check(CLI::IsMember({"exact", "float", "double", "halfspace"}))
       ->capture_default_str();
 }
 

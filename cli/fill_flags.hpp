@@ -15,12 +15,13 @@ struct FillFlags {
   std::string shading = "gouraud";
   std::string fill_rule = "top-left";
   int subpixel_bits = kDefaultSubpixelBits;
+  std::string method = "exact";
 
   FillOptions options() const;
 };
 
-// Adds --shading, --fill-rule and --subpixel-bits to `command`, writing into `flags` (which must
-// outlive the parse). Invalid values are usage errors.
+// Adds --shading, --fill-rule, --subpixel-bits and --method to `command`, writing into `flags`
+// (which must outlive the parse). Invalid values are usage errors.
 void add_fill_flags(CLI::App& command, FillFlags& flags);
 
 }  // namespace scantrace::cli

@@ -47,9 +47,10 @@ int main(int argc, char** argv) {
       "Exit status: 0 success, 1 bad input data (one line on stderr naming the\n"
       "file, the element and the problem) or a failed write, 2 usage error.");
 
-  const std::vector<scantrace::cli::Command> commands{scantrace::cli::add_demo_command(app),
-                                                      scantrace::cli::add_render_command(app),
-                                                      scantrace::cli::add_trace_command(app)};
+  const std::vector<scantrace::cli::Command> commands{
+      scantrace::cli::add_demo_command(app),    scantrace::cli::add_render_command(app),
+      scantrace::cli::add_trace_command(app),   scantrace::cli::add_replay_command(app),
+      scantrace::cli::add_explain_command(app), scantrace::cli::add_stress_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

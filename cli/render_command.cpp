@@ -1,4 +1,5 @@
-// scantrace render SCENE [--shading …] [--fill-rule …] [--subpixel-bits N] [-o OUT.png]
+// scantrace render SCENE [--shading …] [--fill-rule …] [--subpixel-bits N] [--method …]
+//                        [-o OUT.png]
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -45,11 +46,11 @@ void run_render(const RenderArgs& args) {
     spdlog::warn("warning: {}: the name does not end in .png; writing PNG data anyway",
                  out.string());
   spdlog::info(
-      "rendered {} ({}x{}, {}, {}): {} faces drawn, {} skipped, {} pixels in {:.2f} ms "
+      "rendered {} ({}x{}, {}, {}, {}): {} faces drawn, {} skipped, {} pixels in {:.2f} ms "
       "(load {:.1f} ms) -> {}",
       args.scene, scene.width, scene.height, to_string(options.shading),
-      to_string(options.fill_rule), stats.triangles_filled, stats.triangles_skipped, stats.pixels,
-      render_ms, load_ms, out.string());
+      to_string(options.fill_rule), to_string(options.method), stats.triangles_filled,
+      stats.triangles_skipped, stats.pixels, render_ms, load_ms, out.string());
 }
 
 }  // namespace
@@ -72,7 +73,8 @@ Command add_render_command(CLI::App& app) {
       "Examples:\n"
       "  scantrace render scene.json                     writes ./scene.png\n"
       "  scantrace render scene.json --shading flat -o flat.png\n"
-      "  scantrace render scene.json --fill-rule closed --subpixel-bits 0");
+      "  scantrace render scene.json --fill-rule closed --subpixel-bits 0\n"
+      "  scantrace render scene.json --method float      the textbook loop, for comparison");
   return {cmd, [args] { run_render(*args); }};
 }
 

@@ -30,6 +30,12 @@ std::filesystem::path temporary_name_for(const std::filesystem::path& target) {
   return target.parent_path() / name;
 }
 
+std::filesystem::path temporary_name_keeping_extension(const std::filesystem::path& target) {
+  std::filesystem::path temp = temporary_name_for(target);
+  temp += target.extension();
+  return temp;
+}
+
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& temp)>& write) {
   if (!target.has_filename()) fail(target, "cannot write", "not a file name");

@@ -12,6 +12,9 @@ namespace scantrace {
 
 // The temporary sibling `write_atomically` uses for `target`.
 std::filesystem::path temporary_name_for(const std::filesystem::path& target);
+// The same with the target's extension at the end (".NAME.tmp-PID.EXT"), for writers that choose
+// the file format by the name's extension (OpenCV's VideoWriter).
+std::filesystem::path temporary_name_keeping_extension(const std::filesystem::path& target);
 
 // Calls `write(temp)`, which must create the complete file at `temp` or throw, then renames `temp`
 // to `target`. On any failure the temporary file is removed and an exception whose message starts

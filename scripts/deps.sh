@@ -3,8 +3,9 @@
 # when everything is installed this neither calls apt-get nor asks for sudo.
 set -euo pipefail
 
+# ffmpeg provides ffprobe, with which the tests check the codec of the videos `replay` writes.
 packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 libcli11-dev
-          libbenchmark-dev python3-jsonschema)
+          libbenchmark-dev python3-jsonschema ffmpeg)
 
 if ! command -v dpkg >/dev/null 2>&1; then
   echo "deps.sh: dpkg not found (not Debian/Ubuntu?); install these yourself: ${packages[*]}" >&2

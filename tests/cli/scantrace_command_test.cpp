@@ -191,8 +191,9 @@ TEST_CASE("demo writes the demo renders, the example triangle and the scene", "[
   const auto r = run_scantrace(dir.path(), {"demo", "-o", "out"});
   INFO("stderr: " << r.err);
   REQUIRE(r.exit_code == 0);
-  const std::vector<std::string> expected{"demo_flat.png", "demo_gouraud.png", "demo_scene.json",
-                                          "triangle.jsonl", "triangle_gouraud.png"};
+  const std::vector<std::string> expected{"demo_flat.png",   "demo_gouraud.png",
+                                          "demo_scene.json", "triangle.jsonl",
+                                          "triangle.mp4",    "triangle_gouraud.png"};
   CHECK(test::file_names(dir / "out") == expected);
   for (const auto& name : expected) CHECK_THAT(r.err, Catch::Contains("out/" + name));
 

@@ -1,0 +1,72 @@
+// scantrace explain (SCENE | --triangle "…" [--colors "…"] [--size WxH]) [trace filters]
+//                   [fill options] -o OUT.mp4|OUT_DIR/ [replay options]
+// `trace` and `replay` in one go: the trace stays in memory.
+#include <memory>
+#include <string>
+#include <variant>
+
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/fill_flags.hpp"
+#include "cli/replay_flags.hpp"
+#include "cli/trace_flags.hpp"
+#include "trace/record.hpp"
+
+namespace scantrace::cli {
+namespace {
+
+struct ExplainArgs {
+  TraceFlags what;
+  FillFlags fill;
+  ReplayFlags replay;
+};
+
+void run(const ExplainArgs& args) {
+  const auto input = args.what.input();
+  const trace::TraceFilter filter = args.what.filter();
+  const FillOptions options = args.fill.options();
+  const trace::Trace t = std::visit(
+      [&](const auto& in) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(in)>, Scene>)
+          return trace::record_scene(in, options, filter);
+        else
+          return trace::record_triangle(in, options, filter);
+      },
+      input);
+  if (t.truncated())
+    spdlog::warn(
+        "warning: the trace was truncated after {} events (--max-events); the video "
+        "shows the steps before the cut",
+        t.footer()->events);
+  run_replay(t, args.replay, args.what.input_name());
+}
+
+}  // namespace
+
+Command add_explain_command(CLI::App& app) {
+  auto args = std::make_shared<ExplainArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "explain",
+      "Traces a scene or one triangle and replays the trace into an explanatory\n"
+      "video (or PNG frames) in one go: 'scantrace trace' and 'scantrace replay'\n"
+      "without the file in between. Takes the inputs of 'trace' and the outputs of\n"
+      "'replay'; the video size is --video-size (--size is the triangle's canvas).");
+  add_trace_flags(*cmd, args->what);
+  add_fill_flags(*cmd, args->fill);
+  add_replay_flags(*cmd, args->replay, false);
+  cmd->callback([args] {
+    if (args->what.scene.empty() && args->what.triangle.empty())
+      throw CLI::RequiredError("a SCENE file or --triangle");
+  });
+  cmd->footer(
+      "Examples:\n"
+      "  scantrace explain --triangle \"20,20 250,80 300,400\" -o triangle.mp4\n"
+      "  scantrace explain --triangle \"2,1 9,3 4,8\" --size 12x10 -o small.mp4\n"
+      "  scantrace explain scene.json -o painter.mp4\n"
+      "  scantrace explain scene.json --triangles 17 -o face17.mp4 --video-size 1920x1080");
+  return {cmd, [args] { run(*args); }};
+}
+
+}  // namespace scantrace::cli

@@ -1,0 +1,91 @@
+// scantrace replay TRACE.jsonl -o OUT.mp4|OUT_DIR/ [replay options] [--partial]
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/replay_flags.hpp"
+#include "trace/trace.hpp"
+
+namespace scantrace::cli {
+namespace {
+
+struct ReplayArgs {
+  std::string trace;
+  bool partial = false;
+  ReplayFlags replay;
+};
+
+// A trace without its footer was cut short. By default that is an error — a video of half a fill
+// that looks complete would mislead; with --partial the complete lines are replayed (an unfinished
+// last line is dropped) and a warning says so.
+trace::Trace load_trace(const std::string& file, bool partial) {
+  if (!partial) {
+    trace::Trace t = trace::Trace::load(file);
+    if (!t.complete())
+      throw trace::TraceError(
+          file +
+          ": the trace has no footer, so it was cut short (an interrupted writer or a "
+          "truncated file); --partial replays the events it holds");
+    return t;
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw trace::TraceError(file + ": cannot open trace");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  std::string text = bytes.str();
+  if (!text.empty() && text.back() != '\n') {
+    const std::size_t last = text.rfind('\n');
+    text.erase(last == std::string::npos ? 0 : last + 1);
+    spdlog::warn("warning: {}: dropped an unfinished last line", file);
+  }
+  std::istringstream lines(text);
+  trace::Trace t = trace::Trace::parse(lines, file);
+  if (!t.complete())
+    spdlog::warn(
+        "warning: {}: the trace has no footer (cut short); replaying the {} events it "
+        "holds",
+        file, t.events().size());
+  return t;
+}
+
+void run(const ReplayArgs& args) {
+  const trace::Trace t = load_trace(args.trace, args.partial);
+  if (t.truncated())
+    spdlog::warn(
+        "warning: {}: the trace was truncated by its event budget (--max-events); "
+        "replaying the events it holds",
+        args.trace);
+  run_replay(t, args.replay, args.trace);
+}
+
+}  // namespace
+
+Command add_replay_command(CLI::App& app) {
+  auto args = std::make_shared<ReplayArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "replay",
+      "Turns a trace (from 'scantrace trace') into an explanatory video or PNG frames:\n"
+      "for one triangle its set-up, the edge table being built, every scanline with\n"
+      "its active edges, active points, span and colours, and the result; for a scene\n"
+      "the painter's algorithm drawing the triangles far to near.");
+  // A missing trace is bad input (exit status 1, "cannot open trace"), as a missing scene is for
+  // render, not a usage error.
+  cmd->add_option("TRACE", args->trace, "trace file (.jsonl, trace format v1)")->required();
+  add_replay_flags(*cmd, args->replay, true);
+  cmd->add_flag("--partial", args->partial,
+                "replay a trace that was cut short (no footer) instead of\n"
+                "refusing it");
+  cmd->footer(
+      "Examples:\n"
+      "  scantrace replay triangle.jsonl -o triangle.mp4\n"
+      "  scantrace replay triangle.jsonl -o frames/ --steps 5:12 --size 1920x1080\n"
+      "  scantrace replay scene.jsonl -o painter.mp4 --hold 0.5");
+  return {cmd, [args] { run(*args); }};
+}
+
+}  // namespace scantrace::cli

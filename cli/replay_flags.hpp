@@ -1,0 +1,39 @@
+#pragma once
+// The options of a replay, shared by `replay` and `explain` so they are spelled and explained the
+// same in both:
+//   -o OUT.mp4|OUT_DIR/ [--fps N] [--hold SECONDS] [--size WxH] [--steps A:B]
+//   [--rows-per-step N] [--mode auto|triangles|scene]
+// `explain` already has --size (the canvas of --triangle), so there the video size is only
+// --video-size; `replay` accepts both spellings.
+#include <string>
+
+#include "viz/replay.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace scantrace::cli {
+
+struct ReplayFlags {
+  std::string output;
+  double fps = 5;
+  double hold = 0.8;
+  std::string size = "1280x720";
+  std::string steps;
+  int rows_per_step = 0;
+  std::string mode = "auto";
+
+  viz::ReplayOptions options(const std::string& source) const;
+};
+
+void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free);
+
+// "1280x720" -> frame size; throws std::invalid_argument unless both are even and in range.
+cv::Size parse_video_size(const std::string& text);
+
+// Replays `trace` as `flags` say, with a progress bar unless --quiet, and logs one line with
+// what was written.
+void run_replay(const trace::Trace& trace, const ReplayFlags& flags, const std::string& source);
+
+}  // namespace scantrace::cli

@@ -1,0 +1,177 @@
+#include "viz/cards.hpp"
+
+#include <algorithm>
+
+#include <spdlog/fmt/fmt.h>
+#include <opencv2/imgproc.hpp>
+
+#include "viz/palette.hpp"
+#include "viz/panel_writer.hpp"
+#include "viz/text_format.hpp"
+#include "viz/trace_lookup.hpp"
+
+namespace scantrace::viz {
+namespace {
+
+// Text on the left, the picture on the right (card_picture_area).
+cv::Rect column(const cv::Mat& frame, const Typography& type) {
+  const int left = type.px(60);
+  return {left, type.px(70), frame.cols * 56 / 100 - left, frame.rows - type.px(110)};
+}
+
+std::string shading_text(const trace::Header& h) {
+  return fmt::format("{} shading, {} fill rule, {} x {} canvas",
+                     h.shading == "flat"      ? "Flat"
+                     : h.shading == "gouraud" ? "Gouraud"
+                                              : h.shading,
+                     h.fill_rule, h.canvas.width, h.canvas.height);
+}
+
+std::string triangle_text(const trace::Trace& t, int triangle) {
+  const trace::TriangleBegin* b = find_begin(t, triangle);
+  std::string s = fmt::format("Triangle {}", triangle);
+  if (!b) return s;
+  s += ":";
+  for (const Vec2& v : b->vertices) {
+    s += " ";
+    s += point(v);
+  }
+  return s;
+}
+
+void footer(cv::Mat& frame, const Typography& type, const std::string& text) {
+  type.draw(frame, text, {type.px(40), frame.rows - type.px(40)}, TextStyle::small,
+            palette::kMutedText);
+}
+
+void trace_warnings(PanelWriter& w, const trace::Trace& t) {
+  if (!t.complete())
+    w.paragraph("This trace has no footer: it was cut short, and shows only what was written.",
+                TextStyle::body, palette::kMutedText);
+  else if (t.truncated())
+    w.paragraph(
+        "This trace was truncated by its event budget (--max-events): later steps are "
+        "missing.",
+        TextStyle::body, palette::kMutedText);
+}
+
+}  // namespace
+
+cv::Rect card_picture_area(cv::Size frame, const Typography& type) {
+  const int left = frame.width * 60 / 100, top = type.px(70);
+  return {left, top, std::max(1, frame.width - type.px(60) - left),
+          std::max(1, frame.height - type.px(70) - top)};
+}
+
+void draw_title_card(cv::Mat& frame, const Typography& type, const trace::Trace& trace,
+                     const StepPlan& plan, const CardInfo& info) {
+  PanelWriter w(frame, column(frame, type), type);
+  const trace::Header& h = trace.header();
+  if (plan.mode == ReplayMode::scene) {
+    w.line("The painter's algorithm", TextStyle::huge);
+    w.gap(8);
+    w.line(fmt::format("{} triangles, drawn far to near",
+                       integer(static_cast<std::int64_t>(plan.order.size()))),
+           TextStyle::title);
+    w.line(shading_text(h), TextStyle::body, palette::kMutedText);
+    w.gap(24);
+    w.line("What you will see", TextStyle::heading);
+    w.gap(4);
+    w.paragraph(
+        "1   The triangles sorted by depth (the mean of their vertex depths), the "
+        "farthest first.");
+    w.gap(4);
+    w.paragraph(
+        "2   Each step draws a batch of triangles with the edge-table scanline fill; the "
+        "last one drawn is outlined.");
+    w.gap(4);
+    w.paragraph("3   Nearer triangles paint over farther ones: the finished image.");
+  } else {
+    w.line("The edge-table scanline fill", TextStyle::huge);
+    w.gap(8);
+    if (plan.order.size() == 1)
+      w.line(triangle_text(trace, plan.order.front()), TextStyle::title);
+    else
+      w.line(fmt::format("{} triangles, one after the other",
+                         integer(static_cast<std::int64_t>(plan.order.size()))),
+             TextStyle::title);
+    w.line(shading_text(h), TextStyle::body, palette::kMutedText);
+    w.gap(24);
+    w.line("What you will see", TextStyle::heading);
+    w.gap(4);
+    w.paragraph("1   Set-up: the vertices, snapped to the subpixel grid, and their colours.");
+    w.gap(4);
+    w.paragraph("2   The edge table: one entry per edge, with y_min, y_max, x and dx/dy.");
+    std::string scanlines =
+        "3   The scanlines, top to bottom: the active edges, where they cross the row, the span "
+        "of pixels filled, and the colours interpolated.";
+    if (info.rows_per_step > 1)
+      scanlines +=
+          fmt::format(" Up to {} rows per step; rows where an edge enters or leaves get their own.",
+                      info.rows_per_step);
+    w.gap(4);
+    w.paragraph(scanlines);
+    w.gap(4);
+    w.paragraph("4   The finished triangle.");
+  }
+  if (plan.order.empty())
+    w.paragraph("The trace holds no triangle (all filtered out?): there is nothing to replay.",
+                TextStyle::body, palette::kMutedText);
+  w.gap(12);
+  trace_warnings(w, trace);
+  footer(frame, type, fmt::format("trace: {}   ({}, level {})", info.source, h.generator, h.level));
+}
+
+void draw_end_card(cv::Mat& frame, const Typography& type, const trace::Trace& trace,
+                   const StepPlan& plan, const CardInfo& info) {
+  PanelWriter w(frame, column(frame, type), type);
+  w.line("Done", TextStyle::huge);
+  w.gap(8);
+  if (plan.mode == ReplayMode::scene) {
+    std::size_t skipped = 0;
+    for (int t : plan.order)
+      if (trace.skipped(t)) ++skipped;
+    w.line(fmt::format("{} triangles drawn, {} skipped",
+                       integer(static_cast<std::int64_t>(plan.order.size() - skipped)),
+                       integer(static_cast<std::int64_t>(skipped))),
+           TextStyle::title);
+    w.line(fmt::format("{} pixel writes, {} of them over a farther triangle", integer(info.pixels),
+                       integer(info.overwrites)),
+           TextStyle::body, palette::kMutedText);
+    w.gap(24);
+    w.line("Recap", TextStyle::heading);
+    w.gap(4);
+    w.paragraph("-   depth(T) = mean of its vertex depths; draw the largest depth first.");
+    w.gap(4);
+    w.paragraph("-   Each triangle is filled with the edge-table scanline fill.");
+    w.gap(4);
+    w.paragraph("-   What is nearer is drawn later, so it ends up on top.");
+  } else {
+    for (int t : plan.order) {
+      if (const auto end = trace.triangle_end(t))
+        w.line(fmt::format("{}  -  {} rows, {} pixels", triangle_text(trace, t), integer(end->rows),
+                           integer(end->pixels)),
+               TextStyle::body);
+      if (w.y() > w.bottom() / 2) break;
+    }
+    w.gap(24);
+    w.line("Recap", TextStyle::heading);
+    w.gap(4);
+    w.paragraph(
+        "-   Edge table: each non-horizontal edge with y_min, y_max, its x at y_min and "
+        "dx/dy, sorted by y_min.");
+    w.gap(4);
+    w.paragraph(
+        "-   Each row: add the edges that start, drop those that ended; the active "
+        "points are where the active edges cross the row.");
+    w.gap(4);
+    w.paragraph("-   Fill from ceil(x_L) to ceil(x_R) - 1, then x += dx/dy for the next row.");
+    w.gap(4);
+    w.paragraph("-   Gouraud: colours interpolated along the edges, then along the row.");
+  }
+  w.gap(12);
+  trace_warnings(w, trace);
+  footer(frame, type, fmt::format("made with {}  -  {}", trace.header().generator, info.source));
+}
+
+}  // namespace scantrace::viz

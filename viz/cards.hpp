@@ -1,0 +1,28 @@
+#pragma once
+// The title and end cards: what the video shows, and a recap once it has shown it.
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "trace/trace.hpp"
+#include "viz/replay_steps.hpp"
+#include "viz/typography.hpp"
+
+namespace scantrace::viz {
+
+struct CardInfo {
+  std::string source;       // the trace's name, or what was traced (for explain)
+  int rows_per_step = 1;    // scanline grouping, mentioned when > 1
+  std::int64_t pixels = 0;  // written in all (end card)
+  std::int64_t overwrites = 0;
+};
+
+// Where a card shows its picture (the triangle or the scene), right of its text.
+cv::Rect card_picture_area(cv::Size frame, const Typography& type);
+
+void draw_title_card(cv::Mat& frame, const Typography& type, const trace::Trace& trace,
+                     const StepPlan& plan, const CardInfo& info);
+void draw_end_card(cv::Mat& frame, const Typography& type, const trace::Trace& trace,
+                   const StepPlan& plan, const CardInfo& info);
+
+}  // namespace scantrace::viz

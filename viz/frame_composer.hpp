@@ -1,0 +1,50 @@
+#pragma once
+// Puts a frame together for one step: title bar, the magnified canvas with its marks, the side
+// panel and the legend — or a title or end card.
+#include <optional>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "trace/trace.hpp"
+#include "viz/canvas_state.hpp"
+#include "viz/cards.hpp"
+#include "viz/frame_layout.hpp"
+#include "viz/replay_steps.hpp"
+#include "viz/scene_view.hpp"
+#include "viz/typography.hpp"
+#include "viz/view_geometry.hpp"
+
+namespace scantrace::viz {
+
+class FrameComposer {
+ public:
+  FrameComposer(const trace::Trace& trace, const StepPlan& plan, cv::Size frame,
+                std::string source);
+
+  // The frame of `step` (number `index` in the plan) with the pixels of `state`.
+  cv::Mat compose(const Step& step, std::size_t index, const CanvasState& state) const;
+  // Where the canvas is shown for `step` (nullopt: a card, no canvas).
+  std::optional<ViewGeometry> geometry(const Step& step) const;
+  const FrameLayout& layout() const { return layout_; }
+
+ private:
+  void title_bar(cv::Mat& frame, const Step& step, std::size_t index) const;
+  void triangle_frame(cv::Mat& frame, const Step& step, const CanvasState& state) const;
+  void scene_frame(cv::Mat& frame, const Step& step, const CanvasState& state) const;
+  void card_picture(cv::Mat& frame, const Step& step, const CanvasState& state) const;
+
+  const trace::Trace& trace_;
+  const StepPlan& plan_;
+  cv::Size size_, canvas_;
+  Typography type_;
+  FrameLayout layout_;
+  SceneSummary scene_;
+  std::string source_;
+};
+
+// The canvas pixels a view of `triangle` is centred on: its bounding box on the canvas, with a
+// margin (the whole canvas when the triangle has no set-up in the trace).
+PixelBox triangle_region(const trace::Trace& trace, int triangle);
+
+}  // namespace scantrace::viz

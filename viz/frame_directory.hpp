@@ -1,0 +1,32 @@
+#pragma once
+// A directory of numbered PNG frames, frame_00001.png, frame_00002.png, … — one file per step
+// (a still image needs no repeats; `repeat` is ignored).
+#include <filesystem>
+
+#include "viz/frame_sink.hpp"
+
+namespace scantrace::viz {
+
+class FrameDirectory : public FrameSink {
+ public:
+  // Writes into a temporary sibling directory of `dir`. Throws std::runtime_error naming `dir`
+  // when it exists and holds anything but frames of an earlier replay (which it replaces).
+  FrameDirectory(std::filesystem::path dir, cv::Size size);
+  ~FrameDirectory() override;
+
+  void write(const cv::Mat& frame, int repeat) override;
+  void commit() override;
+  std::size_t frames() const override { return frames_; }
+  std::string format() const override { return "png"; }
+
+  // "frame_00042.png" for frame 42 (1-based).
+  static std::string file_name(std::size_t number);
+
+ private:
+  std::filesystem::path dir_, temp_;
+  cv::Size size_;
+  std::size_t frames_ = 0;
+  bool committed_ = false;
+};
+
+}  // namespace scantrace::viz

@@ -1,0 +1,201 @@
+#include "viz/grid_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <spdlog/fmt/fmt.h>
+#include <opencv2/imgproc.hpp>
+
+#include "viz/opencv_image.hpp"
+#include "viz/palette.hpp"
+#include "viz/text_format.hpp"
+
+namespace scantrace::viz {
+namespace {
+
+cv::Scalar to_scalar(const Color& c) {
+  return {static_cast<double>(to_byte(static_cast<float>(c.b))),
+          static_cast<double>(to_byte(static_cast<float>(c.g))),
+          static_cast<double>(to_byte(static_cast<float>(c.r)))};
+}
+
+bool is_dark(const cv::Vec3b& bgr) {
+  return 0.114 * bgr[0] + 0.587 * bgr[1] + 0.299 * bgr[2] < 110;
+}
+
+}  // namespace
+
+GridView::GridView(cv::Mat& frame, const ViewGeometry& geometry, const Typography& type,
+                   cv::Size canvas)
+    : frame_(frame), geometry_(geometry), type_(type), canvas_(canvas) {}
+
+cv::Point GridView::inside(cv::Point p, cv::Size s) const {
+  const cv::Rect& v = geometry_.view();
+  // Room for the label's box: its margin and the descenders below the measured ascent.
+  const int m = type_.px(6);
+  s.height += type_.px(6);
+  p.x = std::clamp(p.x, v.x + m, std::max(v.x + m, v.x + v.width - s.width - m));
+  p.y = std::clamp(p.y, v.y + m, std::max(v.y + m, v.y + v.height - s.height - m));
+  return p;
+}
+
+void GridView::cells(const CanvasState& state) {
+  const cv::Rect& v = geometry_.view();
+  std::vector<std::int64_t> columns(v.width);
+  for (int u = 0; u < v.width; ++u) columns[u] = geometry_.pixel_x(v.x + u);
+  const cv::Vec3b empty(palette::kEmptyCell[0], palette::kEmptyCell[1], palette::kEmptyCell[2]);
+  const cv::Vec3b outside(palette::kOutsideCanvas[0], palette::kOutsideCanvas[1],
+                          palette::kOutsideCanvas[2]);
+  for (int r = 0; r < v.height; ++r) {
+    const std::int64_t y = geometry_.pixel_y(v.y + r);
+    auto* out = frame_.ptr<cv::Vec3b>(v.y + r) + v.x;
+    const bool row_on_canvas = y >= 0 && y < canvas_.height;
+    for (int u = 0; u < v.width; ++u) {
+      const std::int64_t x = columns[u];
+      if (!row_on_canvas || x < 0 || x >= canvas_.width)
+        out[u] = outside;
+      else
+        out[u] = state.written(x, y) ? state.bgr(x, y) : empty;
+    }
+  }
+}
+
+void GridView::grid() {
+  if (!grid_visible()) return;
+  const cv::Rect& v = geometry_.view();
+  const PixelBox b = geometry_.visible();
+  // Cell borders, then the centres on top, dark on light cells and light on dark ones.
+  for (std::int64_t x = b.x0; x <= b.x1 + 1; ++x) {
+    const int u = static_cast<int>(std::lround(at(static_cast<double>(x) - 0.5, 0).x));
+    if (u >= v.x && u < v.x + v.width)
+      cv::line(frame_, {u, v.y}, {u, v.y + v.height - 1}, palette::kGridLine, 1);
+  }
+  for (std::int64_t y = b.y0; y <= b.y1 + 1; ++y) {
+    const int w = static_cast<int>(std::lround(at(0, static_cast<double>(y) - 0.5).y));
+    if (w >= v.y && w < v.y + v.height)
+      cv::line(frame_, {v.x, w}, {v.x + v.width - 1, w}, palette::kGridLine, 1);
+  }
+  const double cell = geometry_.cell();
+  const int radius = cell >= 14 ? std::max(1, static_cast<int>(cell / 14)) : 0;
+  for (std::int64_t y = b.y0; y <= b.y1; ++y)
+    for (std::int64_t x = b.x0; x <= b.x1; ++x) {
+      const cv::Point2d c = at(static_cast<double>(x), static_cast<double>(y));
+      const cv::Point p(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)));
+      if (!v.contains(p)) continue;
+      const cv::Scalar colour =
+          is_dark(frame_.at<cv::Vec3b>(p)) ? palette::kCentreOnDark : palette::kCentreOnLight;
+      if (radius == 0)
+        frame_.at<cv::Vec3b>(p) = cv::Vec3b(colour[0], colour[1], colour[2]);
+      else
+        cv::circle(frame_, p, radius, colour, cv::FILLED, cv::LINE_AA);
+    }
+}
+
+void GridView::outline(std::span<const Vec2> polygon, const cv::Scalar& colour,
+                       double design_thickness) {
+  const int t = type_.px(design_thickness);
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+    draw_segment(frame_, at(a.x, a.y), at(b.x, b.y), geometry_.view(), colour, t);
+  }
+}
+
+void GridView::edge(Vec2 from, Vec2 to, int id, bool active) {
+  draw_segment_with_halo(frame_, at(from.x, from.y), at(to.x, to.y), geometry_.view(),
+                         palette::edge_colour(id), type_.px(active ? 4 : 2), palette::kHalo,
+                         type_.px(1));
+}
+
+void GridView::vertices(const trace::TriangleBegin& triangle) {
+  const std::vector<Vec2>& p = triangle.snapped.empty() ? triangle.vertices : triangle.snapped;
+  if (p.empty()) return;
+  Vec2 centre{0, 0};
+  for (const Vec2& v : p) centre = {centre.x + v.x / p.size(), centre.y + v.y / p.size()};
+  const cv::Point2d c = at(centre.x, centre.y);
+  const int r = type_.px(7);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const cv::Point2d q = at(p[i].x, p[i].y);
+    if (!geometry_.view().contains(cv::Point(static_cast<int>(q.x), static_cast<int>(q.y))))
+      continue;
+    const Color col = i < triangle.colors.size() ? triangle.colors[i] : Color{};
+    const cv::Point qi(static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)));
+    cv::circle(frame_, qi, r + type_.px(2), palette::kHalo, cv::FILLED, cv::LINE_AA);
+    cv::circle(frame_, qi, r, to_scalar(col), cv::FILLED, cv::LINE_AA);
+    const std::string label = fmt::format("v{} {}", i, point(p[i]));
+    const cv::Size s = type_.measure(label, TextStyle::body);
+    // Away from the triangle's centre, so the label does not cover the triangle.
+    cv::Point2d d = q - c;
+    const double len = std::hypot(d.x, d.y);
+    d = len > 0 ? d * (1.0 / len) : cv::Point2d(0, -1);
+    const double reach = r + type_.px(10);
+    cv::Point topleft(static_cast<int>(q.x + d.x * reach -
+                                       (d.x < -0.3  ? s.width
+                                        : d.x > 0.3 ? 0
+                                                    : s.width / 2)),
+                      static_cast<int>(q.y + d.y * reach -
+                                       (d.y < -0.3  ? s.height
+                                        : d.y > 0.3 ? 0
+                                                    : s.height / 2)));
+    type_.draw_boxed(frame_, label, inside(topleft, s), TextStyle::body, palette::kText,
+                     palette::kLabelBox);
+  }
+}
+
+void GridView::scanline(std::int64_t y, bool labelled) {
+  const cv::Rect& v = geometry_.view();
+  const double w = at(0, static_cast<double>(y)).y;
+  draw_segment_with_halo(frame_, {static_cast<double>(v.x), w},
+                         {static_cast<double>(v.x + v.width), w}, v, palette::kScanline,
+                         type_.px(2), palette::kHalo, type_.px(1));
+  if (!labelled) return;
+  const std::string label = fmt::format("y = {}", y);
+  const cv::Size s = type_.measure(label, TextStyle::strong);
+  type_.draw_boxed(frame_, label,
+                   inside({v.x + type_.px(6), static_cast<int>(w) - s.height / 2}, s),
+                   TextStyle::strong, palette::kText, palette::kScanline);
+}
+
+void GridView::span(std::int64_t y, const trace::Span& span) {
+  if (span.size() <= 0) return;
+  const cv::Point2d a = at(static_cast<double>(span.x_begin) - 0.5, static_cast<double>(y) - 0.5);
+  const cv::Point2d b = at(static_cast<double>(span.x_end) - 0.5, static_cast<double>(y) + 0.5);
+  // The box is drawn just outside the span's cells, so it frames their colours without covering
+  // them; small cells get a box tall enough to be seen, centred on the row.
+  const int thickness = type_.px(2), halo = type_.px(1);
+  const double out = thickness / 2.0 + halo;
+  const double min_height = type_.px(10);
+  const double mid = (a.y + b.y) / 2, half = std::max((b.y - a.y) / 2 + out, min_height / 2);
+  const cv::Point2d tl(a.x - out, mid - half), br(b.x + out, mid + half);
+  const cv::Point2d tr(br.x, tl.y), bl(tl.x, br.y);
+  for (auto [p, q] : {std::pair{tl, tr}, std::pair{tr, br}, std::pair{br, bl}, std::pair{bl, tl}})
+    draw_segment_with_halo(frame_, p, q, geometry_.view(), palette::kSpan, thickness,
+                           palette::kHalo, halo);
+}
+
+void GridView::active_points(const trace::Scanline& row) {
+  const std::size_t n = row.active_points.size();
+  const int r = type_.px(6);
+  for (std::size_t i = 0; i < n; ++i) {
+    const trace::ActivePoint& p = row.active_points[i];
+    const cv::Point2d q = at(p.x, static_cast<double>(row.y));
+    const cv::Point qi(static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)));
+    if (!geometry_.view().contains(qi)) continue;
+    cv::circle(frame_, qi, r + type_.px(2), palette::edge_colour(p.edge), cv::FILLED, cv::LINE_AA);
+    cv::circle(frame_, qi, r, to_scalar(p.color), cv::FILLED, cv::LINE_AA);
+    // The leftmost label goes left of its point, the rightmost right of it, so the two x values
+    // of a row never overlap even where the points meet at a vertex.
+    const std::string label = fmt::format("x = {}", number(p.x, 2));
+    const cv::Size s = type_.measure(label, TextStyle::strong);
+    const int gap = r + type_.px(6);
+    int left = static_cast<int>(q.x) - s.width / 2;
+    if (n >= 2 && i == 0) left = static_cast<int>(q.x) - gap - s.width;
+    if (n >= 2 && i == n - 1) left = static_cast<int>(q.x) + gap;
+    const int top = static_cast<int>(q.y) - gap - s.height;
+    type_.draw_boxed(frame_, label, inside({left, top}, s), TextStyle::strong, palette::kText,
+                     palette::kLabelBox, palette::edge_colour(p.edge));
+  }
+}
+
+}  // namespace scantrace::viz

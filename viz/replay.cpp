@@ -1,0 +1,115 @@
+#include "viz/replay.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "viz/frame_directory.hpp"
+#include "viz/replayer.hpp"
+#include "viz/video_writer.hpp"
+
+namespace scantrace::viz {
+namespace {
+
+std::size_t parse_step(const std::string& text, const std::string& whole) {
+  std::size_t v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || v == 0)
+    throw std::invalid_argument(
+        fmt::format("--steps: \"{}\" is not A:B with steps counted from 1", whole));
+  return v;
+}
+
+}  // namespace
+
+StepRange StepRange::parse(const std::string& text) {
+  StepRange r;
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos) {
+    r.first = r.last = parse_step(text, text);
+    return r;
+  }
+  const std::string a = text.substr(0, colon), b = text.substr(colon + 1);
+  if (a.empty() && b.empty())
+    throw std::invalid_argument(fmt::format("--steps: \"{}\" names no step", text));
+  if (!a.empty()) r.first = parse_step(a, text);
+  if (!b.empty()) r.last = parse_step(b, text);
+  if (r.first > r.last)
+    throw std::invalid_argument(fmt::format("--steps: \"{}\" ends before it starts", text));
+  return r;
+}
+
+void validate(const ReplayOptions& o) {
+  if (o.size.width < kMinFrameWidth || o.size.height < kMinFrameHeight || o.size.width > 7680 ||
+      o.size.height > 4320)
+    throw std::invalid_argument(fmt::format("frame size {}x{} is out of range ({}x{} to 7680x4320)",
+                                            o.size.width, o.size.height, kMinFrameWidth,
+                                            kMinFrameHeight));
+  if (o.size.width % 2 || o.size.height % 2)
+    throw std::invalid_argument(
+        fmt::format("frame size {}x{} must be even in both directions (4:2:0 video)", o.size.width,
+                    o.size.height));
+  if (!(o.fps > 0 && o.fps <= 240)) throw std::invalid_argument("fps must be in (0, 240]");
+  if (!(o.hold > 0 && o.hold <= 60)) throw std::invalid_argument("hold must be in (0, 60] seconds");
+  if (o.plan.rows_per_step < 0) throw std::invalid_argument("rows per step must be >= 0");
+}
+
+OutputKind output_kind(const std::filesystem::path& out) {
+  const std::string s = out.string();
+  if (s.empty()) throw std::invalid_argument("no output given");
+  if (s.back() == '/') return OutputKind::frames;
+  std::error_code ec;
+  if (std::filesystem::is_directory(out, ec)) return OutputKind::frames;
+  const std::string ext = out.extension().string();
+  if (ext == ".mp4" || ext == ".MP4") return OutputKind::video;
+  if (ext.empty()) return OutputKind::frames;
+  throw std::invalid_argument(
+      fmt::format("{}: the output must be an .mp4 file or a directory (DIR/)", s));
+}
+
+ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
+                    const ReplayOptions& options, Progress* progress) {
+  validate(options);
+  Replayer replayer(trace, options.plan, options.size,
+                    options.source.empty() ? "the trace" : options.source);
+  const std::size_t total = replayer.steps().size();
+  if (options.steps.first > total)
+    throw std::invalid_argument(fmt::format(
+        "--steps: the replay has {} steps, so it has no step {}", total, options.steps.first));
+  const std::size_t first = options.steps.first - 1;
+  const std::size_t last = std::min(options.steps.last, total) - 1;
+
+  ReplayResult result;
+  result.kind = output_kind(out);
+  result.steps_total = total;
+  result.steps = last - first + 1;
+  result.mode = replayer.plan().mode;
+  result.rows_per_step = replayer.plan().rows_per_step;
+
+  std::unique_ptr<FrameSink> sink;
+  std::size_t work = result.steps;  // progress is counted in frames written
+  if (result.kind == OutputKind::video) {
+    sink = std::make_unique<VideoFile>(out, options.size, options.fps);
+    work = 0;
+    for (std::size_t i = first; i <= last; ++i)
+      work += static_cast<std::size_t>(frames_for(replayer.steps()[i], options.fps, options.hold));
+  } else {
+    sink = std::make_unique<FrameDirectory>(out, options.size);
+  }
+  for (std::size_t i = first; i <= last; ++i) {
+    const int repeat = frames_for(replayer.steps()[i], options.fps, options.hold);
+    sink->write(replayer.frame(i), repeat);
+    if (progress) progress->update(sink->frames(), work);
+  }
+  sink->commit();
+  if (progress) progress->finish();
+  result.format = sink->format();
+  result.frames = sink->frames();
+  result.seconds = result.kind == OutputKind::video ? result.frames / options.fps : 0;
+  return result;
+}
+
+}  // namespace scantrace::viz

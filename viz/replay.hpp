@@ -1,0 +1,58 @@
+#pragma once
+// Replaying a trace into an explanatory video or a directory of frames, in one call:
+//
+//   const trace::Trace t = trace::Trace::load("triangle.jsonl");
+//   viz::replay(t, "triangle.mp4");                 // H.264, 1280x720, 5 fps
+//   viz::replay(t, "frames/", {.size = {1920, 1080}});
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "trace/trace.hpp"
+#include "viz/progress.hpp"
+#include "viz/replay_steps.hpp"
+
+namespace scantrace::viz {
+
+// Steps first..last, 1-based and inclusive, written "A:B"; either side may be omitted ("5:",
+// ":20"), and "A" alone is the single step A.
+struct StepRange {
+  std::size_t first = 1, last = SIZE_MAX;
+  static StepRange parse(const std::string& text);  // throws std::invalid_argument
+};
+
+struct ReplayOptions {
+  cv::Size size{1280, 720};  // even, at least 320x180
+  double fps = 5;            // video only: the frames are stills, so few are needed
+  double hold = 0.8;  // seconds a plain step is held (cards and key steps longer); video only
+  StepRange steps{};
+  StepOptions plan{};
+  std::string source{};  // how the title card names the input (default: "the trace")
+};
+
+// Throws std::invalid_argument naming the option that is out of range.
+void validate(const ReplayOptions& options);
+
+enum class OutputKind { video, frames };
+// ".mp4" is a video; a path ending in '/', an existing directory or a name without extension is
+// a frame directory; anything else throws std::invalid_argument.
+OutputKind output_kind(const std::filesystem::path& out);
+
+struct ReplayResult {
+  OutputKind kind = OutputKind::video;
+  std::string format;           // "h264", "mpeg4" or "png"
+  std::size_t steps_total = 0;  // steps in the plan
+  std::size_t steps = 0;        // rendered (the selected range)
+  std::size_t frames = 0;       // written (video: steps times their hold; frames: = steps)
+  double seconds = 0;           // video duration
+  ReplayMode mode = ReplayMode::triangles;
+  int rows_per_step = 1;
+};
+
+ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
+                    const ReplayOptions& options = {}, Progress* progress = nullptr);
+
+}  // namespace scantrace::viz

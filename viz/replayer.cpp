@@ -1,0 +1,81 @@
+#include "viz/replayer.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <spdlog/fmt/fmt.h>
+
+namespace scantrace::viz {
+namespace {
+
+// The replay keeps the written pixels of this many canvas pixels at most (3 bytes + mask each).
+constexpr std::int64_t kMaxStatePixels = std::int64_t{1} << 26;
+
+cv::Size checked(cv::Size frame) {
+  if (frame.width < kMinFrameWidth || frame.height < kMinFrameHeight)
+    throw std::invalid_argument(fmt::format("frame size {}x{} is too small (at least {}x{})",
+                                            frame.width, frame.height, kMinFrameWidth,
+                                            kMinFrameHeight));
+  return frame;
+}
+
+}  // namespace
+
+cv::Rect Replayer::state_window(const trace::Trace& trace, const StepPlan& plan,
+                                const FrameComposer& composer) {
+  const trace::Canvas c = trace.header().canvas;
+  // Every pixel any frame shows; outside the canvas nothing is ever written.
+  std::int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
+  for (const Step& s : plan.steps)
+    if (const auto g = composer.geometry(s)) {
+      const PixelBox v = g->visible();
+      x0 = std::min(x0, v.x0), y0 = std::min(y0, v.y0);
+      x1 = std::max(x1, v.x1), y1 = std::max(y1, v.y1);
+    }
+  x0 = std::max<std::int64_t>(x0, 0), y0 = std::max<std::int64_t>(y0, 0);
+  x1 = std::min<std::int64_t>(x1, c.width - 1), y1 = std::min<std::int64_t>(y1, c.height - 1);
+  if (x1 < x0 || y1 < y0) return {0, 0, 0, 0};
+  if ((x1 - x0 + 1) * (y1 - y0 + 1) > kMaxStatePixels)
+    throw std::runtime_error(fmt::format(
+        "the canvas ({}x{}) is too large to replay; trace fewer triangles", c.width, c.height));
+  return {static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1 - x0 + 1),
+          static_cast<int>(y1 - y0 + 1)};
+}
+
+Replayer::Replayer(const trace::Trace& trace, const StepOptions& options, cv::Size frame,
+                   std::string source)
+    : trace_(trace),
+      plan_(plan_steps(trace, options)),
+      size_(checked(frame)),
+      composer_(trace, plan_, size_, std::move(source)),
+      state_(state_window(trace, plan_, composer_)) {}
+
+std::optional<ViewGeometry> Replayer::geometry(std::size_t index) const {
+  return composer_.geometry(plan_.steps.at(index));
+}
+
+void Replayer::apply(const Step& step) {
+  switch (step.kind) {
+    case StepKind::scanlines:
+      state_.paint_rows(trace_, step.triangle, step.first_row, step.last_row);
+      break;
+    case StepKind::painter_batch:
+      for (std::size_t i = step.first; i <= step.last && i < plan_.order.size(); ++i)
+        state_.paint_triangle(trace_, plan_.order[i]);
+      break;
+    default:
+      break;
+  }
+}
+
+cv::Mat Replayer::frame(std::size_t index) {
+  if (index >= plan_.steps.size())
+    throw std::out_of_range(
+        fmt::format("step {} is beyond the replay's {} steps", index + 1, plan_.steps.size()));
+  if (index + 1 < applied_)
+    throw std::logic_error("Replayer::frame: steps must be rendered in increasing order");
+  for (; applied_ <= index; ++applied_) apply(plan_.steps[applied_]);
+  return composer_.compose(plan_.steps[index], index, state_);
+}
+
+}  // namespace scantrace::viz

@@ -1,0 +1,57 @@
+#pragma once
+// A trace turned into frames, one per step, in order:
+//
+//   Replayer r(trace, {}, {1280, 720}, "triangle.jsonl");
+//   for (std::size_t i = 0; i < r.steps().size(); ++i) use(r.frame(i));
+//
+// Each step adds the pixels it fills to the replay's canvas state as it is passed, so frames are
+// asked for in increasing step order (skipping ahead is fine: the skipped steps' pixels are
+// still added).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "trace/trace.hpp"
+#include "viz/canvas_state.hpp"
+#include "viz/frame_composer.hpp"
+#include "viz/replay_steps.hpp"
+
+namespace scantrace::viz {
+
+class Replayer {
+ public:
+  // `source` is how the title card names the input. Throws std::invalid_argument for a frame
+  // size the layout cannot use, std::runtime_error when the canvas is too large to replay.
+  Replayer(const trace::Trace& trace, const StepOptions& options, cv::Size frame,
+           std::string source);
+
+  const StepPlan& plan() const { return plan_; }
+  const std::vector<Step>& steps() const { return plan_.steps; }
+  cv::Size frame_size() const { return size_; }
+
+  // The frame of step `index` (CV_8UC3, BGR, frame_size()); `index` must not be below the last
+  // one asked for.
+  cv::Mat frame(std::size_t index);
+  // Where canvas pixels appear on the frames of step `index` (nullopt on a card).
+  std::optional<ViewGeometry> geometry(std::size_t index) const;
+  const CanvasState& state() const { return state_; }
+
+ private:
+  void apply(const Step& step);
+  static cv::Rect state_window(const trace::Trace& trace, const StepPlan& plan,
+                               const FrameComposer& composer);
+
+  const trace::Trace& trace_;
+  StepPlan plan_;
+  cv::Size size_;
+  FrameComposer composer_;
+  CanvasState state_;
+  std::size_t applied_ = 0;  // steps whose pixels are in state_
+};
+
+// The smallest frame the layout is designed for.
+inline constexpr int kMinFrameWidth = 320, kMinFrameHeight = 180;
+
+}  // namespace scantrace::viz

@@ -1,0 +1,185 @@
+#include "viz/scene_view.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include <spdlog/fmt/fmt.h>
+#include <opencv2/imgproc.hpp>
+
+#include "viz/grid_view.hpp"
+#include "viz/palette.hpp"
+#include "viz/panel_writer.hpp"
+#include "viz/text_format.hpp"
+#include "viz/trace_lookup.hpp"
+
+namespace scantrace::viz {
+namespace {
+
+// Batches longer than this list their last rows only: the highlighted triangle and its
+// predecessors are what the frame is about.
+constexpr std::size_t kListedTriangles = 6;
+
+std::string depth_text(const std::optional<double>& d) {
+  return d ? number(*d, 3) : "-";
+}
+
+// A bar from the farthest depth (left) to the nearest (right), filled up to the depth reached.
+void depth_bar(PanelWriter& w, const Typography& type, const SceneSummary& scene,
+               const std::optional<double>& current) {
+  cv::Mat& frame = w.canvas();
+  if (!scene.min_depth || !scene.max_depth) return;
+  const double far = *scene.max_depth, near = *scene.min_depth;
+  const int h = type.px(12);
+  const cv::Rect bar(w.left(), w.y(), w.width(), h);
+  cv::rectangle(frame, bar, palette::kPanelBorder, cv::FILLED);
+  if (current) {
+    const double f = far > near ? (far - *current) / (far - near) : 1.0;
+    const int x = bar.x + static_cast<int>(std::clamp(f, 0.0, 1.0) * bar.width);
+    cv::rectangle(frame, {bar.x, bar.y, x - bar.x, h}, palette::kCurrentTriangle, cv::FILLED);
+    cv::line(frame, {x, bar.y - type.px(3)}, {x, bar.y + h + type.px(3)}, palette::kText,
+             type.px(2));
+  }
+  cv::rectangle(frame, bar, palette::kMutedText, 1);
+  w.gap(16);
+  const std::string left = fmt::format("far: depth {}", number(far, 3));
+  const std::string right = fmt::format("near: depth {}", number(near, 3));
+  type.draw(frame, left, {w.left(), w.y()}, TextStyle::small, palette::kMutedText);
+  type.draw(frame, right, {w.left() + w.width() - type.width(right, TextStyle::small), w.y()},
+            TextStyle::small, palette::kMutedText);
+  w.move_to(w.y() + type.line_height(TextStyle::small));
+}
+
+}  // namespace
+
+SceneSummary summarize_scene(const trace::Trace& trace, const StepPlan& plan) {
+  SceneSummary s;
+  for (int t : plan.order) {
+    const trace::TriangleBegin* b = find_begin(trace, t);
+    s.depth.push_back(b ? b->depth : std::nullopt);
+    if (b && b->depth) {
+      s.min_depth = std::min(s.min_depth.value_or(*b->depth), *b->depth);
+      s.max_depth = std::max(s.max_depth.value_or(*b->depth), *b->depth);
+    }
+    if (trace.skipped(t)) ++s.skipped;
+    if (const auto end = trace.triangle_end(t)) s.pixels += end->pixels;
+  }
+  return s;
+}
+
+void draw_scene_view(cv::Mat& frame, const ViewGeometry& geometry, const Typography& type,
+                     cv::Size canvas, const CanvasState& state, const trace::Trace& trace,
+                     const StepPlan& plan, const Step& step) {
+  GridView view(frame, geometry, type, canvas);
+  view.cells(state);
+  view.grid();
+  // A triangle-level trace holds no pixels: the triangles drawn so far are shown by their
+  // outlines instead, so the picture still builds up far to near.
+  const std::size_t drawn = step.kind == StepKind::painter_batch ? step.first : plan.order.size();
+  if (trace.header().level == "triangle")
+    for (std::size_t i = 0; i < drawn; ++i)
+      if (const trace::TriangleBegin* b = find_begin(trace, plan.order[i]))
+        view.outline(polygon_of(*b), palette::kMutedText, 1);
+  if (step.kind != StepKind::painter_batch) return;
+  for (std::size_t i = step.first; i <= step.last && i < plan.order.size(); ++i)
+    if (const trace::TriangleBegin* b = find_begin(trace, plan.order[i]);
+        b && plan.order[i] != step.triangle)
+      view.outline(polygon_of(*b), palette::kBatchOutline, 1);
+  if (const trace::TriangleBegin* b = find_begin(trace, step.triangle)) {
+    const std::vector<Vec2>& p = polygon_of(*b);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec2 a = p[i], c = p[(i + 1) % p.size()];
+      draw_segment_with_halo(frame, geometry.to_frame(a.x, a.y), geometry.to_frame(c.x, c.y),
+                             geometry.view(), palette::kCurrentTriangle, type.px(3), palette::kHalo,
+                             type.px(1));
+    }
+  }
+}
+
+void draw_scene_panel(cv::Mat& frame, const cv::Rect& area, const Typography& type,
+                      const trace::Trace& trace, const StepPlan& plan, const SceneSummary& scene,
+                      const Step& step, const CanvasState& state) {
+  PanelWriter w(frame, area, type);
+  const std::size_t n = plan.order.size();
+  if (step.kind == StepKind::scene_done) {
+    w.heading("The finished image");
+    w.paragraph(fmt::format("{} triangles drawn, {} skipped.",
+                            integer(static_cast<std::int64_t>(n - scene.skipped)),
+                            integer(static_cast<std::int64_t>(scene.skipped))));
+  } else {
+    w.heading("Painter's algorithm: far to near");
+    const auto count = [](std::size_t v) { return integer(static_cast<std::int64_t>(v)); };
+    w.line(step.first == step.last
+               ? fmt::format("Triangle {} of {} in drawing order", count(step.first + 1), count(n))
+               : fmt::format("Triangles {} .. {} of {} in drawing order", count(step.first + 1),
+                             count(step.last + 1), count(n)),
+           TextStyle::strong);
+  }
+  w.gap(6);
+  w.paragraph(
+      "A triangle's depth is the mean of its three vertex depths. The largest depth (farthest) "
+      "is drawn first; nearer triangles come later and paint over what lies behind them. Equal "
+      "depths keep the order of the faces.");
+  w.gap(8);
+  const std::optional<double> current =
+      step.kind == StepKind::painter_batch && step.last < scene.depth.size()
+          ? scene.depth[step.last]
+          : scene.min_depth;
+  depth_bar(w, type, scene, current);
+  w.gap(8);
+
+  if (step.kind == StepKind::painter_batch) {
+    if (const trace::TriangleBegin* b = find_begin(trace, step.triangle)) {
+      w.line(b->depth ? fmt::format("Highlighted: face {}, depth {}", step.triangle,
+                                    number(*b->depth, 4))
+                      : fmt::format("Highlighted: face {}", step.triangle),
+             TextStyle::strong);
+      std::string vs = "vertices";
+      for (const Vec2& v : b->vertices) {
+        vs += "  ";
+        vs += point(v, 1);
+      }
+      w.line(vs);
+      for (std::size_t i = 0; i < b->colors.size(); ++i)
+        w.swatch(b->colors[i], fmt::format("v{}  {}", i, colour(b->colors[i])), TextStyle::small);
+      w.gap(6);
+    }
+    std::vector<TableRow> rows;
+    const std::size_t first = step.last + 1 - step.first > kListedTriangles
+                                  ? step.last + 1 - kListedTriangles
+                                  : step.first;
+    if (first > step.first)
+      w.line(fmt::format("... {} more triangles earlier in this step",
+                         integer(static_cast<std::int64_t>(first - step.first))),
+             TextStyle::small, palette::kMutedText);
+    for (std::size_t i = first; i <= step.last && i < n; ++i) {
+      const int t = plan.order[i];
+      TableRow r;
+      const auto end = trace.triangle_end(t);
+      const auto skipped = trace.skipped(t);
+      r.cells = {std::to_string(t), depth_text(scene.depth[i]), end ? integer(end->rows) : "-",
+                 skipped ? skipped->reason
+                 : end   ? integer(end->pixels)
+                         : "-"};
+      r.highlighted = t == step.triangle;
+      r.muted = skipped.has_value();
+      rows.push_back(r);
+    }
+    w.table({{"face"}, {"depth"}, {"rows"}, {"pixels"}}, rows);
+    w.gap(8);
+  }
+  if (trace.header().level == "triangle") {
+    w.paragraph(
+        "This trace holds no scanlines (level triangle), so the triangles are shown by "
+        "their outlines; trace at level scanline to see their pixels.",
+        TextStyle::body, palette::kMutedText);
+  } else {
+    w.line(fmt::format("Pixels written so far: {}", integer(state.writes())), TextStyle::body);
+    w.line(fmt::format("of them over a farther triangle's pixel: {}", integer(state.overwrites())),
+           TextStyle::body);
+  }
+  w.gap(8);
+  w.formula({"depth(T) = (z0 + z1 + z2) / 3", "draw in order of decreasing depth (stable sort)",
+             "each triangle: the edge-table scanline fill"});
+}
+
+}  // namespace scantrace::viz

@@ -1,0 +1,119 @@
+#include "viz/typography.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <opencv2/imgproc.hpp>
+
+namespace scantrace::viz {
+
+Typography::Typography(cv::Size frame)
+    // Wide or tall frames scale by their tighter side, so a text never outgrows its panel.
+    : unit_(std::min(frame.height / 720.0, frame.width / 1280.0)) {}
+
+int Typography::px(double design_pixels) const {
+  return std::max(1, static_cast<int>(std::lround(design_pixels * unit_)));
+}
+
+double Typography::scale(TextStyle style) const {
+  switch (style) {
+    case TextStyle::small:
+      return 0.42 * unit_;
+    case TextStyle::body:
+      return 0.48 * unit_;
+    case TextStyle::strong:
+      return 0.48 * unit_;
+    case TextStyle::heading:
+      return 0.6 * unit_;
+    case TextStyle::title:
+      return 0.9 * unit_;
+    case TextStyle::huge:
+      return 1.3 * unit_;
+  }
+  return 0.48 * unit_;
+}
+
+int Typography::thickness(TextStyle style) const {
+  // Strokes grow more slowly than the glyphs: a one-pixel stroke reads best up to 1080p, and a
+  // doubled one blurs small letters together (bold text is drawn twice, offset, instead).
+  const double base = style == TextStyle::title || style == TextStyle::huge ? 2.0 : 1.0;
+  return std::max(1, static_cast<int>(std::floor(base * unit_ + 0.3)));
+}
+
+bool Typography::bold(TextStyle style) {
+  return style == TextStyle::strong || style == TextStyle::heading;
+}
+
+int Typography::font(TextStyle style) const {
+  return style == TextStyle::small ? cv::FONT_HERSHEY_SIMPLEX : cv::FONT_HERSHEY_DUPLEX;
+}
+
+cv::Size Typography::measure(const std::string& text, TextStyle style) const {
+  int baseline = 0;
+  cv::Size s = cv::getTextSize(text, font(style), scale(style), thickness(style), &baseline);
+  if (bold(style)) s.width += std::max(1, px(0.8));
+  return s;
+}
+
+int Typography::box_height(TextStyle style) const {
+  int baseline = 0;
+  const int ascent =
+      cv::getTextSize("A", font(style), scale(style), thickness(style), &baseline).height;
+  return ascent + baseline;
+}
+
+int Typography::line_height(TextStyle style) const {
+  int baseline = 0;
+  const cv::Size s = cv::getTextSize("Ag", font(style), scale(style), thickness(style), &baseline);
+  return s.height + baseline + px(style == TextStyle::small ? 3 : 5);
+}
+
+int Typography::draw(cv::Mat& image, const std::string& text, cv::Point top_left, TextStyle style,
+                     const cv::Scalar& colour) const {
+  // Lines of one style share one ascent ("A"), so mixed texts on one line share a baseline.
+  int baseline = 0;
+  const int ascent =
+      cv::getTextSize("A", font(style), scale(style), thickness(style), &baseline).height;
+  const cv::Point origin(top_left.x, top_left.y + ascent);
+  cv::putText(image, text, origin, font(style), scale(style), colour, thickness(style),
+              cv::LINE_AA);
+  if (bold(style))
+    cv::putText(image, text, origin + cv::Point(std::max(1, px(0.8)), 0), font(style), scale(style),
+                colour, thickness(style), cv::LINE_AA);
+  return top_left.x + measure(text, style).width;
+}
+
+void Typography::draw_boxed(cv::Mat& image, const std::string& text, cv::Point top_left,
+                            TextStyle style, const cv::Scalar& colour, const cv::Scalar& box,
+                            std::optional<cv::Scalar> border) const {
+  const int m = px(3);
+  const cv::Rect r(top_left.x - m, top_left.y - m, width(text, style) + 2 * m,
+                   box_height(style) + 2 * m);
+  cv::rectangle(image, r, box, cv::FILLED);
+  cv::rectangle(image, r, border.value_or(colour), border ? px(2) : 1, cv::LINE_AA);
+  draw(image, text, top_left, style, colour);
+}
+
+std::vector<std::string> Typography::wrap(const std::string& text, TextStyle style,
+                                          int max_width) const {
+  std::vector<std::string> lines;
+  std::istringstream words(text);
+  std::string line;
+  for (std::string word; words >> word;) {
+    std::string candidate = line;
+    if (!candidate.empty()) candidate += ' ';
+    candidate += word;
+    if (!line.empty() && width(candidate, style) > max_width) {
+      lines.push_back(line);
+      line = word;
+    } else {
+      line = candidate;
+    }
+  }
+  if (!line.empty()) lines.push_back(line);
+  for (std::string& l : lines) std::replace(l.begin(), l.end(), '~', ' ');
+  return lines;
+}
+
+}  // namespace scantrace::viz

@@ -1,0 +1,51 @@
+#pragma once
+// Text on frames. Every size is given for a 1280x720 frame and scaled with the frame, so a
+// 1920x1080 video reads like the 720p one, only sharper. OpenCV's Hershey fonts are ASCII only:
+// texts use "x", "-" and "..." rather than typographic signs.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace scantrace::viz {
+
+enum class TextStyle { small, body, strong, heading, title, huge };
+
+class Typography {
+ public:
+  explicit Typography(cv::Size frame);
+
+  // Frame pixels per pixel of the 720p design.
+  double unit() const { return unit_; }
+  int px(double design_pixels) const;
+
+  cv::Size measure(const std::string& text, TextStyle style) const;  // width, ascent
+  // Height of a line of text from its top to the bottom of its descenders.
+  int box_height(TextStyle style) const;
+  int width(const std::string& text, TextStyle style) const { return measure(text, style).width; }
+  // Distance between the tops of two consecutive lines.
+  int line_height(TextStyle style) const;
+
+  // Draws `text` with its top-left corner at `top_left`; returns the x just after it.
+  int draw(cv::Mat& image, const std::string& text, cv::Point top_left, TextStyle style,
+           const cv::Scalar& colour) const;
+  // Draws `text` on a filled box with a margin, e.g. a label over the magnified canvas; the box
+  // has a thin border in the text colour, or a bold one in `border`.
+  void draw_boxed(cv::Mat& image, const std::string& text, cv::Point top_left, TextStyle style,
+                  const cv::Scalar& colour, const cv::Scalar& box,
+                  std::optional<cv::Scalar> border = std::nullopt) const;
+  // Splits `text` at spaces into lines no wider than `max_width`. A '~' is a space that does not
+  // break ("ceil(y_max)~-~1"); the lines returned have it replaced.
+  std::vector<std::string> wrap(const std::string& text, TextStyle style, int max_width) const;
+
+ private:
+  double scale(TextStyle style) const;
+  int thickness(TextStyle style) const;
+  int font(TextStyle style) const;
+  static bool bold(TextStyle style);
+
+  double unit_;
+};
+
+}  // namespace scantrace::viz

@@ -20,6 +20,10 @@
 #include "trace/event_tracer.hpp"
 #include "trace/recorder.hpp"
 
+namespace scantrace::bench {
+float render_untraced(const Scene& scene, const FillOptions& options);  // untraced_render.cpp
+}
+
 namespace {
 
 using namespace scantrace;
@@ -44,9 +48,12 @@ int main(int argc, char** argv) {
   std::string scene_file = SCANTRACE_SHARED_DATA "/hw1_2024.json", mode = "all";
   int repetitions = 41;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--scene")) scene_file = argv[i + 1];
-    else if (!std::strcmp(argv[i], "--repetitions")) repetitions = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--mode")) mode = argv[i + 1];
+    if (!std::strcmp(argv[i], "--scene"))
+      scene_file = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--repetitions"))
+      repetitions = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--mode"))
+      mode = argv[i + 1];
   }
   const bool course = std::filesystem::exists(scene_file);
   const Scene scene = course ? load_scene(scene_file) : demo_scene();
@@ -54,7 +61,7 @@ int main(int argc, char** argv) {
   volatile float sink = 0;
 
   if (mode == "untraced" || mode == "all") {
-    const double t = median_us(repetitions, [&] { sink = render(scene, options)(7, 7).r; });
+    const double t = median_us(repetitions, [&] { sink = bench::render_untraced(scene, options); });
     std::printf("untraced %.1f\n", t);
   }
   if (mode == "one-triangle" || mode == "all") {
@@ -71,6 +78,7 @@ int main(int argc, char** argv) {
     std::printf("one-triangle %.1f\n", t);
   }
   std::fprintf(stderr, "scene: %s (%zu faces), %d repetitions\n",
-               course ? scene_file.c_str() : "built-in demo scene", scene.faces.size(), repetitions);
+               course ? scene_file.c_str() : "built-in demo scene", scene.faces.size(),
+               repetitions);
   return 0;
 }

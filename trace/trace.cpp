@@ -39,22 +39,34 @@ Trace Trace::parse(std::istream& in, const std::string& name) {
     const std::string where = name + ":" + std::to_string(number) + ": ";
     if (line.size() > kMaxLineBytes) throw TraceError(where + "line too long to be a trace event");
     if (line.empty()) throw TraceError(where + "empty line (one JSON object per line expected)");
+    nlohmann::json j;
     try {
-      events.push_back(event_from_json(nlohmann::json::parse(line)));
+      j = nlohmann::json::parse(line);
     } catch (const nlohmann::json::parse_error& e) {
       throw TraceError(where + "not valid JSON (" + e.what() + ")");
-    } catch (const std::exception& e) {
-      throw TraceError(where + "malformed event: " + e.what());
     }
+    // The format and version are checked before anything else is decoded: a later version may
+    // change any other key, and "version 2 is not supported" is the message that helps then.
     if (number == 1) {
-      const Header* h = std::get_if<Header>(&events.front());
-      if (!h) throw TraceError(where + "the first line must be the header");
-      if (h->format != kFormatName)
-        throw TraceError(where + "format is \"" + h->format + "\", not a scantrace trace");
-      if (h->version != kFormatVersion)
-        throw TraceError(where + "trace format version " + std::to_string(h->version) +
+      auto text = [&](const char* key) {
+        return j.is_object() && j.contains(key) && j[key].is_string() ? j[key].get<std::string>()
+                                                                      : std::string();
+      };
+      if (text("type") != "header") throw TraceError(where + "the first line must be the header");
+      const std::string format = text("format");
+      if (format != kFormatName)
+        throw TraceError(where + "format is \"" + format + "\", not a scantrace trace");
+      const int version =
+          j.contains("version") && j["version"].is_number_integer() ? j["version"].get<int>() : 0;
+      if (version != kFormatVersion)
+        throw TraceError(where + "trace format version " + std::to_string(version) +
                          " is not supported (this build reads version " +
                          std::to_string(kFormatVersion) + ")");
+    }
+    try {
+      events.push_back(event_from_json(j));
+    } catch (const std::exception& e) {
+      throw TraceError(where + "malformed event: " + e.what());
     }
   }
   if (events.empty()) throw TraceError(name + ": empty file, not a trace");

@@ -38,6 +38,10 @@ TEST_CASE("malformed traces name the file, the line and the problem", "[trace][r
   std::string v2 = kHeader;
   v2.replace(v2.find("\"version\":1"), 11, "\"version\":2");
   CHECK_THROWS_WITH(parse(v2 + "\n"), Catch::Contains("version 2 is not supported"));
+  // A later version may change any other key: the version is what the message must name.
+  CHECK_THROWS_WITH(parse(R"({"type":"header","format":"scantrace-trace","version":2})"
+                          "\n"),
+                    Catch::Contains("t.jsonl:1: trace format version 2 is not supported"));
   std::string other = kHeader;
   other.replace(other.find("scantrace-trace"), 15, "something-else!");
   CHECK_THROWS_WITH(parse(other + "\n"), Catch::Contains("not a scantrace trace"));

@@ -7,6 +7,8 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include "cli/validators.hpp"
+
 #include "cli/stopwatch.hpp"
 #include "viz/progress.hpp"
 
@@ -43,24 +45,12 @@ viz::ReplayOptions ReplayFlags::options(const std::string& source) const {
 }
 
 void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) {
-  auto valid = [](auto parse) {
-    return CLI::Validator(
-        [parse](std::string& value) -> std::string {
-          try {
-            parse(value);
-            return {};
-          } catch (const std::exception& e) {
-            return e.what();
-          }
-        },
-        "");
-  };
   command
       .add_option("-o,--output", flags.output,
                   "OUT.mp4: an H.264 video (MPEG-4 where H.264 is missing)\n"
                   "OUT_DIR/: numbered PNG frames, one per step")
       ->required()
-      ->check(valid([](const std::string& v) { viz::output_kind(v); }));
+      ->check(parsed_by([](const std::string& v) { viz::output_kind(v); }));
   command.add_option("--fps", flags.fps, "video frames per second")
       ->check(CLI::Range(0.1, 240.0))
       ->capture_default_str();
@@ -73,11 +63,11 @@ void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) 
   command
       .add_option(size_is_free ? "--size,--video-size" : "--video-size", flags.size,
                   "frame size WIDTHxHEIGHT, even (e.g. 1920x1080)")
-      ->check(valid(parse_video_size))
+      ->check(parsed_by(parse_video_size))
       ->capture_default_str();
   command
       .add_option("--steps", flags.steps, "render only steps A..B (from 1; \"5:\", \":20\", \"7\")")
-      ->check(valid([](const std::string& v) { viz::StepRange::parse(v); }));
+      ->check(parsed_by([](const std::string& v) { viz::StepRange::parse(v); }));
   command
       .add_option("--rows-per-step", flags.rows_per_step,
                   "scanlines per step (0: automatic, at most 40 scanline\n"

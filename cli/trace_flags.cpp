@@ -8,6 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/validators.hpp"
+
 #include "io/scene_json.hpp"
 
 namespace scantrace::cli {
@@ -104,34 +106,21 @@ std::string TraceFlags::input_name() const {
 }
 
 void add_trace_flags(CLI::App& command, TraceFlags& flags) {
-  // Validators run while parsing, so a malformed value is a usage error (exit status 2).
-  auto valid = [](auto parse) {
-    return CLI::Validator(
-        [parse](std::string& value) -> std::string {
-          try {
-            parse(value);
-            return {};
-          } catch (const std::exception& e) {
-            return e.what();
-          }
-        },
-        "");
-  };
   auto* scene =
       command.add_option("SCENE", flags.scene, "scene file to trace (JSON, as for render)");
   auto* triangle = command
                        .add_option("--triangle", flags.triangle,
                                    "trace one triangle instead of a scene, e.g.\n"
                                    "\"20,20 250,80 300,400\" (x = column, y = row down)")
-                       ->check(valid(parse_triangle));
+                       ->check(parsed_by(parse_triangle));
   scene->excludes(triangle);
   command
       .add_option("--colors", flags.colors, "vertex colours of --triangle, \"r,g,b r,g,b r,g,b\"")
-      ->check(valid(parse_colors))
+      ->check(parsed_by(parse_colors))
       ->needs(triangle)
       ->capture_default_str();
   command.add_option("--size", flags.size, "canvas of --triangle, WIDTHxHEIGHT")
-      ->check(valid(parse_size))
+      ->check(parsed_by(parse_size))
       ->needs(triangle)
       ->capture_default_str();
   command
@@ -144,10 +133,10 @@ void add_trace_flags(CLI::App& command, TraceFlags& flags) {
   command
       .add_option("--triangles", flags.triangles,
                   "trace only these faces, e.g. 3,17,40-45 (default: all)")
-      ->check(valid([](const std::string& v) { trace::IndexSet::parse(v); }));
+      ->check(parsed_by([](const std::string& v) { trace::IndexSet::parse(v); }));
   command
       .add_option("--rows", flags.rows, "trace only rows A…B, inclusive, e.g. 100:120, 100: or :50")
-      ->check(valid([](const std::string& v) { trace::RowRange::parse(v); }));
+      ->check(parsed_by([](const std::string& v) { trace::RowRange::parse(v); }));
   command
       .add_option("--max-events", flags.max_events,
                   "stop after N events; the footer then says truncated")

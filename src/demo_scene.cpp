@@ -1,5 +1,7 @@
 #include "demo_scene.hpp"
 
+#include "splitmix64.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -7,21 +9,6 @@
 
 namespace scantrace {
 namespace {
-
-// splitmix64: a tiny generator with a fixed definition, so the scene is the same on every
-// platform (std::uniform_real_distribution is not specified bit for bit).
-struct SplitMix64 {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  double uniform(double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53;
-  }
-};
 
 Color hue(double h) {  // h in [0, 1): fully saturated colour wheel
   const double k = h * 6.0;

@@ -1,5 +1,5 @@
 #pragma once
-// The stress generator's random numbers: splitmix64 with its own conversions. The std
+// The stress generator's random numbers: splitmix64 (src/splitmix64.hpp) and exact laws. The std
 // distributions are implementation-defined, and libm's exp/log/sin/cos are not required to round
 // the same way everywhere, so nothing here uses them: only integer arithmetic, exact power-of-two
 // scaling and sqrt (correctly rounded by IEEE 754). A seed therefore names the same triangles on
@@ -7,27 +7,14 @@
 #include <cmath>
 #include <cstdint>
 
+#include "src/splitmix64.hpp"
+
 namespace scantrace::stress {
 
-class Rng {
+class Rng : public SplitMix64 {
  public:
-  explicit Rng(std::uint64_t seed) : state_(seed) {}
+  using SplitMix64::SplitMix64;
 
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-
-  // Uniform in [0, 1): the top 53 bits as a binary fraction (exact).
-  double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
-  // Uniform in [lo, hi]; the modulo bias (< 2^-40 for the ranges used here) is irrelevant.
-  std::int64_t integer(std::int64_t lo, std::int64_t hi) {
-    return lo + static_cast<std::int64_t>(next() % (static_cast<std::uint64_t>(hi - lo) + 1));
-  }
-  bool coin() { return (next() >> 63) != 0; }
   // True with probability num/den.
   bool chance(int num, int den) { return integer(0, den - 1) < num; }
 
@@ -54,9 +41,6 @@ class Rng {
       }
     }
   }
-
- private:
-  std::uint64_t state_;
 };
 
 // The generator of case `index` of family number `family` under `seed`: every case has its own

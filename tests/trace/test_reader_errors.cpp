@@ -21,7 +21,7 @@ Trace parse(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("a well-formed trace parses; without its footer it is incomplete", "[trace][reader]") {
+TEST_CASE("a well-formed trace parses, and without its footer it is incomplete", "[trace][reader]") {
   const Trace t = parse(kHeader + "\n" + kSkipped + "\n" + kFooter + "\n");
   CHECK(t.complete());
   CHECK(t.skipped(0)->reason == "degenerate");

@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
   app.footer(
       "Run 'scantrace SUBCOMMAND --help' for the options of a subcommand.\n"
       "Exit status: 0 success, 1 bad input data (one line on stderr naming the\n"
-      "file, the element and the problem) or a failed write, 2 usage error.");
+      "file, the element and the problem), a failed write, or a failure of the\n"
+      "exact method found by 'stress', 2 usage error.");
 
   const std::vector<scantrace::cli::Command> commands{
       scantrace::cli::add_demo_command(app),    scantrace::cli::add_render_command(app),

@@ -343,7 +343,11 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
       return skip(SkipReason::offscreen);
   }
 
-  const Color flat = detail::mean_color(pts, in.colors, s.order);
+  // The flat colour is needed to fill flat, and to narrate (triangle_begin reports it); an
+  // untraced Gouraud fill never reads it, so it does not pay for it.
+  const Color flat = opt.shading == Shading::flat || traced
+                         ? detail::mean_color(pts, in.colors, s.order)
+                         : Color{};
   if constexpr (kTriangleLevel)
     if (traced)
       tracer.triangle_begin(

@@ -23,16 +23,6 @@ std::string color_text(Color c) {
   return buf;
 }
 
-std::string points_text(const Triangle& t) {
-  std::string s;
-  char buf[80];
-  for (const Vec2& p : t.v) {
-    std::snprintf(buf, sizeof buf, "%s%.17g,%.17g", s.empty() ? "" : " ", p.x, p.y);
-    s += buf;
-  }
-  return s;
-}
-
 bool finite(Color c) {
   return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
 }
@@ -51,6 +41,16 @@ Window compared_window(const ReferenceWindow& ref, const StressCanvas& canvas) {
 }
 
 }  // namespace
+
+std::string points_text(const Triangle& t) {
+  std::string s;
+  char buf[80];
+  for (const Vec2& p : t.v) {
+    std::snprintf(buf, sizeof buf, "%s%.17g,%.17g", s.empty() ? "" : " ", p.x, p.y);
+    s += buf;
+  }
+  return s;
+}
 
 Triangle permuted(const Triangle& t, int order) {
   Triangle p;

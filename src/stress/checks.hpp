@@ -3,6 +3,7 @@
 // each image is compared with the reference pixel by pixel (coverage, colour, NaN/Inf) and with the
 // image of the first order (bit for bit, as the library's float32 RgbImage would store it).
 #include <array>
+#include <string>
 #include <vector>
 
 #include "src/stress/rasterizer.hpp"
@@ -12,6 +13,10 @@
 #include "src/stress/stress_case.hpp"
 
 namespace scantrace::stress {
+
+// The vertices as "x0,y0 x1,y1 x2,y2" with every digit a double holds (%.17g), so a printed
+// case reproduces bit for bit (the form `scantrace trace --triangle` reads).
+std::string points_text(const Triangle& t);
 
 // The 6 orders in which three vertices can be listed; kOrders[0] is the order as generated.
 inline constexpr std::array<std::array<int, 3>, 6> kOrders{

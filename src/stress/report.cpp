@@ -19,14 +19,12 @@ std::string format(const char* f, double v) {
   return buf;
 }
 
+// Appended rather than "\"" + …: GCC 12 raises a false -Wrestrict alarm on literal + string&&.
 std::string quoted_points(const Triangle& t) {
-  std::string s;
-  char buf[80];
-  for (const Vec2& p : t.v) {
-    std::snprintf(buf, sizeof buf, "%s%.17g,%.17g", s.empty() ? "" : " ", p.x, p.y);
-    s += buf;
-  }
-  return "\"" + s + "\"";
+  std::string s = "\"";
+  s += points_text(t);
+  s += '"';
+  return s;
 }
 
 std::string quoted_colors(const Triangle& t) {

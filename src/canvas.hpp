@@ -25,13 +25,17 @@ class ImageCanvas {
   int width() const { return image_.width(); }
   int height() const { return image_.height(); }
   void fill_span(int y, int x_begin, int x_end, Color c) {
+    // A flat polygon fills every row with the same colour: convert it once, not once per row.
+    if (!(c == last_color_)) last_color_ = c, last_pixel_ = P::from(c);
     P* row = image_.row(y);
-    std::fill(row + x_begin, row + x_end, P::from(c));
+    std::fill(row + x_begin, row + x_end, last_pixel_);
   }
   void set(int x, int y, Color c) { image_.row(y)[x] = P::from(c); }
 
  private:
   Image<P>& image_;
+  Color last_color_{-1, -1, -1};  // never a valid colour, so the first span converts
+  P last_pixel_ = P::from(last_color_);
 };
 
 }  // namespace scantrace

@@ -46,13 +46,13 @@ struct ExactStepper {
     step_q = floor_div(inc, den);
     step_r = inc - step_q * den;
   }
+  // Branch-free: whether the remainder carries depends on the slope's fraction, so for most
+  // edges it alternates irregularly, and a mispredicted branch costs more than a whole step.
   void advance() {
-    q += step_q;
     r += step_r;
-    if (r >= den) {
-      ++q;
-      r -= den;
-    }
+    const bool carry = r >= den;
+    q += step_q + carry;
+    r -= carry ? den : 0;
   }
   i64 ceil_x() const { return q + (r != 0); }
   i64 floor_x() const { return q; }

@@ -7,19 +7,20 @@
 namespace scantrace {
 
 void EdgeTable::build(std::span<const FixedPoint> points, const SubpixelGrid& grid, FillRule rule) {
-  edges_.clear();
+  const int n = static_cast<int>(points.size());
+  edges_.resize(n);
   horizontal_.clear();
   first_row_ = std::numeric_limits<i64>::max();
   last_row_ = std::numeric_limits<i64>::min();
-  const int n = static_cast<int>(points.size());
+  int count = 0;
   for (int i = 0; i < n; ++i) {
-    const int j = (i + 1) % n;
+    const int j = i + 1 == n ? 0 : i + 1;
     const FixedPoint a = points[i], b = points[j];
     if (a.y == b.y) {
       horizontal_.push_back({i, i, j, a.y});
       continue;
     }
-    Edge e;
+    Edge& e = edges_[count++];
     e.id = i;
     e.top = a.y < b.y ? i : j;
     e.bottom = a.y < b.y ? j : i;
@@ -35,13 +36,25 @@ void EdgeTable::build(std::span<const FixedPoint> points, const SubpixelGrid& gr
       first_row_ = std::min(first_row_, e.first_row);
       last_row_ = std::max(last_row_, e.last_row);
     }
-    edges_.push_back(e);
   }
-  // Insertion sort: a polygon has few edges, most already in order, and std::sort's set-up costs
-  // more than sorting three.
-  for (std::size_t i = 1; i < edges_.size(); ++i)
-    for (std::size_t j = i; j > 0 && edges_[j].first_row < edges_[j - 1].first_row; --j)
-      std::swap(edges_[j], edges_[j - 1]);
+  edges_.resize(count);
+  // Sorted by (first_row, id). Edges are listed in id order, so a stable sort by first_row is
+  // enough; for a triangle, three compare-and-swap steps. Which way each goes depends on the
+  // triangle, i.e. is unpredictable, so they select rather than branch (the swap is of whole
+  // edges, but a triangle's edge table is only three of them).
+  const auto order = [](Edge& a, Edge& b) {
+    const bool swap = b.first_row < a.first_row;
+    const Edge lo = swap ? b : a, hi = swap ? a : b;
+    a = lo, b = hi;
+  };
+  if (count == 3) {
+    order(edges_[1], edges_[2]);
+    order(edges_[0], edges_[1]);
+    order(edges_[1], edges_[2]);
+  } else {
+    std::stable_sort(edges_.begin(), edges_.end(),
+                     [](const Edge& a, const Edge& b) { return a.first_row < b.first_row; });
+  }
   if (first_row_ > last_row_) first_row_ = 0, last_row_ = -1;
 }
 

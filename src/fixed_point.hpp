@@ -64,9 +64,12 @@ class SubpixelGrid {
 
   // floor(v + 1/2) without evaluating v + 1/2, which rounds the largest double below 0.5 up to
   // 1.0. v·2^bits is exact (a power-of-two scale) and so is v − floor(v), so the tie test is exact.
+  // floor is taken as truncation corrected for negative non-integers: |v| < 2^43 here, so the
+  // conversions are exact, and baseline x86-64 has no floor instruction (std::floor is a call).
   static i64 round_half_up(double v) {
-    const double f = std::floor(v);
-    return static_cast<i64>(f) + (v - f >= 0.5 ? 1 : 0);
+    i64 f = static_cast<i64>(v);
+    if (static_cast<double>(f) > v) --f;
+    return f + (v - static_cast<double>(f) >= 0.5 ? 1 : 0);
   }
 
   Vec2 to_pixels(FixedPoint p) const {

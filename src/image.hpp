@@ -2,9 +2,15 @@
 // A row-major raster indexed img(x, y) = img[y][x]. The pixel type is a template parameter so that
 // the same fill writes the course's float canvas (Rgb32f, colours in [0, 1]) or a coverage-count
 // grid in the tests; a pixel type provides `static P from(Color)`.
+#include <algorithm>
 #include <cassert>
 #include <cstddef>
-#include <vector>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <span>
+#include <type_traits>
 
 #include "color.hpp"
 
@@ -20,14 +26,49 @@ struct Rgb32f {
   friend constexpr bool operator==(Rgb32f, Rgb32f) = default;
 };
 
+// round(255·c) clamped to [0, 255] (design.md §2); NaN becomes 0. For 0 < v < 255 the truncation
+// i = (int)v is floor(v) and v − i is exact, so the tie test is exact too: no libm call, which
+// matters because a Gouraud fill converts every pixel it writes.
+inline std::uint8_t to_byte(double c) {
+  const double v = 255.0 * c;
+  if (!(v > 0.0)) return 0;
+  if (v >= 255.0) return 255;
+  const int i = static_cast<int>(v);
+  return static_cast<std::uint8_t>(i + (v - i >= 0.5 ? 1 : 0));
+}
+
+// An 8-bit pixel stored blue, green, red: the layout of OpenCV's CV_8UC3 and of the video and
+// image writers, so an Image<Bgr8> is handed to them without a conversion pass. Only the memory
+// order differs; the fill still speaks RGB Color.
+struct Bgr8 {
+  std::uint8_t b = 0, g = 0, r = 0;
+  static Bgr8 from(Color c) { return {to_byte(c.b), to_byte(c.g), to_byte(c.r)}; }
+  Color color() const { return {r / 255.0, g / 255.0, b / 255.0}; }
+  friend constexpr bool operator==(Bgr8, Bgr8) = default;
+};
+static_assert(sizeof(Bgr8) == 3);
+
 template <class P>
 class Image {
+  static_assert(std::is_trivially_copyable_v<P>);
+
  public:
   using Pixel = P;
 
   Image() = default;
   Image(int width, int height, P fill = P{})
-      : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * height, fill) {}
+      : width_(width),
+        height_(height),
+        size_(static_cast<std::size_t>(width) * height),
+        pixels_(allocate(size_)) {
+    fill_all(fill);
+  }
+  Image(const Image& o) : Image(o.width_, o.height_, P{}) {
+    if (size_) std::memcpy(pixels_.get(), o.pixels_.get(), size_ * sizeof(P));
+  }
+  Image(Image&&) noexcept = default;
+  Image& operator=(const Image& o) { return *this = Image(o); }
+  Image& operator=(Image&&) noexcept = default;
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -40,17 +81,45 @@ class Image {
     assert(x >= 0 && x < width_ && y >= 0 && y < height_);
     return pixels_[static_cast<std::size_t>(y) * width_ + x];
   }
-  P* row(int y) { return pixels_.data() + static_cast<std::size_t>(y) * width_; }
-  const P* row(int y) const { return pixels_.data() + static_cast<std::size_t>(y) * width_; }
-  const std::vector<P>& pixels() const { return pixels_; }
+  P* row(int y) { return pixels_.get() + static_cast<std::size_t>(y) * width_; }
+  const P* row(int y) const { return pixels_.get() + static_cast<std::size_t>(y) * width_; }
+  std::span<const P> pixels() const { return {pixels_.get(), size_}; }
 
-  friend bool operator==(const Image&, const Image&) = default;
+  // Sets every pixel to `value`. Clearing is part of every render, and a pixel of 3 bytes or 12
+  // does not map onto memset: the first pixel is written and then copied onto the rest in doubling
+  // blocks, so the clear runs at memcpy speed whatever the pixel's size.
+  void fill_all(P value) {
+    if (size_ == 0) return;
+    pixels_[0] = value;
+    for (std::size_t done = 1; done < size_;) {
+      const std::size_t n = std::min(done, size_ - done);
+      std::memcpy(pixels_.get() + done, pixels_.get(), n * sizeof(P));
+      done += n;
+    }
+  }
+
+  friend bool operator==(const Image& a, const Image& b) {
+    return a.width_ == b.width_ && a.height_ == b.height_ &&
+           std::equal(a.pixels_.get(), a.pixels_.get() + a.size_, b.pixels_.get());
+  }
 
  private:
+  // Raw storage: the clear writes every pixel anyway, so constructing them first would be a
+  // second pass over the image. Pixel types are aggregates of numbers (implicit-lifetime types),
+  // which live in such storage once written.
+  struct Release {
+    void operator()(P* p) const { ::operator delete(p); }
+  };
+  static std::unique_ptr<P[], Release> allocate(std::size_t n) {
+    return std::unique_ptr<P[], Release>(static_cast<P*>(::operator new(n * sizeof(P))));
+  }
+
   int width_ = 0, height_ = 0;
-  std::vector<P> pixels_;
+  std::size_t size_ = 0;
+  std::unique_ptr<P[], Release> pixels_;
 };
 
 using RgbImage = Image<Rgb32f>;
+using Bgr8Image = Image<Bgr8>;
 
 }  // namespace scantrace

@@ -39,21 +39,22 @@ RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt, T
   return stats;
 }
 
-// The scene on a fresh canvas of its size and background colour.
-template <FillTracer Tracer = NoTracer>
-RgbImage render(const Scene& scene, const FillOptions& opt, Tracer& tracer,
+// The scene on a fresh canvas of its size and background colour, in pixels of type P: Rgb32f is
+// the course's float canvas, Bgr8 the 8-bit image that files, videos and OpenCV use.
+template <class P = Rgb32f, FillTracer Tracer = NoTracer>
+Image<P> render(const Scene& scene, const FillOptions& opt, Tracer& tracer,
                 RenderStats* stats = nullptr) {
-  RgbImage image(scene.width, scene.height, Rgb32f::from(scene.background));
-  ImageCanvas<Rgb32f> canvas(image);
+  Image<P> image(scene.width, scene.height, P::from(scene.background));
+  ImageCanvas<P> canvas(image);
   const RenderStats s = render_into(canvas, scene, opt, tracer);
   if (stats) *stats = s;
   return image;
 }
 
-inline RgbImage render(const Scene& scene, const FillOptions& opt = {},
-                       RenderStats* stats = nullptr) {
+template <class P = Rgb32f>
+Image<P> render(const Scene& scene, const FillOptions& opt = {}, RenderStats* stats = nullptr) {
   NoTracer none;
-  return render(scene, opt, none, stats);
+  return render<P>(scene, opt, none, stats);
 }
 
 }  // namespace scantrace

@@ -81,16 +81,29 @@ namespace detail {
 inline i128 twice_area(std::span<const FixedPoint> p) {
   i128 a = 0;
   for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-    const FixedPoint u = p[i], v = p[(i + 1) % n];
+    const FixedPoint u = p[i], v = p[i + 1 == n ? 0 : i + 1];
     a += static_cast<i128>(u.x) * v.y - static_cast<i128>(v.x) * u.y;
   }
   return a;
 }
 
-// The mean of the vertex colours, summed in a canonical vertex order (by snapped y, then x) so that
-// listing the same polygon's vertices in another order cannot change the last bit of the result.
+// The mean of the vertex colours, summed in a canonical order so that listing the same polygon's
+// vertices in another order cannot change the last bit of the result.
 inline Color mean_color(std::span<const FixedPoint> p, std::span<const Color> colors,
                         std::vector<int>& order) {
+  if (p.size() == 3) {
+    // A triangle: each channel's three values are summed smallest first, which is as canonical as
+    // a vertex order and takes six min/max instructions instead of a sort whose branches the
+    // processor cannot predict.
+    const auto sum3 = [](double a, double b, double c) {
+      const double lo = std::min(a, b), hi = std::max(a, b);
+      return (std::min(lo, c) + std::max(lo, std::min(hi, c))) + std::max(hi, c);
+    };
+    return Color{sum3(colors[0].r, colors[1].r, colors[2].r),
+                 sum3(colors[0].g, colors[1].g, colors[2].g),
+                 sum3(colors[0].b, colors[1].b, colors[2].b)} *
+           (1.0 / 3.0);
+  }
   // Insertion sort: polygons are small, and std::sort's set-up costs more than three vertices.
   const auto before = [&](int a, int b) {
     return p[a].y != p[b].y ? p[a].y < p[b].y : p[a].x != p[b].x ? p[a].x < p[b].x : a < b;
@@ -160,6 +173,13 @@ struct Setup {
 };
 
 // Step 3 of the fill for one stepper: the scanline sweep over the canvas rows.
+//
+// The active list changes only on the rows where an edge starts or ends. The sweep is therefore a
+// sequence of runs: at the first row of a run the list is updated (edges retire, edges enter in x
+// order), and every row of the run is then the same few steps, two ceilings, one span and two
+// increments. Within a run the outermost edges' steppers live in local variables: the canvas is
+// written through byte pointers, which may alias anything, so steppers kept in the list would be
+// reloaded and stored around every span.
 template <class Stepper, Canvas C, FillTracer Tracer>
 FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, FillScratch& s,
                  Tracer& tracer, const Setup& setup) {
@@ -177,56 +197,29 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
   std::size_t next = 0;
   FillResult result;
 
-  for (i64 y = y_first; y <= y_last; ++y) {
-    [[maybe_unused]] bool trace_row = false;
-    if constexpr (kScanlineLevel) {
-      trace_row = setup.traced && tracer.wants_scanline(in.triangle, y);
-      s.entered.clear();
-      s.retired.clear();
-    }
-
-    // Retire the edges whose last row is behind us.
-    std::erase_if(active, [&](const ActiveEdge<Stepper>& a) {
-      if (a.edge.last_row >= y) return false;
-      if constexpr (kScanlineLevel)
-        if (trace_row) s.retired.push_back(a.edge.id);
-      return true;
-    });
-    // Let the edges that start by this row enter, in x order. An edge whose rows all lie above
-    // the canvas (or that crosses no scanline) is passed over without being stepped.
-    for (; next < edges.size() && edges[next].first_row <= y; ++next) {
-      if (edges[next].last_row < y) continue;
-      ActiveEdge<Stepper> a{edges[next], {}};
-      a.at.start(a.edge, y, grid, in.colors);
-      auto at = std::find_if(active.begin(), active.end(),
-                             [&](const ActiveEdge<Stepper>& b) { return before_on_row(a, b); });
-      active.insert(at, a);
-      if constexpr (kScanlineLevel)
-        if (trace_row) s.entered.push_back(a.edge.id);
-    }
+  // One row with `left` and `right` as the outermost active edges (and at `l`, `r`).
+  const auto fill_row = [&](i64 y, const Stepper& l, const Stepper& r, const Edge* left,
+                            const Edge* right, bool trace_row) {
     ++result.rows;
-
     // A convex polygon meets a scanline in one interval: from the leftmost to the rightmost active
     // point. (Under the top-left rule exactly two edges are active; the closed rule can add the
     // two edges meeting at a vertex that lies exactly on the row.)
-    const ActiveEdge<Stepper>* left = active.size() >= 2 ? &active.front() : nullptr;
-    const ActiveEdge<Stepper>* right = active.size() >= 2 ? &active.back() : nullptr;
     i64 x_begin = 0, x_end = 0;
     if (left) {
-      x_begin = std::max<i64>(left->at.ceil_x(), 0);
+      x_begin = std::max<i64>(l.ceil_x(), 0);
       // Half-open span [ceil(xl), ceil(xr)): a centre exactly on the right edge belongs to the
       // neighbour on the right. The closed rule includes it: [ceil(xl), floor(xr)].
-      x_end = std::min<i64>(closed ? right->at.floor_x() + 1 : right->at.ceil_x(), width);
+      x_end = std::min<i64>(closed ? r.floor_x() + 1 : r.ceil_x(), width);
     }
     const bool has_span = x_begin < x_end;
     Color c_left = setup.flat, c_right = setup.flat;
     double x_left = 0, x_right = 0;
     if (left && (gouraud || trace_row)) {
-      x_left = left->at.x();
-      x_right = right->at.x();
+      x_left = l.x();
+      x_right = r.x();
       if (gouraud) {
-        c_left = left->at.color(left->edge, y, in.colors, grid);
-        c_right = right->at.color(right->edge, y, in.colors, grid);
+        c_left = l.color(*left, y, in.colors, grid);
+        c_right = r.color(*right, y, in.colors, grid);
       }
     }
 
@@ -288,8 +281,66 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
         tracer.scanline(step);
       }
     }
+  };
 
-    for (ActiveEdge<Stepper>& a : active) a.at.advance();
+  for (i64 y = y_first; y <= y_last;) {
+    [[maybe_unused]] bool trace_row = false;
+    if constexpr (kScanlineLevel) {
+      trace_row = setup.traced && tracer.wants_scanline(in.triangle, y);
+      s.entered.clear();
+      s.retired.clear();
+    }
+    // Retire the edges whose last row is behind us (keeping the others in order).
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < active.size(); ++i) {
+      if (active[i].edge.last_row >= y) {
+        if (kept != i) active[kept] = active[i];
+        ++kept;
+      } else if constexpr (kScanlineLevel) {
+        if (trace_row) s.retired.push_back(active[i].edge.id);
+      }
+    }
+    active.resize(kept);
+    // Let the edges that start by this row enter, in x order (an insertion step: the list holds
+    // two or three edges). An edge whose rows all lie above the canvas, or that crosses no
+    // scanline, is passed over without being stepped.
+    for (; next < edges.size() && edges[next].first_row <= y; ++next) {
+      if (edges[next].last_row < y) continue;
+      active.push_back({edges[next], {}});
+      active.back().at.start(edges[next], y, grid, in.colors);
+      for (std::size_t k = active.size() - 1; k > 0 && before_on_row(active[k], active[k - 1]); --k)
+        std::swap(active[k], active[k - 1]);
+      if constexpr (kScanlineLevel)
+        if (trace_row) s.entered.push_back(edges[next].id);
+    }
+    i64 run_last = next < edges.size() ? edges[next].first_row - 1 : y_last;
+    for (const ActiveEdge<Stepper>& a : active) run_last = std::min(run_last, a.edge.last_row);
+    run_last = std::min(run_last, y_last);
+
+    // The run y … run_last.
+    const std::size_t n_active = active.size();
+    const Edge* left = n_active >= 2 ? &active.front().edge : nullptr;
+    const Edge* right = n_active >= 2 ? &active.back().edge : nullptr;
+    Stepper l = n_active >= 2 ? active.front().at : Stepper{};
+    Stepper r = n_active >= 2 ? active.back().at : Stepper{};
+    for (;; ++y) {
+      if constexpr (kScanlineLevel) {
+        if (trace_row && n_active >= 2) active.front().at = l, active.back().at = r;
+      }
+      fill_row(y, l, r, left, right, trace_row);
+      l.advance();
+      r.advance();
+      for (std::size_t i = n_active >= 2 ? 1 : 0; i + 1 < n_active; ++i) active[i].at.advance();
+      if (n_active == 1) active[0].at.advance();
+      if (y == run_last) break;
+      if constexpr (kScanlineLevel) {
+        trace_row = setup.traced && tracer.wants_scanline(in.triangle, y + 1);
+        s.entered.clear();
+        s.retired.clear();
+      }
+    }
+    if (n_active >= 2) active.front().at = l, active.back().at = r;
+    ++y;
   }
   return result;
 }

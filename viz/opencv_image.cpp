@@ -5,13 +5,6 @@
 
 namespace scantrace {
 
-std::uint8_t to_byte(float c) {
-  const double v = 255.0 * static_cast<double>(c);
-  if (!(v > 0.0)) return 0;  // also catches NaN
-  if (v >= 255.0) return 255;
-  return static_cast<std::uint8_t>(std::lround(v));
-}
-
 cv::Mat to_bgr8(const RgbImage& image) {
   cv::Mat bgr(image.height(), image.width(), CV_8UC3);
   for (int y = 0; y < image.height(); ++y) {

@@ -9,9 +9,6 @@
 
 namespace scantrace {
 
-// round(255·c) clamped to [0, 255]; NaN becomes 0.
-std::uint8_t to_byte(float c);
-
 // A CV_8UC3 matrix in BGR order, the layout cv::imwrite and cv::VideoWriter expect.
 cv::Mat to_bgr8(const RgbImage& image);
 

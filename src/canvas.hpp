@@ -17,25 +17,40 @@ concept Canvas = requires(C& c, int x, int y, Color col) {
   c.set(x, y, col);           // one pixel
 };
 
+// A canvas whose rows are plain pixel arrays. The fill then converts a flat colour once per
+// polygon, not once per span, and writes pixels through a row pointer held in a register.
+template <class C>
+concept DirectCanvas = Canvas<C> && requires(C& c, int y, Color col) {
+  typename C::Pixel;
+  { C::convert(col) } -> std::same_as<typename C::Pixel>;
+  { c.row(y) } -> std::same_as<typename C::Pixel*>;
+};
+
 // Adapts an Image<P> whose pixel type converts from Color (P::from).
 template <class P>
 class ImageCanvas {
  public:
+  using Pixel = P;
+
   explicit ImageCanvas(Image<P>& image) : image_(image) {}
   int width() const { return image_.width(); }
   int height() const { return image_.height(); }
   void fill_span(int y, int x_begin, int x_end, Color c) {
-    // A flat polygon fills every row with the same colour: convert it once, not once per row.
-    if (!(c == last_color_)) last_color_ = c, last_pixel_ = P::from(c);
-    P* row = image_.row(y);
-    std::fill(row + x_begin, row + x_end, last_pixel_);
+    fill_pixels(row(y) + x_begin, row(y) + x_end, convert(c));
   }
-  void set(int x, int y, Color c) { image_.row(y)[x] = P::from(c); }
+  void set(int x, int y, Color c) { row(y)[x] = convert(c); }
+
+  static P convert(Color c) { return P::from(c); }
+  P* row(int y) { return image_.row(y); }
+
+  // The value is a local copy on purpose: std::fill reads it through a reference, and with 8-bit
+  // pixels every byte stored may alias it, so it would be reloaded for every pixel.
+  static void fill_pixels(P* first, P* last, P value) {
+    for (; first != last; ++first) *first = value;
+  }
 
  private:
   Image<P>& image_;
-  Color last_color_{-1, -1, -1};  // never a valid colour, so the first span converts
-  P last_pixel_ = P::from(last_color_);
 };
 
 }  // namespace scantrace

@@ -51,7 +51,9 @@ void EdgeTable::build(std::span<const FixedPoint> points, const SubpixelGrid& gr
     order(edges_[1], edges_[2]);
     order(edges_[0], edges_[1]);
     order(edges_[1], edges_[2]);
-  } else {
+  } else if (count == 2) {
+    order(edges_[0], edges_[1]);
+  } else if (count > 3) {
     std::stable_sort(edges_.begin(), edges_.end(),
                      [](const Edge& a, const Edge& b) { return a.first_row < b.first_row; });
   }

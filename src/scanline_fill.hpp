@@ -195,93 +195,13 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
   std::vector<ActiveEdge<Stepper>>& active = s.active<Stepper>();
   active.clear();
   std::size_t next = 0;
-  FillResult result;
-
-  // One row with `left` and `right` as the outermost active edges (and at `l`, `r`).
-  const auto fill_row = [&](i64 y, const Stepper& l, const Stepper& r, const Edge* left,
-                            const Edge* right, bool trace_row) {
-    ++result.rows;
-    // A convex polygon meets a scanline in one interval: from the leftmost to the rightmost active
-    // point. (Under the top-left rule exactly two edges are active; the closed rule can add the
-    // two edges meeting at a vertex that lies exactly on the row.)
-    i64 x_begin = 0, x_end = 0;
-    if (left) {
-      x_begin = std::max<i64>(l.ceil_x(), 0);
-      // Half-open span [ceil(xl), ceil(xr)): a centre exactly on the right edge belongs to the
-      // neighbour on the right. The closed rule includes it: [ceil(xl), floor(xr)].
-      x_end = std::min<i64>(closed ? r.floor_x() + 1 : r.ceil_x(), width);
-    }
-    const bool has_span = x_begin < x_end;
-    Color c_left = setup.flat, c_right = setup.flat;
-    double x_left = 0, x_right = 0;
-    if (left && (gouraud || trace_row)) {
-      x_left = l.x();
-      x_right = r.x();
-      if (gouraud) {
-        c_left = l.color(*left, y, in.colors, grid);
-        c_right = r.color(*right, y, in.colors, grid);
-      }
-    }
-
-    [[maybe_unused]] Color span_first = setup.flat, span_last = setup.flat;
-    if (has_span) {
-      const int yi = static_cast<int>(y), xb = static_cast<int>(x_begin),
-                xe = static_cast<int>(x_end);
-      [[maybe_unused]] bool trace_pixels = false;
-      if constexpr (kPixelLevel) trace_pixels = trace_row && tracer.wants_pixels(in.triangle, y);
-      [[maybe_unused]] auto weight = [&](int x) {
-        return x_right > x_left ? (x - x_left) / (x_right - x_left) : 0.0;
-      };
-      if (!gouraud) {
-        canvas.fill_span(yi, xb, xe, setup.flat);
-        if constexpr (kPixelLevel)
-          if (trace_pixels)
-            for (int x = xb; x < xe; ++x) tracer.pixel(in.triangle, x, y, setup.flat, weight(x));
-      } else {
-        SpanShader<Stepper> shade(c_left, c_right, x_left, x_right, x_begin);
-        if constexpr (kScanlineLevel)
-          if (trace_row) span_first = shade.color();
-        for (int x = xb; x < xe; ++x) {
-          const Color c = shade.color();
-          canvas.set(x, yi, c);
-          if constexpr (kPixelLevel)
-            if (trace_pixels) tracer.pixel(in.triangle, x, y, c, weight(x));
-          if constexpr (kScanlineLevel)
-            if (trace_row) span_last = c;
-          shade.next();
-        }
-      }
-      result.pixels += x_end - x_begin;
-    }
-
-    if constexpr (kScanlineLevel) {
-      if (trace_row) {
-        s.active_states.clear();
-        s.active_points.clear();
-        for (const ActiveEdge<Stepper>& a : active) {
-          s.active_states.push_back({a.edge.id, a.at.x(), a.at.ceil_x()});
-          s.active_points.push_back(
-              {a.at.x(), a.edge.id, gouraud ? a.at.color(a.edge, y, in.colors, grid) : setup.flat});
-        }
-        ScanlineStep step;
-        step.triangle = in.triangle;
-        step.y = y;
-        step.entered = s.entered;
-        step.retired = s.retired;
-        step.active_edges = s.active_states;
-        step.active_points = s.active_points;
-        step.has_span = has_span;
-        step.x_begin = x_begin;
-        step.x_end = x_end;
-        if (has_span && gouraud) {
-          step.has_span_colors = true;
-          step.span_begin = span_first;
-          step.span_end = span_last;
-        }
-        tracer.scanline(step);
-      }
-    }
-  };
+  i64 rows = 0, pixels = 0;
+  [[maybe_unused]] const auto flat_pixel = [&] {
+    if constexpr (DirectCanvas<C>)
+      return C::convert(setup.flat);
+    else
+      return 0;
+  }();
 
   for (i64 y = y_first; y <= y_last;) {
     [[maybe_unused]] bool trace_row = false;
@@ -323,11 +243,104 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
     const Edge* right = n_active >= 2 ? &active.back().edge : nullptr;
     Stepper l = n_active >= 2 ? active.front().at : Stepper{};
     Stepper r = n_active >= 2 ? active.back().at : Stepper{};
+    rows += run_last - y + 1;
     for (;; ++y) {
       if constexpr (kScanlineLevel) {
         if (trace_row && n_active >= 2) active.front().at = l, active.back().at = r;
       }
-      fill_row(y, l, r, left, right, trace_row);
+      // A convex polygon meets a scanline in one interval: from the leftmost to the rightmost
+      // active point. (Under the top-left rule exactly two edges are active; the closed rule can
+      // add the two edges meeting at a vertex that lies exactly on the row.)
+      i64 x_begin = 0, x_end = 0;
+      if (left) {
+        x_begin = std::max<i64>(l.ceil_x(), 0);
+        // Half-open span [ceil(xl), ceil(xr)): a centre exactly on the right edge belongs to the
+        // neighbour on the right. The closed rule includes it: [ceil(xl), floor(xr)].
+        x_end = std::min<i64>(closed ? r.floor_x() + 1 : r.ceil_x(), width);
+      }
+      const bool has_span = x_begin < x_end;
+      Color c_left = setup.flat, c_right = setup.flat;
+      double x_left = 0, x_right = 0;
+      if (left && (gouraud || trace_row)) {
+        x_left = l.x();
+        x_right = r.x();
+        if (gouraud) {
+          c_left = l.color(*left, y, in.colors, grid);
+          c_right = r.color(*right, y, in.colors, grid);
+        }
+      }
+
+      [[maybe_unused]] Color span_first = setup.flat, span_last = setup.flat;
+      if (has_span) {
+        const int yi = static_cast<int>(y), xb = static_cast<int>(x_begin),
+                  xe = static_cast<int>(x_end);
+        [[maybe_unused]] bool trace_pixels = false;
+        if constexpr (kPixelLevel) trace_pixels = trace_row && tracer.wants_pixels(in.triangle, y);
+        [[maybe_unused]] auto weight = [&](int x) {
+          return x_right > x_left ? (x - x_left) / (x_right - x_left) : 0.0;
+        };
+        if (!gouraud) {
+          if constexpr (DirectCanvas<C>)
+            C::fill_pixels(canvas.row(yi) + xb, canvas.row(yi) + xe, flat_pixel);
+          else
+            canvas.fill_span(yi, xb, xe, setup.flat);
+          if constexpr (kPixelLevel)
+            if (trace_pixels)
+              for (int x = xb; x < xe; ++x) tracer.pixel(in.triangle, x, y, setup.flat, weight(x));
+        } else {
+          SpanShader<Stepper> shade(c_left, c_right, x_left, x_right, x_begin);
+          if constexpr (kScanlineLevel)
+            if (trace_row) span_first = shade.color();
+          [[maybe_unused]] auto* row = [&] {
+            if constexpr (DirectCanvas<C>)
+              return canvas.row(yi);
+            else
+              return nullptr;
+          }();
+          for (int x = xb; x < xe; ++x) {
+            const Color c = shade.color();
+            if constexpr (DirectCanvas<C>)
+              row[x] = C::convert(c);
+            else
+              canvas.set(x, yi, c);
+            if constexpr (kPixelLevel)
+              if (trace_pixels) tracer.pixel(in.triangle, x, y, c, weight(x));
+            if constexpr (kScanlineLevel)
+              if (trace_row) span_last = c;
+            shade.next();
+          }
+        }
+        pixels += x_end - x_begin;
+      }
+
+      if constexpr (kScanlineLevel) {
+        if (trace_row) {
+          s.active_states.clear();
+          s.active_points.clear();
+          for (const ActiveEdge<Stepper>& a : active) {
+            s.active_states.push_back({a.edge.id, a.at.x(), a.at.ceil_x()});
+            s.active_points.push_back(
+                {a.at.x(), a.edge.id,
+                 gouraud ? a.at.color(a.edge, y, in.colors, grid) : setup.flat});
+          }
+          ScanlineStep step;
+          step.triangle = in.triangle;
+          step.y = y;
+          step.entered = s.entered;
+          step.retired = s.retired;
+          step.active_edges = s.active_states;
+          step.active_points = s.active_points;
+          step.has_span = has_span;
+          step.x_begin = x_begin;
+          step.x_end = x_end;
+          if (has_span && gouraud) {
+            step.has_span_colors = true;
+            step.span_begin = span_first;
+            step.span_end = span_last;
+          }
+          tracer.scanline(step);
+        }
+      }
       l.advance();
       r.advance();
       for (std::size_t i = n_active >= 2 ? 1 : 0; i + 1 < n_active; ++i) active[i].at.advance();
@@ -342,7 +355,7 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
     if (n_active >= 2) active.front().at = l, active.back().at = r;
     ++y;
   }
-  return result;
+  return FillResult{SkipReason::none, rows, pixels};
 }
 
 }  // namespace detail

@@ -291,7 +291,7 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
           SpanShader<Stepper> shade(c_left, c_right, x_left, x_right, x_begin);
           if constexpr (kScanlineLevel)
             if (trace_row) span_first = shade.color();
-          [[maybe_unused]] auto* row = [&] {
+          [[maybe_unused]] auto row = [&] {
             if constexpr (DirectCanvas<C>)
               return canvas.row(yi);
             else

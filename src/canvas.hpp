@@ -17,6 +17,23 @@ concept Canvas = requires(C& c, int x, int y, Color col) {
   c.set(x, y, col);           // one pixel
 };
 
+// The rows [begin, end) a canvas accepts. A canvas may be a horizontal band of a larger image
+// (band_render.hpp): it then has `rows()`, and the fill neither visits nor writes rows outside it,
+// exactly as it treats rows outside an ordinary canvas.
+struct RowBand {
+  int begin = 0, end = 0;
+};
+
+template <Canvas C>
+RowBand canvas_rows(const C& canvas) {
+  if constexpr (requires {
+                  { canvas.rows() } -> std::same_as<RowBand>;
+                })
+    return canvas.rows();
+  else
+    return {0, canvas.height()};
+}
+
 // A canvas whose rows are plain pixel arrays. The fill then converts a flat colour once per
 // polygon, not once per span, and writes pixels through a row pointer held in a register.
 template <class C>
@@ -51,6 +68,19 @@ class ImageCanvas {
 
  private:
   Image<P>& image_;
+};
+
+// The rows [band.begin, band.end) of an image, as a canvas of the image's full size: coordinates
+// are unchanged (no translation of the vertices, which would not be exact), and the fill clips to
+// the band as it clips to the canvas.
+template <class P>
+class BandCanvas : public ImageCanvas<P> {
+ public:
+  BandCanvas(Image<P>& image, RowBand band) : ImageCanvas<P>(image), band_(band) {}
+  RowBand rows() const { return band_; }
+
+ private:
+  RowBand band_;
 };
 
 }  // namespace scantrace

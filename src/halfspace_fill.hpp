@@ -45,8 +45,9 @@ FillResult fill_halfspace_triangle(C& canvas, const std::array<FixedPoint, 3>& v
   const i64 y_min = std::min({v[0].y, v[1].y, v[2].y}), y_max = std::max({v[0].y, v[1].y, v[2].y});
   const i64 col0 = std::max<i64>(grid.ceil_to_pixel(x_min), 0);
   const i64 col1 = std::min<i64>(grid.floor_to_pixel(x_max), canvas.width() - 1);
-  const i64 row0 = std::max<i64>(grid.ceil_to_pixel(y_min), 0);
-  const i64 row1 = std::min<i64>(grid.floor_to_pixel(y_max), canvas.height() - 1);
+  const RowBand band = canvas_rows(canvas);
+  const i64 row0 = std::max<i64>(grid.ceil_to_pixel(y_min), band.begin);
+  const i64 row1 = std::min<i64>(grid.floor_to_pixel(y_max), band.end - 1);
   const bool gouraud = opt.shading == Shading::gouraud;
   const double inv_area = 1.0 / static_cast<double>(area2 * sign);
 

@@ -122,12 +122,19 @@ inline Color mean_color(std::span<const FixedPoint> p, std::span<const Color> co
 // Colours along one span, the way each method computes them.
 template <class Stepper>
 struct SpanShader {
-  // exact: the first pixel by the course's vector_interp along x, then one increment per pixel
-  // in double (the colour is linear along the row; 16,384 increments drift by ~1e-12).
+  // exact: the course's linear interpolation along x, as one reciprocal per span (a division per
+  // span, not per pixel) and one increment per pixel in double: the colour is linear along the
+  // row, and 16,384 increments drift by ~1e-12, far inside the 1e-4 budget.
   Color c, step;
-  SpanShader(Color left, Color right, double xl, double xr, i64 x_begin)
-      : c(vector_interp({xl, 0}, {xr, 0}, left, right, static_cast<double>(x_begin), Axis::x)),
-        step(xr > xl ? (right - left) * (1.0 / (xr - xl)) : Color{}) {}
+  SpanShader(Color left, Color right, double xl, double xr, i64 x_begin) {
+    if (!(xr > xl)) {  // a span of one point: vector_interp's symmetric mean
+      c = (left + right) * 0.5;
+      return;
+    }
+    const double inv = 1.0 / (xr - xl);
+    step = (right - left) * inv;
+    c = left + step * (static_cast<double>(x_begin) - xl);
+  }
   Color color() const { return c; }
   void next() { c += step; }
 };
@@ -165,11 +172,42 @@ struct SpanShader<FloatStepper> {
   }
 };
 
+// The colour along an active edge during a run of rows, for Gouraud spans. By default the stepper
+// gives it row by row; the exact method evaluates the edge's linear colour function at the row,
+// c_top + (y − y_top)·Δc/Δy with the slope computed once per run: no division per row, and no
+// accumulation either, so a row's colour does not depend on where its run began (a band of the
+// parallel render begins runs at its own first row and must draw the same bits).
+template <class Stepper>
+struct RunEdgeColor {
+  void start(const Edge&, std::span<const Color>, const SubpixelGrid&) {}
+  Color at(const Stepper& s, const Edge& e, i64 y, std::span<const Color> c,
+           const SubpixelGrid& g) const {
+    return s.color(e, y, c, g);
+  }
+};
+
+template <>
+struct RunEdgeColor<ExactStepper> {
+  Color top, slope;
+  double y_top = 0;
+  void start(const Edge& e, std::span<const Color> colors, const SubpixelGrid& grid) {
+    const double scale = static_cast<double>(grid.scale());
+    top = colors[e.top];
+    slope = (colors[e.bottom] - top) * (scale / static_cast<double>(e.dy()));
+    y_top = static_cast<double>(e.p_top.y) / scale;
+  }
+  Color at(const ExactStepper&, const Edge&, i64 y, std::span<const Color>,
+           const SubpixelGrid&) const {
+    return top + slope * (static_cast<double>(y) - y_top);
+  }
+};
+
 // What the set-up hands to the sweep.
 struct Setup {
   SubpixelGrid grid;
   Color flat;
   bool traced = false;
+  bool uniform = false;  // Gouraud with three equal colours: every pixel is `flat`
 };
 
 // Step 3 of the fill for one stepper: the scanline sweep over the canvas rows.
@@ -188,10 +226,14 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
   const SubpixelGrid& grid = setup.grid;
   const bool closed = opt.fill_rule == FillRule::closed;
   const bool gouraud = opt.shading == Shading::gouraud;
-  const int width = canvas.width(), height = canvas.height();
+  // Interpolating equal colours gives the same colour everywhere: such a polygon is filled as a
+  // flat one (the trace still reports Gouraud span colours, which are that colour).
+  const bool shade = gouraud && !setup.uniform;
+  const int width = canvas.width();
   const std::vector<Edge>& edges = s.table.edges();
-  const i64 y_first = std::max<i64>(s.table.first_row(), 0);
-  const i64 y_last = std::min<i64>(s.table.last_row(), height - 1);
+  const RowBand band = canvas_rows(canvas);
+  const i64 y_first = std::max<i64>(s.table.first_row(), band.begin);
+  const i64 y_last = std::min<i64>(s.table.last_row(), band.end - 1);
   std::vector<ActiveEdge<Stepper>>& active = s.active<Stepper>();
   active.clear();
   std::size_t next = 0;
@@ -243,6 +285,11 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
     const Edge* right = n_active >= 2 ? &active.back().edge : nullptr;
     Stepper l = n_active >= 2 ? active.front().at : Stepper{};
     Stepper r = n_active >= 2 ? active.back().at : Stepper{};
+    RunEdgeColor<Stepper> l_color, r_color;
+    if (shade && left) {
+      l_color.start(*left, in.colors, grid);
+      r_color.start(*right, in.colors, grid);
+    }
     rows += run_last - y + 1;
     for (;; ++y) {
       if constexpr (kScanlineLevel) {
@@ -261,12 +308,12 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
       const bool has_span = x_begin < x_end;
       Color c_left = setup.flat, c_right = setup.flat;
       double x_left = 0, x_right = 0;
-      if (left && (gouraud || trace_row)) {
+      if (left && (shade || trace_row)) {
         x_left = l.x();
         x_right = r.x();
-        if (gouraud) {
-          c_left = l.color(*left, y, in.colors, grid);
-          c_right = r.color(*right, y, in.colors, grid);
+        if (shade) {
+          c_left = l_color.at(l, *left, y, in.colors, grid);
+          c_right = r_color.at(r, *right, y, in.colors, grid);
         }
       }
 
@@ -279,7 +326,7 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
         [[maybe_unused]] auto weight = [&](int x) {
           return x_right > x_left ? (x - x_left) / (x_right - x_left) : 0.0;
         };
-        if (!gouraud) {
+        if (!shade) {
           if constexpr (DirectCanvas<C>)
             C::fill_pixels(canvas.row(yi) + xb, canvas.row(yi) + xe, flat_pixel);
           else
@@ -403,7 +450,9 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
     const i64 col_last = closed ? grid.floor_to_pixel(x_max) : grid.ceil_to_pixel(x_max) - 1;
     const i64 row_last = closed ? grid.floor_to_pixel(y_max) : grid.ceil_to_pixel(y_max) - 1;
     if (col_first > col_last || row_first > row_last) return skip(SkipReason::no_pixel_centre);
-    if (col_last < 0 || col_first >= canvas.width() || row_last < 0 || row_first >= canvas.height())
+    const RowBand band = canvas_rows(canvas);
+    if (col_last < 0 || col_first >= canvas.width() || row_last < band.begin ||
+        row_first >= band.end)
       return skip(SkipReason::offscreen);
   }
 
@@ -424,7 +473,10 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
     s.table.build(pts, grid, opt.fill_rule);
     if constexpr (kTriangleLevel)
       if (traced) tracer.edge_table(EdgeTableView{in.triangle, &s.table, pts, grid});
-    const detail::Setup setup{grid, flat, traced};
+    const bool uniform =
+        opt.shading == Shading::gouraud && std::all_of(in.colors.begin() + 1, in.colors.end(),
+                                                       [&](Color c) { return c == in.colors[0]; });
+    const detail::Setup setup{grid, uniform ? in.colors[0] : flat, traced, uniform};
     switch (opt.method) {
       case Method::float32:
         result = detail::sweep<FloatStepper>(canvas, in, opt, s, tracer, setup);

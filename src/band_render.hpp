@@ -1,0 +1,101 @@
+#pragma once
+// The painter's render on several threads. The image is cut into horizontal bands; each thread
+// takes bands in turn and draws, into its band only, every face that reaches it, in the full
+// painter's order. A pixel belongs to exactly one band and receives exactly the same sequence of
+// writes as in the single-threaded render, so the result is bit-identical: parallelism changes
+// who draws a pixel, never what is drawn on it or in which order.
+//
+// Why bands and not faces: faces overlap, and the painter's order between overlapping faces is
+// the whole point, so splitting the face list would need locks or a merge; bands need neither.
+// Why more bands than threads: the faces are rarely spread evenly over the rows (the course scene
+// is a figure in the middle of the canvas), so threads pick bands from a shared counter.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+#include <vector>
+
+#include "painter.hpp"
+
+namespace scantrace {
+
+namespace detail {
+
+// The bands each face may touch, from its vertices' rows widened by one pixel on each side: a
+// face can only own rows within [ceil(y_min), floor(y_max)] of its snapped vertices, and
+// snapping moves a vertex by less than a pixel. Faces that cannot touch a band are not even set
+// up by that band's thread.
+inline std::vector<std::vector<int>> faces_by_band(const Scene& scene,
+                                                   const std::vector<int>& order, int band_height,
+                                                   int bands) {
+  std::vector<std::vector<int>> by_band(bands);
+  for (int f : order) {
+    const auto& face = scene.faces[f];
+    double y_min = scene.vertices[face[0]].y, y_max = y_min;
+    for (int k = 1; k < 3; ++k) {
+      y_min = std::min(y_min, scene.vertices[face[k]].y);
+      y_max = std::max(y_max, scene.vertices[face[k]].y);
+    }
+    if (!(y_max >= -1.0) || !(y_min <= scene.height + 1.0)) continue;  // also NaN: never filled
+    // Clamped before converting: a vertex may lie a billion pixels away.
+    const double lo = std::max(y_min - 1.0, 0.0), hi = std::min(y_max + 1.0, scene.height - 1.0);
+    const int first = std::min(static_cast<int>(lo) / band_height, bands - 1);
+    const int last = std::min(static_cast<int>(std::ceil(hi)) / band_height, bands - 1);
+    for (int b = first; b <= last; ++b) by_band[b].push_back(f);
+  }
+  return by_band;
+}
+
+}  // namespace detail
+
+// The scene rendered with `threads` threads (0: one per core); equal, pixel for pixel, to
+// render<P>(scene, opt). Statistics count a face as filled when any band filled part of it.
+template <class P = Rgb32f>
+Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads = 0,
+                         RenderStats* stats = nullptr) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  Image<P> image(scene.width, scene.height, P::from(scene.background));
+  const std::vector<double> depth = face_depths(scene);
+  const std::vector<int> order = painter_order(depth);
+  // Four bands per thread balance the load; bands of at least 16 rows keep the per-band set-up
+  // (and the faces listed in two bands) small.
+  const int bands = std::clamp(scene.height / 16, 1, 4 * threads);
+  const int band_height = (scene.height + bands - 1) / bands;
+  const std::vector<std::vector<int>> by_band =
+      detail::faces_by_band(scene, order, band_height, bands);
+
+  std::vector<char> filled(scene.faces.size(), 0);  // written as 1 only: no race on the value
+  std::vector<long long> pixels(bands, 0);
+  std::atomic<int> next_band{0};
+  const auto work = [&] {
+    FillScratch scratch;
+    NoTracer none;
+    for (int b; (b = next_band.fetch_add(1)) < bands;) {
+      BandCanvas<P> canvas(image, {b * band_height, std::min(scene.height, (b + 1) * band_height)});
+      for (int f : by_band[b]) {
+        const auto& face = scene.faces[f];
+        const std::array<Vec2, 3> v{scene.vertices[face[0]], scene.vertices[face[1]],
+                                    scene.vertices[face[2]]};
+        const std::array<Color, 3> c{scene.vcolors[face[0]], scene.vcolors[face[1]],
+                                     scene.vcolors[face[2]]};
+        const FillResult r =
+            fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, none);
+        if (r.skipped == SkipReason::none) std::atomic_ref<char>(filled[f]).store(1);
+        pixels[b] += r.pixels;
+      }
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+    work();
+  }
+  if (stats) {
+    *stats = {};
+    for (char f : filled) (f ? stats->triangles_filled : stats->triangles_skipped) += 1;
+    for (long long p : pixels) stats->pixels += p;
+  }
+  return image;
+}
+
+}  // namespace scantrace

@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
   const std::vector<scantrace::cli::Command> commands{
       scantrace::cli::add_demo_command(app),    scantrace::cli::add_render_command(app),
       scantrace::cli::add_trace_command(app),   scantrace::cli::add_replay_command(app),
-      scantrace::cli::add_explain_command(app), scantrace::cli::add_stress_command(app)};
+      scantrace::cli::add_explain_command(app), scantrace::cli::add_stress_command(app),
+      scantrace::cli::add_bench_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -77,14 +77,15 @@ std::string describe(const Contours& c) {
 // Fills and compares with the reference: coverage exactly, colours within 1e-4 (Gouraud) or the
 // mean (flat), and the pixel count reported.
 std::string compare(const Contours& contours, const std::vector<Color>& colors, WindingRule rule,
-                    Shading shading) {
+                    Shading shading, int bits = 8) {
   scantrace::RgbImage img(kW, kH, sttest::kSentinel);
   FillOptions opt;
   opt.shading = shading;
   opt.winding_rule = rule;
+  opt.subpixel_bits = bits;
   const scantrace::FillResult res =
       scantrace::fill_polygon_contours(img, std::span(contours), std::span(colors), opt);
-  const auto ref = scantrace::reference::rasterize_contours(kW, kH, contours, colors, rule, 8);
+  const auto ref = scantrace::reference::rasterize_contours(kW, kH, contours, colors, rule, bits);
   const Color flat = scantrace::reference::mean_color(colors);
   const bool gouraud = shading == Shading::gouraud;
   std::string diff = sttest::first_difference(
@@ -100,18 +101,21 @@ std::string compare(const Contours& contours, const std::vector<Color>& colors, 
   return diff;
 }
 
+// `random_bits`: each polygon on a random subpixel grid (the fill and the reference snap alike).
 void against_reference(std::uint64_t seed, int count, bool integer,
-                       const std::function<Contours(sttest::Rng&)>& make) {
+                       const std::function<Contours(sttest::Rng&)>& make,
+                       bool random_bits = false) {
   sttest::Rng rng(seed);
   int failures = 0;
   for (int i = 0; i < count && failures < 3; ++i) {
     const Contours c = make(rng);
     const std::vector<Color> colors = colours_for(rng, c);
+    const int bits = random_bits ? std::array{0, 2, 4, 8, 12}[rng.integer(0, 4)] : 8;
     for (WindingRule rule : {WindingRule::even_odd, WindingRule::non_zero})
       for (Shading shading : {Shading::gouraud, Shading::flat}) {
-        const std::string diff = compare(c, colors, rule, shading);
+        const std::string diff = compare(c, colors, rule, shading, bits);
         INFO("polygon " << i << " " << describe(c) << " rule " << scantrace::to_string(rule)
-                        << " shading " << scantrace::to_string(shading)
+                        << " bits " << bits << " shading " << scantrace::to_string(shading)
                         << (integer ? " integer" : " subpixel"));
         CHECK(diff == "");
         if (!diff.empty()) ++failures;
@@ -153,6 +157,25 @@ TEST_CASE("self-intersecting polygons agree with the exact reference under both 
     against_reference(integer ? 21 : 22, 120, integer, [&](sttest::Rng& rng) {
       return Contours{tangle(rng, static_cast<int>(rng.integer(4, 12)), integer)};
     });
+}
+
+TEST_CASE(
+    "polygons on other subpixel grids and with vertices a billion pixels away agree with "
+    "the exact reference",
+    "[winding]") {
+  against_reference(
+      61, 150, false,
+      [&](sttest::Rng& rng) {
+        return Contours{tangle(rng, static_cast<int>(rng.integer(4, 9)), false)};
+      },
+      true);
+  // Far vertices: the fill starts edges at the first visible row, exactly (design.md §3).
+  against_reference(62, 100, false, [&](sttest::Rng& rng) {
+    std::vector<Vec2> v = tangle(rng, static_cast<int>(rng.integer(4, 8)), false);
+    const double far = rng.integer(0, 1) ? 1e9 : -1e9;
+    v[0] = rng.integer(0, 1) ? Vec2{far, v[0].y} : Vec2{v[0].x, far};
+    return Contours{v};
+  });
 }
 
 TEST_CASE("polygons with holes and several contours agree with the exact reference", "[winding]") {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "src/scanline_fill.hpp"
+#include "src/winding_fill.hpp"
 #include "trace/event_tracer.hpp"
 #include "trace/record.hpp"
 #include "trace/recorder.hpp"
@@ -173,4 +174,25 @@ TEST_CASE("a pentagram row crosses four edges and non-zero merges the centre int
   const Interval& whole = b.scanline(0, 12).intervals->front();
   CHECK(whole.left_edge == a.scanline(0, 12).active_edges.front().edge);
   CHECK(whole.right_edge == a.scanline(0, 12).active_edges.back().edge);
+}
+
+TEST_CASE("tracing a polygon does not change what it fills", "[trace][polygon]") {
+  GeneralPolygonInput p = square_with_hole();
+  p.contours.push_back({{4.5, 12.3}, {17.5, 5.2}, {16, 17}});  // a third contour, crossing both
+  p.colors.insert(p.colors.end(), {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+  for (WindingRule rule : {WindingRule::even_odd, WindingRule::non_zero})
+    for (Shading shading : {Shading::gouraud, Shading::flat}) {
+      FillOptions options;
+      options.winding_rule = rule;
+      options.shading = shading;
+      RgbImage traced;
+      const Trace t = record_polygon(p, options, {.level = TraceLevel::pixel}, &traced);
+      RgbImage plain(p.width, p.height, Rgb32f::from(p.background));
+      const FillResult r =
+          fill_polygon_contours(plain, std::span(p.contours), std::span(p.colors), options);
+      CHECK(t.triangle_end(0)->pixels == r.pixels);
+      CHECK(static_cast<i64>(t.pixels(0).size()) == r.pixels);
+      for (int y = 0; y < p.height; ++y)
+        for (int x = 0; x < p.width; ++x) CHECK(traced(x, y) == plain(x, y));
+    }
 }

@@ -130,3 +130,18 @@ TEST_CASE("trace --polygon: malformed polygons and the closed rule are usage err
   CHECK(code({"--polygon", "0,0 9,0 0,9", "--winding", "odd"}) == 2);
   CHECK_FALSE(std::filesystem::exists(dir / "x.jsonl"));
 }
+
+TEST_CASE("explain --polygon replays the polygon into frames", "[command][explain][polygon]") {
+  TempDir dir;
+  const auto r = run_scantrace(
+      dir.path(), {"explain", "--polygon", "2,2 20,2 20,20 2,20 | 8,8 14,8 14,14 8,14", "--size",
+                   "22x22", "--winding", "non-zero", "-o", "frames/", "--video-size", "640x360"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  // Title, set-up, one step per edge-table entry (4 edges, 4 horizontal), scanline steps, the
+  // finished polygon and the end card: more than a dozen frames.
+  int frames = 0;
+  for (const auto& f : std::filesystem::directory_iterator(dir / "frames"))
+    frames += f.path().extension() == ".png";
+  CHECK(frames > 12);
+}

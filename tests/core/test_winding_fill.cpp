@@ -355,3 +355,29 @@ TEST_CASE("general polygons reject the closed rule and the halfspace method", "[
       scantrace::fill_polygon_contours(img, std::span(square), std::span(colors), halfspace),
       Catch::Contains("halfspace"));
 }
+
+TEST_CASE("every stepper fills a rectilinear polygon with a hole identically", "[winding]") {
+  // Axis-aligned edges cross rows at whole-pixel x, where no method can round the wrong way:
+  // exact, double and float must give the same pixels (an L-shaped outline with a square hole).
+  const Contours shape{{{3, 3}, {40, 3}, {40, 20}, {20, 20}, {20, 40}, {3, 40}},
+                       {{8, 8}, {15, 8}, {15, 15}, {8, 15}}};
+  std::vector<Color> colors(10, Color{0.5, 0.5, 0.5});
+  for (WindingRule rule : {WindingRule::even_odd, WindingRule::non_zero}) {
+    const auto want = scantrace::reference::rasterize_contours(kW, kH, shape, colors, rule, 8);
+    for (scantrace::Method m :
+         {scantrace::Method::exact, scantrace::Method::double64, scantrace::Method::float32}) {
+      scantrace::RgbImage img(kW, kH, sttest::kSentinel);
+      FillOptions opt;
+      opt.winding_rule = rule;
+      opt.method = m;
+      scantrace::fill_polygon_contours(img, std::span(shape), std::span(colors), opt);
+      INFO("method " << scantrace::to_string(m) << " rule " << scantrace::to_string(rule));
+      CHECK(sttest::first_difference(
+                img, want,
+                [](int, int) {
+                  return Color{0.5, 0.5, 0.5};
+                },
+                1e-6) == "");
+    }
+  }
+}

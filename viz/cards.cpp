@@ -31,10 +31,10 @@ std::string triangle_text(const trace::Trace& t, int triangle) {
   const trace::TriangleBegin* b = find_begin(t, triangle);
   // A general polygon: its size and rule, as its vertex list would not fit on a line.
   if (t.header().winding_rule)
-    return fmt::format(
-        "Polygon {}: {} vertices, {} {}, {} rule", triangle, b ? b->vertices.size() : 0,
-        b ? std::max<std::size_t>(1, b->contours.size()) : 1,
-        b && b->contours.size() > 1 ? "contours" : "contour", *t.header().winding_rule);
+    return fmt::format("Polygon {}: {} vertices, {} {}, {}", triangle, b ? b->vertices.size() : 0,
+                       b ? std::max<std::size_t>(1, b->contours.size()) : 1,
+                       b && b->contours.size() > 1 ? "contours" : "contour",
+                       *t.header().winding_rule);
   std::string s = fmt::format("Triangle {}", triangle);
   if (!b) return s;
   s += ":";

@@ -26,11 +26,14 @@ struct ExplainArgs {
 void run(const ExplainArgs& args) {
   const auto input = args.what.input();
   const trace::TraceFilter filter = args.what.filter();
-  const FillOptions options = args.fill.options();
+  FillOptions options = args.fill.options();
+  options.winding_rule = args.what.winding_rule();
   const trace::Trace t = std::visit(
       [&](const auto& in) {
         if constexpr (std::is_same_v<std::decay_t<decltype(in)>, Scene>)
           return trace::record_scene(in, options, filter);
+        else if constexpr (std::is_same_v<std::decay_t<decltype(in)>, trace::GeneralPolygonInput>)
+          return trace::record_polygon(in, options, filter);
         else
           return trace::record_triangle(in, options, filter);
       },
@@ -56,14 +59,13 @@ Command add_explain_command(CLI::App& app) {
   add_trace_flags(*cmd, args->what);
   add_fill_flags(*cmd, args->fill);
   add_replay_flags(*cmd, args->replay, false);
-  cmd->callback([args] {
-    if (args->what.scene.empty() && args->what.triangle.empty())
-      throw CLI::RequiredError("a SCENE file or --triangle");
-  });
+  cmd->callback([args] { args->what.check(args->fill.fill_rule); });
   cmd->footer(
       "Examples:\n"
       "  scantrace explain --triangle \"20,20 250,80 300,400\" -o triangle.mp4\n"
       "  scantrace explain --triangle \"2,1 9,3 4,8\" --size 12x10 -o small.mp4\n"
+      "  scantrace explain --polygon \"10,1 13,19 1,7 19,7 7,19\" --winding non-zero\n"
+      "                    --size 20x20 -o star.mp4\n"
       "  scantrace explain scene.json -o painter.mp4\n"
       "  scantrace explain scene.json --triangles 17 -o face17.mp4 --video-size 1920x1080");
   return {cmd, [args] { run(*args); }};

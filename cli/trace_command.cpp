@@ -1,4 +1,5 @@
-// scantrace trace (SCENE | --triangle "…" [--colors "…"]) [filters] -o OUT.jsonl
+// scantrace trace (SCENE | --triangle "…" | --polygon "…" [--winding …]) [--colors "…"] [filters]
+//                 -o OUT.jsonl
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -25,12 +26,15 @@ struct TraceArgs {
 void run_trace(const TraceArgs& args) {
   const auto input = args.what.input();
   const trace::TraceFilter filter = args.what.filter();
-  const FillOptions options = args.fill.options();
+  FillOptions options = args.fill.options();
+  options.winding_rule = args.what.winding_rule();
   const Stopwatch clock;
   const trace::Footer footer = std::visit(
       [&](const auto& in) {
         if constexpr (std::is_same_v<std::decay_t<decltype(in)>, Scene>)
           return trace::write_scene_trace(args.output, in, options, filter);
+        else if constexpr (std::is_same_v<std::decay_t<decltype(in)>, trace::GeneralPolygonInput>)
+          return trace::write_polygon_trace(args.output, in, options, filter);
         else
           return trace::write_triangle_trace(args.output, in, options, filter);
       },
@@ -51,20 +55,21 @@ Command add_trace_command(CLI::App& app) {
   auto args = std::make_shared<TraceArgs>();
   CLI::App* cmd = app.add_subcommand(
       "trace",
-      "Fills a scene or one triangle and writes what the edge-table fill did, step by\n"
-      "step, as JSON Lines (trace format v1): each triangle's setup and edge table,\n"
-      "then per scanline the edges that entered and retired, the active edges and\n"
-      "their exact x, the active points with their colours, and the span filled.");
+      "Fills a scene, one triangle or one general polygon and writes what the\n"
+      "edge-table fill did, step by step, as JSON Lines (trace format v1): each\n"
+      "triangle's setup and edge table, then per scanline the edges that entered\n"
+      "and retired, the active edges and their exact x, the active points with\n"
+      "their colours, and the span filled (for a polygon: every inside interval,\n"
+      "and each active edge's winding direction).");
   add_trace_flags(*cmd, args->what);
   add_fill_flags(*cmd, args->fill);
   cmd->add_option("-o,--output", args->output, "output trace (.jsonl)")->required();
-  cmd->callback([args] {
-    if (args->what.scene.empty() && args->what.triangle.empty())
-      throw CLI::RequiredError("a SCENE file or --triangle");
-  });
+  cmd->callback([args] { args->what.check(args->fill.fill_rule); });
   cmd->footer(
       "Examples:\n"
       "  scantrace trace --triangle \"20,20 250,80 300,400\" -o triangle.jsonl\n"
+      "  scantrace trace --polygon \"2,2 30,2 30,30 2,30 | 10,10 22,10 22,22 10,22\"\n"
+      "                  --winding non-zero --size 32x32 -o hole.jsonl\n"
       "  scantrace trace scene.json --triangles 3,17,40-45 --rows 100:120 -o part.jsonl\n"
       "  scantrace trace scene.json --level pixel --max-events 100000 -o pixels.jsonl");
   return {cmd, [args] { run_trace(*args); }};

@@ -68,6 +68,42 @@ std::array<Color, 3> parse_colors(const std::string& text) {
   return out;
 }
 
+std::vector<std::vector<Vec2>> parse_polygon(const std::string& text) {
+  std::vector<std::vector<Vec2>> out;
+  std::stringstream contours(text);
+  for (std::string contour; std::getline(contours, contour, '|');) {
+    std::stringstream in(contour);
+    std::vector<Vec2>& c = out.emplace_back();
+    for (std::string g; in >> g;) {
+      const std::vector<double> v = numbers(g, "--polygon");
+      if (v.size() != 2) throw std::invalid_argument("--polygon: \"" + g + "\" is not a point x,y");
+      c.push_back({v[0], v[1]});
+    }
+    if (c.size() < 3)
+      throw std::invalid_argument("--polygon: contour " + std::to_string(out.size()) +
+                                  " needs at least three points x,y, got " +
+                                  std::to_string(c.size()));
+  }
+  if (out.empty()) throw std::invalid_argument("--polygon needs at least one contour");
+  return out;
+}
+
+std::vector<Color> parse_color_list(const std::string& text) {
+  std::stringstream in(text);
+  std::vector<Color> out;
+  for (std::string g; in >> g;) {
+    const std::vector<double> v = numbers(g, "--colors");
+    if (v.size() != 3) throw std::invalid_argument("--colors: \"" + g + "\" is not a colour r,g,b");
+    for (double c : v)
+      if (c < 0 || c > 1)
+        throw std::invalid_argument("--colors: components must be in [0, 1], got " +
+                                    std::to_string(c));
+    out.push_back({v[0], v[1], v[2]});
+  }
+  if (out.empty()) throw std::invalid_argument("--colors needs at least one colour r,g,b");
+  return out;
+}
+
 std::pair<int, int> parse_size(const std::string& text) {
   const std::size_t x = text.find('x');
   int w = 0, h = 0;
@@ -82,8 +118,43 @@ std::pair<int, int> parse_size(const std::string& text) {
   return {w, h};
 }
 
-std::variant<Scene, trace::TriangleInput> TraceFlags::input() const {
+WindingRule TraceFlags::winding_rule() const {
+  WindingRule w = WindingRule::even_odd;
+  parse_winding_rule(winding.c_str(), w);  // validated by the option's check
+  return w;
+}
+
+void TraceFlags::check(const std::string& fill_rule) const {
+  if (scene.empty() && triangle.empty() && polygon.empty())
+    throw CLI::RequiredError("a SCENE file, --triangle or --polygon");
+  if (!polygon.empty()) {
+    if (fill_rule == "closed")
+      throw CLI::ValidationError("--fill-rule",
+                                 "closed is not defined for general polygons (where edges cross "
+                                 "or contours touch); use top-left");
+    std::size_t vertices = 0;
+    for (const auto& c : parse_polygon(polygon)) vertices += c.size();
+    if (parse_color_list(colors).size() > vertices)
+      throw CLI::ValidationError(
+          "--colors", "more colours than the polygon's " + std::to_string(vertices) + " vertices");
+  } else if (!triangle.empty()) {
+    parse_colors(colors);
+  }
+}
+
+std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> TraceFlags::input() const {
   if (!scene.empty()) return load_scene(scene);
+  if (!polygon.empty()) {
+    trace::GeneralPolygonInput p;
+    p.contours = parse_polygon(polygon);
+    // Fewer colours than vertices are repeated in turn (the default: red, green, blue, …).
+    const std::vector<Color> given = parse_color_list(colors);
+    for (const auto& c : p.contours)
+      for (std::size_t i = 0; i < c.size(); ++i)
+        p.colors.push_back(given[p.colors.size() % given.size()]);
+    std::tie(p.width, p.height) = parse_size(size);
+    return p;
+  }
   trace::TriangleInput t;
   t.vertices = parse_triangle(triangle);
   t.colors = parse_colors(colors);
@@ -102,6 +173,7 @@ trace::TraceFilter TraceFlags::filter() const {
 
 std::string TraceFlags::input_name() const {
   if (!scene.empty()) return scene;
+  if (!polygon.empty()) return "the polygon " + polygon;
   return "the triangle " + triangle;
 }
 
@@ -114,14 +186,33 @@ void add_trace_flags(CLI::App& command, TraceFlags& flags) {
                                    "\"20,20 250,80 300,400\" (x = column, y = row down)")
                        ->check(parsed_by(parse_triangle));
   scene->excludes(triangle);
+  auto* polygon = command
+                      .add_option("--polygon", flags.polygon,
+                                  "trace one general polygon (concave, self-intersecting,\n"
+                                  "with holes): contours separated by '|', e.g.\n"
+                                  "\"0,0 40,0 40,40 0,40 | 10,10 10,30 30,30 30,10\"")
+                      ->check(parsed_by(parse_polygon));
+  polygon->excludes(scene)->excludes(triangle);
+  auto* colors =
+      command
+          .add_option("--colors", flags.colors,
+                      "vertex colours, \"r,g,b r,g,b r,g,b\": three for --triangle; for\n"
+                      "--polygon one per vertex, or fewer, repeated in turn")
+          ->check(parsed_by(parse_color_list))
+          ->capture_default_str();
+  auto* size =
+      command.add_option("--size", flags.size, "canvas of --triangle or --polygon, WIDTHxHEIGHT")
+          ->check(parsed_by(parse_size))
+          ->capture_default_str();
+  colors->excludes(scene);
+  size->excludes(scene);
   command
-      .add_option("--colors", flags.colors, "vertex colours of --triangle, \"r,g,b r,g,b r,g,b\"")
-      ->check(parsed_by(parse_colors))
-      ->needs(triangle)
-      ->capture_default_str();
-  command.add_option("--size", flags.size, "canvas of --triangle, WIDTHxHEIGHT")
-      ->check(parsed_by(parse_size))
-      ->needs(triangle)
+      .add_option("--winding", flags.winding,
+                  "which pixels of --polygon are inside: even-odd (an odd\n"
+                  "number of edges to the left) or non-zero (edges going\n"
+                  "down minus edges going up is not zero)")
+      ->check(CLI::IsMember({"even-odd", "non-zero"}))
+      ->needs(polygon)
       ->capture_default_str();
   command
       .add_option("--level", flags.level,

@@ -1,11 +1,13 @@
 #pragma once
 // What to trace and how much, shared by `trace` and (with the replay issue) `explain`:
-//   (SCENE | --triangle "x0,y0 x1,y1 x2,y2" [--colors "r,g,b r,g,b r,g,b"] [--size WxH])
+//   (SCENE | --triangle "x0,y0 x1,y1 x2,y2" [--colors "r,g,b r,g,b r,g,b"] [--size WxH]
+//          | --polygon "x,y x,y … | x,y …" [--colors "r,g,b …"] [--winding even-odd|non-zero])
 //   [--level triangle|scanline|pixel] [--triangles 3,17,40-45] [--rows A:B] [--max-events N]
 #include <array>
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "src/scene.hpp"
 #include "trace/record.hpp"
@@ -20,6 +22,8 @@ namespace scantrace::cli {
 struct TraceFlags {
   std::string scene;
   std::string triangle;
+  std::string polygon;
+  std::string winding = "even-odd";
   std::string colors = "1,0,0 0,1,0 0,0,1";
   std::string size = "512x512";
   std::string level = "scanline";
@@ -28,7 +32,11 @@ struct TraceFlags {
   std::optional<long long> max_events;
 
   // Throws InputError when the scene file is bad.
-  std::variant<Scene, trace::TriangleInput> input() const;
+  std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> input() const;
+  WindingRule winding_rule() const;
+  // The checks that need several options at once (run from the subcommand's callback, so they
+  // are usage errors): an input is given, --colors fits it, a polygon is not filled `closed`.
+  void check(const std::string& fill_rule) const;
   trace::TraceFilter filter() const;
   // "SCENE" or "the triangle (x0,y0) (x1,y1) (x2,y2)", for messages.
   std::string input_name() const;
@@ -41,6 +49,10 @@ void add_trace_flags(CLI::App& command, TraceFlags& flags);
 // Parsers for the text forms (throw std::invalid_argument naming the problem).
 std::array<Vec2, 3> parse_triangle(const std::string& text);
 std::array<Color, 3> parse_colors(const std::string& text);
+// "x,y x,y … | x,y …": contours separated by '|', at least three points each.
+std::vector<std::vector<Vec2>> parse_polygon(const std::string& text);
+// Any number (at least one) of colours "r,g,b r,g,b …".
+std::vector<Color> parse_color_list(const std::string& text);
 std::pair<int, int> parse_size(const std::string& text);
 
 }  // namespace scantrace::cli

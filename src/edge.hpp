@@ -9,7 +9,7 @@
 namespace scantrace {
 
 struct Edge {
-  int id = 0;      // the edge from polygon vertex id to vertex (id + 1) mod n
+  int id = 0;      // the edge from polygon vertex id to the next vertex of its contour
   int top = 0;     // index of the upper endpoint (smaller y)
   int bottom = 0;  // index of the lower endpoint
   FixedPoint p_top, p_bottom;
@@ -18,6 +18,9 @@ struct Edge {
 
   i64 dx() const { return p_bottom.x - p_top.x; }
   i64 dy() const { return p_bottom.y - p_top.y; }
+  // +1 when the edge runs down (from its vertex `id` at the top), -1 when it runs up: its
+  // contribution to the winding number of the points to its right (winding_fill.hpp).
+  int winding() const { return top == id ? 1 : -1; }
 };
 
 // Exact order of two edges' slopes dx/dy (dy > 0 for both).

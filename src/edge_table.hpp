@@ -22,6 +22,11 @@ class EdgeTable {
   // Rebuilds the table for the polygon `points` (grid units); reuses its storage, so a renderer
   // that keeps one EdgeTable allocates nothing per triangle once it has warmed up.
   void build(std::span<const FixedPoint> points, const SubpixelGrid& grid, FillRule rule);
+  // The same for a polygon of several closed contours stored one after another in `points`
+  // (`contour_sizes` vertices each). Edge ids stay global vertex indices: edge i runs from vertex
+  // i to the next vertex of its contour, the first vertex of the contour for the last one.
+  void build_contours(std::span<const FixedPoint> points, std::span<const int> contour_sizes,
+                      const SubpixelGrid& grid, FillRule rule);
 
   const std::vector<Edge>& edges() const { return edges_; }  // sorted by (first_row, id)
   const std::vector<HorizontalEdge>& horizontal() const { return horizontal_; }

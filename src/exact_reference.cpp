@@ -109,6 +109,144 @@ Raster rasterize(int width, int height, std::span<const scantrace::Vec2> points,
   return out;
 }
 
+namespace {
+
+// One edge of a general polygon, oriented top to bottom, with its winding and vertex colours.
+struct RefEdge {
+  GridPt top, bottom;
+  int winding = 0;
+  int id = 0;
+  scantrace::Color c_top, c_bottom;
+};
+
+// Where an edge crosses row gy (grid units): x = q + r / den grid units, 0 <= r < den, exactly.
+// The numerator needs up to 2^123, so crossings are compared as (q, r / den), never
+// cross-multiplied whole.
+struct Crossing {
+  i128 q = 0;
+  i64 r = 0, den = 1;
+  const RefEdge* edge = nullptr;
+};
+
+Crossing cross(const RefEdge& e, i64 gy) {
+  const i64 dy = e.bottom.y - e.top.y;
+  const i128 num =
+      static_cast<i128>(e.top.x) * dy + static_cast<i128>(e.bottom.x - e.top.x) * (gy - e.top.y);
+  i128 q = num / dy;
+  if (num % dy < 0) --q;
+  return {q, static_cast<i64>(num - q * dy), dy, &e};
+}
+
+// The crossing lies at or left of the grid x `gx`.
+bool at_or_left(const Crossing& c, i64 gx) {
+  return c.q < gx || (c.q == gx && c.r == 0);
+}
+
+// The order of two crossings along the row, ties by slope (the order just below the row) and id.
+bool before(const Crossing& a, const Crossing& b) {
+  if (a.q != b.q) return a.q < b.q;
+  const i128 l = static_cast<i128>(a.r) * b.den, r = static_cast<i128>(b.r) * a.den;
+  if (l != r) return l < r;
+  const RefEdge &ea = *a.edge, &eb = *b.edge;
+  const i128 sa = static_cast<i128>(ea.bottom.x - ea.top.x) * (eb.bottom.y - eb.top.y);
+  const i128 sb = static_cast<i128>(eb.bottom.x - eb.top.x) * (ea.bottom.y - ea.top.y);
+  if (sa != sb) return sa < sb;
+  return ea.id < eb.id;
+}
+
+bool inside_by(int winding, WindingRule rule) {
+  return rule == WindingRule::even_odd ? (winding & 1) != 0 : winding != 0;
+}
+
+double to_double(const Crossing& c, i64 scale) {
+  return (static_cast<double>(c.q) + static_cast<double>(c.r) / static_cast<double>(c.den)) /
+         static_cast<double>(scale);
+}
+
+scantrace::Color edge_color(const RefEdge& e, i64 gy) {
+  const double t = static_cast<double>(gy - e.top.y) / static_cast<double>(e.bottom.y - e.top.y);
+  return e.c_top + (e.c_bottom - e.c_top) * t;
+}
+
+}  // namespace
+
+Raster rasterize_contours(int width, int height,
+                          std::span<const std::vector<scantrace::Vec2>> contours,
+                          std::span<const scantrace::Color> colors, WindingRule rule, int bits) {
+  Raster out;
+  out.width = width;
+  out.height = height;
+  out.covered.assign(static_cast<std::size_t>(width) * height, 0);
+  out.color.assign(out.covered.size(), scantrace::Color{});
+  const i64 scale = i64{1} << bits;
+  std::size_t total = 0;
+  for (const auto& c : contours) total += c.size();
+  const bool shade = colors.size() == total;
+  std::vector<RefEdge> edges;
+  int base = 0;
+  for (const auto& c : contours) {
+    const int n = static_cast<int>(c.size());
+    for (int k = 0; k < n; ++k) {
+      const int i = base + k, j = base + (k + 1) % n;
+      const GridPt a = snap(c[k], bits), b = snap(c[(k + 1) % n], bits);
+      if (a.y == b.y) continue;  // crosses no row
+      RefEdge e;
+      e.id = i;
+      e.winding = a.y < b.y ? 1 : -1;
+      e.top = a.y < b.y ? a : b;
+      e.bottom = a.y < b.y ? b : a;
+      if (shade) {
+        e.c_top = a.y < b.y ? colors[i] : colors[j];
+        e.c_bottom = a.y < b.y ? colors[j] : colors[i];
+      }
+      edges.push_back(e);
+    }
+    base += n;
+  }
+  std::vector<Crossing> row;
+  for (i64 y = 0; y < height; ++y) {
+    const i64 gy = y * scale;
+    row.clear();
+    for (const RefEdge& e : edges)
+      if (e.top.y <= gy && gy < e.bottom.y) row.push_back(cross(e, gy));
+    if (row.empty()) continue;
+    if (shade) std::sort(row.begin(), row.end(), before);
+    for (i64 x = 0; x < width; ++x) {
+      const i64 gx = x * scale;
+      // The definition, literally: the signed crossings at or left of the centre.
+      int winding = 0;
+      for (const Crossing& c : row)
+        if (at_or_left(c, gx)) winding += c.edge->winding;
+      if (!inside_by(winding, rule)) continue;
+      const std::size_t k = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
+      out.covered[k] = 1;
+      ++out.count;
+      if (!shade) continue;
+      // The inside run holding the pixel: walk the ordered crossings, remembering where the rule
+      // last turned inside, until the first crossing right of the centre that turns it outside.
+      int w = 0;
+      const Crossing* open = nullptr;
+      for (const Crossing& c : row) {
+        w += c.edge->winding;
+        const bool now = inside_by(w, rule);
+        if (now && !open) {
+          open = &c;
+        } else if (!now && open) {
+          if (!at_or_left(c, gx)) {
+            const double xl = to_double(*open, scale), xr = to_double(c, scale);
+            const scantrace::Color cl = edge_color(*open->edge, gy), cr = edge_color(*c.edge, gy);
+            const double t = xr > xl ? (static_cast<double>(x) - xl) / (xr - xl) : 0.0;
+            out.color[k] = cl + (cr - cl) * t;
+            break;
+          }
+          open = nullptr;
+        }
+      }
+    }
+  }
+  return out;
+}
+
 scantrace::Color mean_color(std::span<const scantrace::Color> colors) {
   scantrace::Color sum;
   for (const scantrace::Color& c : colors) sum += c;

@@ -86,6 +86,19 @@ struct Raster {
 Raster rasterize(int width, int height, std::span<const scantrace::Vec2> points,
                  std::span<const scantrace::Color> colors, FillRule rule, int bits = kExactBits);
 
+// The coverage of a general polygon (closed contours, vertices one after another; docs/polygons.md)
+// under a winding rule, decided per pixel centre without any sweep: the signed crossings of every
+// edge with the centre's row (edge rows half-open, y_top <= y < y_bottom) at x_c <= x are summed
+// (+1 for an edge going down, -1 up) and the rule applied. When `colors` holds one colour per
+// vertex, each covered pixel also gets the Gouraud colour of docs/polygons.md, derived from the
+// row's crossings directly: the crossings ordered by (x, slope, vertex id), the inside run holding
+// the pixel found by the same winding sums, and its two bounding edges' colours (vertex colours
+// interpolated along each edge in y) interpolated linearly in x.
+Raster rasterize_contours(int width, int height,
+                          std::span<const std::vector<scantrace::Vec2>> contours,
+                          std::span<const scantrace::Color> colors, WindingRule rule,
+                          int bits = kExactBits);
+
 // The mean of the colours (the flat colour of design.md §2).
 scantrace::Color mean_color(std::span<const scantrace::Color> colors);
 

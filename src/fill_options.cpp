@@ -35,4 +35,17 @@ bool parse_method(const char* name, Method& out) {
   return false;
 }
 
+const char* to_string(WindingRule w) {
+  return w == WindingRule::non_zero ? "non-zero" : "even-odd";
+}
+
+bool parse_winding_rule(const char* name, WindingRule& out) {
+  for (WindingRule w : {WindingRule::even_odd, WindingRule::non_zero})
+    if (std::strcmp(name, to_string(w)) == 0) {
+      out = w;
+      return true;
+    }
+  return false;
+}
+
 }  // namespace scantrace

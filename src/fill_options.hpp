@@ -21,11 +21,18 @@ enum class FillRule { top_left, closed };
 // barycentric approach), the other classic family.
 enum class Method { exact, float32, double64, halfspace };
 
+// Which pixels of a general polygon (concave, self-intersecting, several contours) are inside
+// (docs/polygons.md): even_odd — the centre is crossed by an odd number of edges to its left;
+// non_zero — the signed sum of those crossings (+1 for an edge going down, −1 up) is not zero.
+// Only the general polygon fill (winding_fill.hpp) reads it; for a convex polygon both agree.
+enum class WindingRule { even_odd, non_zero };
+
 struct FillOptions {
   Shading shading = Shading::gouraud;
   FillRule fill_rule = FillRule::top_left;
   int subpixel_bits = kDefaultSubpixelBits;
   Method method = Method::exact;
+  WindingRule winding_rule = WindingRule::even_odd;
 };
 
 const char* to_string(Shading s);
@@ -33,5 +40,7 @@ const char* to_string(FillRule r);
 const char* to_string(Method m);  // "exact", "float", "double", "halfspace"
 // The method named `name`, or false when there is none.
 bool parse_method(const char* name, Method& out);
+const char* to_string(WindingRule w);  // "even-odd", "non-zero"
+bool parse_winding_rule(const char* name, WindingRule& out);
 
 }  // namespace scantrace

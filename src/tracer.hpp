@@ -39,6 +39,9 @@ struct PolygonSetup {
   Color flat_color;
   const FillOptions* options = nullptr;
   SubpixelGrid grid;
+  // General polygons (winding_fill.hpp): the vertex count of each contour, whose vertices follow
+  // one another in `vertices`. Empty for a single contour (triangles, convex polygons).
+  std::span<const int> contour_sizes = {};
 };
 
 struct EdgeTableView {
@@ -50,14 +53,25 @@ struct EdgeTableView {
 
 struct ActiveEdgeState {
   int edge = 0;
-  double x = 0;    // exact intersection with the row (rounded to double for display)
-  i64 ceil_x = 0;  // ceil(x), computed exactly
+  double x = 0;     // exact intersection with the row (rounded to double for display)
+  i64 ceil_x = 0;   // ceil(x), computed exactly
+  int winding = 0;  // general polygons: +1 edge going down, -1 up; 0 = not reported (convex fill)
 };
 
 struct ActivePointState {
   double x = 0;
   int edge = 0;
   Color color;  // interpolated along the edge (Gouraud) or the flat colour
+};
+
+// One inside interval of a row of a general polygon: between the active edge where the winding
+// rule turns "inside" and the one where it turns "outside" again.
+struct IntervalState {
+  int left_edge = 0, right_edge = 0;
+  double x_left = 0, x_right = 0;  // the two edges' exact intersections with the row
+  i64 x_begin = 0, x_end = 0;      // its pixels, half-open, clipped to the canvas (may be empty)
+  bool has_colors = false;
+  Color begin, end;  // colours of pixels x_begin and x_end - 1 (Gouraud)
 };
 
 struct ScanlineStep {
@@ -70,6 +84,10 @@ struct ScanlineStep {
   i64 x_begin = 0, x_end = 0;  // half-open, clipped to the canvas
   bool has_span_colors = false;
   Color span_begin, span_end;  // colours of pixels x_begin and x_end - 1 (Gouraud)
+  // General polygons: every inside interval with at least one pixel, left to right; the span
+  // above is then the first of them. Convex fills leave has_intervals false.
+  bool has_intervals = false;
+  std::span<const IntervalState> intervals = {};
 };
 
 // The default: traces nothing, costs nothing.

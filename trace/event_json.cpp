@@ -36,15 +36,17 @@ ojson list(const std::vector<T>& items) {
 }
 
 ojson encode(const Header& h) {
-  return {{"type", "header"},
-          {"format", h.format},
-          {"version", h.version},
-          {"canvas", {{"width", h.canvas.width}, {"height", h.canvas.height}}},
-          {"shading", h.shading},
-          {"fill_rule", h.fill_rule},
-          {"subpixel_bits", h.subpixel_bits},
-          {"level", h.level},
-          {"generator", h.generator}};
+  ojson j = {{"type", "header"},
+             {"format", h.format},
+             {"version", h.version},
+             {"canvas", {{"width", h.canvas.width}, {"height", h.canvas.height}}},
+             {"shading", h.shading},
+             {"fill_rule", h.fill_rule},
+             {"subpixel_bits", h.subpixel_bits},
+             {"level", h.level},
+             {"generator", h.generator}};
+  if (h.winding_rule) j["winding_rule"] = *h.winding_rule;
+  return j;
 }
 
 ojson encode(const TriangleBegin& e) {
@@ -55,6 +57,7 @@ ojson encode(const TriangleBegin& e) {
              {"colors", list(e.colors)}};
   if (e.depth) j["depth"] = *e.depth;
   if (e.flat_color) j["flat_color"] = *e.flat_color;
+  if (!e.contours.empty()) j["contours"] = e.contours;
   return j;
 }
 
@@ -81,7 +84,11 @@ ojson encode(const EdgeTableEvent& e) {
 
 ojson encode(const Scanline& s) {
   ojson active = ojson::array(), points = ojson::array();
-  for (const ActiveEdge& a : s.active_edges) active.push_back({{"edge", a.edge}, {"x", a.x}});
+  for (const ActiveEdge& a : s.active_edges) {
+    ojson e = {{"edge", a.edge}, {"x", a.x}};
+    if (a.winding) e["winding"] = *a.winding;
+    active.push_back(e);
+  }
   for (const ActivePoint& p : s.active_points)
     points.push_back({{"x", p.x}, {"edge", p.edge}, {"color", p.color}});
   ojson j = {{"type", "scanline"},     {"triangle", s.triangle}, {"y", s.y},
@@ -90,6 +97,17 @@ ojson encode(const Scanline& s) {
   if (s.span) j["span"] = {{"x_begin", s.span->x_begin}, {"x_end", s.span->x_end}};
   if (s.span_colors)
     j["span_colors"] = {{"begin", s.span_colors->begin}, {"end", s.span_colors->end}};
+  if (s.intervals) {
+    ojson list = ojson::array();
+    for (const Interval& i : *s.intervals) {
+      ojson x = {{"x_begin", i.pixels.x_begin}, {"x_end", i.pixels.x_end},
+                 {"left_edge", i.left_edge},    {"right_edge", i.right_edge},
+                 {"x_left", i.x_left},          {"x_right", i.x_right}};
+      if (i.colors) x["colors"] = {{"begin", i.colors->begin}, {"end", i.colors->end}};
+      list.push_back(x);
+    }
+    j["intervals"] = list;
+  }
   return j;
 }
 
@@ -125,6 +143,7 @@ Header decode_header(const json& j) {
   h.subpixel_bits = j.at("subpixel_bits").get<int>();
   h.level = j.at("level").get<std::string>();
   h.generator = j.at("generator").get<std::string>();
+  if (j.contains("winding_rule")) h.winding_rule = j["winding_rule"].get<std::string>();
   return h;
 }
 
@@ -136,6 +155,7 @@ TriangleBegin decode_begin(const json& j) {
   e.colors = list_of<Color>(j, "colors");
   if (j.contains("depth")) e.depth = j["depth"].get<double>();
   if (j.contains("flat_color")) e.flat_color = j["flat_color"].get<Color>();
+  if (j.contains("contours")) e.contours = j["contours"].get<std::vector<std::vector<int>>>();
   return e;
 }
 
@@ -160,8 +180,11 @@ Scanline decode_scanline(const json& j) {
   s.y = j.at("y").get<i64>();
   s.entered = j.at("entered").get<std::vector<int>>();
   s.retired = j.at("retired").get<std::vector<int>>();
-  for (const json& a : j.at("active_edges"))
-    s.active_edges.push_back({a.at("edge").get<int>(), a.at("x").get<double>()});
+  for (const json& a : j.at("active_edges")) {
+    ActiveEdge e{a.at("edge").get<int>(), a.at("x").get<double>()};
+    if (a.contains("winding")) e.winding = a["winding"].get<int>();
+    s.active_edges.push_back(e);
+  }
   for (const json& p : j.at("active_points"))
     s.active_points.push_back(
         {p.at("x").get<double>(), p.at("edge").get<int>(), p.at("color").get<Color>()});
@@ -170,6 +193,21 @@ Scanline decode_scanline(const json& j) {
   if (j.contains("span_colors"))
     s.span_colors = SpanColors{j["span_colors"].at("begin").get<Color>(),
                                j["span_colors"].at("end").get<Color>()};
+  if (j.contains("intervals")) {
+    s.intervals.emplace();
+    for (const json& i : j["intervals"]) {
+      Interval x;
+      x.pixels = {i.at("x_begin").get<i64>(), i.at("x_end").get<i64>()};
+      x.left_edge = i.at("left_edge").get<int>();
+      x.right_edge = i.at("right_edge").get<int>();
+      x.x_left = i.at("x_left").get<double>();
+      x.x_right = i.at("x_right").get<double>();
+      if (i.contains("colors"))
+        x.colors =
+            SpanColors{i["colors"].at("begin").get<Color>(), i["colors"].at("end").get<Color>()};
+      s.intervals->push_back(x);
+    }
+  }
   return s;
 }
 

@@ -21,18 +21,24 @@ TriangleBegin to_event(const PolygonSetup& s) {
   e.colors.assign(s.colors.begin(), s.colors.end());
   e.depth = s.depth;
   if (s.options->shading == Shading::flat) e.flat_color = s.flat_color;
+  int next = 0;
+  for (const int size : s.contour_sizes) {
+    std::vector<int>& c = e.contours.emplace_back();
+    for (int k = 0; k < size; ++k) c.push_back(next++);
+  }
   return e;
 }
 
 EdgeTableEvent to_event(const EdgeTableView& v) {
   EdgeTableEvent t;
   t.triangle = v.triangle;
-  const std::size_t n = v.snapped.size();
   for (const Edge& e : v.table->edges()) {
     EdgeEntry x;
     x.edge = e.id;
+    // The edge runs from vertex `id` to its other endpoint — the next vertex of its contour,
+    // which is (id + 1) mod n only for a polygon of one contour.
     x.from = v.grid.to_pixels(v.snapped[e.id]);
-    x.to = v.grid.to_pixels(v.snapped[(e.id + 1) % n]);
+    x.to = v.grid.to_pixels(v.snapped[e.top == e.id ? e.bottom : e.top]);
     const Vec2 top = v.grid.to_pixels(e.p_top), bottom = v.grid.to_pixels(e.p_bottom);
     x.y_min = top.y;
     x.y_max = bottom.y;
@@ -57,11 +63,22 @@ Scanline to_event(const ScanlineStep& s) {
   e.y = s.y;
   e.entered.assign(s.entered.begin(), s.entered.end());
   e.retired.assign(s.retired.begin(), s.retired.end());
-  for (const ActiveEdgeState& a : s.active_edges) e.active_edges.push_back({a.edge, a.x});
+  for (const ActiveEdgeState& a : s.active_edges) {
+    e.active_edges.push_back({a.edge, a.x});
+    if (a.winding != 0) e.active_edges.back().winding = a.winding;
+  }
   for (const scantrace::ActivePointState& p : s.active_points)
     e.active_points.push_back({p.x, p.edge, p.color});
   if (s.has_span) e.span = Span{s.x_begin, s.x_end};
   if (s.has_span_colors) e.span_colors = SpanColors{s.span_begin, s.span_end};
+  if (s.has_intervals) {
+    e.intervals.emplace();
+    for (const IntervalState& i : s.intervals) {
+      Interval x{i.left_edge, i.right_edge, i.x_left, i.x_right, Span{i.x_begin, i.x_end}, {}};
+      if (i.has_colors) x.colors = SpanColors{i.begin, i.end};
+      e.intervals->push_back(x);
+    }
+  }
   return e;
 }
 

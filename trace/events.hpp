@@ -31,6 +31,8 @@ struct Header {
   int subpixel_bits = 8;
   std::string level;      // "triangle" | "scanline" | "pixel"
   std::string generator;  // "scantrace X.Y.Z"
+  // "even-odd" | "non-zero": present in traces of general polygons (docs/polygons.md).
+  std::optional<std::string> winding_rule = std::nullopt;
 };
 
 struct TriangleBegin {
@@ -40,10 +42,13 @@ struct TriangleBegin {
   std::vector<Color> colors;
   std::optional<double> depth;
   std::optional<Color> flat_color;  // flat shading only
+  // General polygons: the vertex indices of each contour, in order (`vertices` holds all the
+  // contours' vertices one after another). Empty for a single contour.
+  std::vector<std::vector<int>> contours = {};
 };
 
 struct EdgeEntry {
-  int edge = 0;   // the edge from vertex `edge` to vertex (edge + 1) mod n
+  int edge = 0;   // the edge from vertex `edge` to the next vertex of its contour
   Vec2 from, to;  // snapped endpoints, in that direction
   double y_min = 0, y_max = 0;
   double x_at_y_min = 0;            // x of the upper endpoint
@@ -67,6 +72,7 @@ struct EdgeTableEvent {
 struct ActiveEdge {
   int edge = 0;
   double x = 0;  // the exact intersection with the row, rounded to double
+  std::optional<int> winding = std::nullopt;  // general polygons: +1 going down, -1 up
   friend bool operator==(const ActiveEdge&, const ActiveEdge&) = default;
 };
 
@@ -87,6 +93,15 @@ struct SpanColors {
   Color end;    // colour of pixel x_end - 1
 };
 
+// General polygons: one inside interval of a row, between the active edge where the winding rule
+// turns inside and the one where it turns outside again.
+struct Interval {
+  int left_edge = 0, right_edge = 0;
+  double x_left = 0, x_right = 0;    // the bounding edges' intersections with the row
+  Span pixels;                       // half-open, clipped to the canvas, never empty
+  std::optional<SpanColors> colors;  // Gouraud: colours of its first and last pixel
+};
+
 struct Scanline {
   int triangle = 0;
   i64 y = 0;
@@ -95,6 +110,8 @@ struct Scanline {
   std::vector<ActivePoint> active_points;  // sorted by x
   std::optional<Span> span;
   std::optional<SpanColors> span_colors;  // Gouraud
+  // General polygons: every inside interval, left to right; `span` is then the first of them.
+  std::optional<std::vector<Interval>> intervals = std::nullopt;
 };
 
 struct Pixel {

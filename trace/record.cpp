@@ -4,6 +4,10 @@
 #include "jsonl_writer.hpp"
 #include "recorder.hpp"
 #include "src/painter.hpp"
+#include "src/winding_fill.hpp"
+
+#include <span>
+#include <type_traits>
 
 namespace scantrace::trace {
 namespace {
@@ -24,6 +28,28 @@ void fill_traced(Tracer& tracer, const Scene& scene, const FillOptions& options,
   if (image) *image = std::move(canvas);
 }
 
+template <class Tracer>
+void fill_traced(Tracer& tracer, const GeneralPolygonInput& p, const FillOptions& options,
+                 RgbImage* image) {
+  RgbImage canvas(p.width, p.height, Rgb32f::from(p.background));
+  fill_polygon_contours(canvas, std::span(p.contours), std::span(p.colors), options, tracer);
+  if (image) *image = std::move(canvas);
+}
+
+// Only polygon traces name a winding rule: the triangle and scene fills do not use one.
+Header header_of(int width, int height, const FillOptions& options, TraceLevel level,
+                 bool polygon) {
+  Header h = make_header(width, height, options, level);
+  if (polygon) h.winding_rule = to_string(options.winding_rule);
+  return h;
+}
+
+int width_of(const GeneralPolygonInput& p) {
+  return p.width;
+}
+int height_of(const GeneralPolygonInput& p) {
+  return p.height;
+}
 int width_of(const TriangleInput& t) {
   return t.width;
 }
@@ -41,7 +67,9 @@ template <class Input>
 Trace record(const Input& input, const FillOptions& options, const TraceFilter& filter,
              RgbImage* image) {
   EventTracer<Recorder> tracer(
-      Recorder(make_header(width_of(input), height_of(input), options, filter.level)), filter);
+      Recorder(header_of(width_of(input), height_of(input), options, filter.level,
+                         std::is_same_v<Input, GeneralPolygonInput>)),
+      filter);
   fill_traced(tracer, input, options, image);
   return tracer.finish();
 }
@@ -50,7 +78,8 @@ template <class Input>
 Footer write(const std::filesystem::path& path, const Input& input, const FillOptions& options,
              const TraceFilter& filter, RgbImage* image) {
   EventTracer<JsonlFileWriter> tracer(
-      JsonlFileWriter(path, make_header(width_of(input), height_of(input), options, filter.level)),
+      JsonlFileWriter(path, header_of(width_of(input), height_of(input), options, filter.level,
+                                      std::is_same_v<Input, GeneralPolygonInput>)),
       filter);
   fill_traced(tracer, input, options, image);
   tracer.finish();
@@ -73,6 +102,16 @@ Footer write_triangle_trace(const std::filesystem::path& path, const TriangleInp
                             const FillOptions& options, const TraceFilter& filter,
                             RgbImage* image) {
   return write(path, t, options, filter, image);
+}
+
+Trace record_polygon(const GeneralPolygonInput& p, const FillOptions& options,
+                     const TraceFilter& filter, RgbImage* image) {
+  return record(p, options, filter, image);
+}
+
+Footer write_polygon_trace(const std::filesystem::path& path, const GeneralPolygonInput& p,
+                           const FillOptions& options, const TraceFilter& filter, RgbImage* image) {
+  return write(path, p, options, filter, image);
 }
 
 Footer write_scene_trace(const std::filesystem::path& path, const Scene& scene,

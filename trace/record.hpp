@@ -4,6 +4,7 @@
 // narration with the pixels.
 #include <array>
 #include <filesystem>
+#include <vector>
 
 #include "src/image.hpp"
 #include "src/scene.hpp"
@@ -19,6 +20,15 @@ struct TriangleInput {
   Color background{1, 1, 1};
 };
 
+// A general polygon (docs/polygons.md): closed contours, one colour per vertex (the contours'
+// vertices one after another), filled under options.winding_rule.
+struct GeneralPolygonInput {
+  std::vector<std::vector<Vec2>> contours;
+  std::vector<Color> colors;
+  int width = 512, height = 512;
+  Color background{1, 1, 1};
+};
+
 // In memory.
 Trace record_triangle(const TriangleInput& triangle, const FillOptions& options,
                       const TraceFilter& filter = {}, RgbImage* image = nullptr);
@@ -29,6 +39,11 @@ Trace record_scene(const Scene& scene, const FillOptions& options, const TraceFi
 Footer write_triangle_trace(const std::filesystem::path& path, const TriangleInput& triangle,
                             const FillOptions& options, const TraceFilter& filter = {},
                             RgbImage* image = nullptr);
+Trace record_polygon(const GeneralPolygonInput& polygon, const FillOptions& options,
+                     const TraceFilter& filter = {}, RgbImage* image = nullptr);
+Footer write_polygon_trace(const std::filesystem::path& path, const GeneralPolygonInput& polygon,
+                           const FillOptions& options, const TraceFilter& filter = {},
+                           RgbImage* image = nullptr);
 Footer write_scene_trace(const std::filesystem::path& path, const Scene& scene,
                          const FillOptions& options, const TraceFilter& filter = {},
                          RgbImage* image = nullptr);

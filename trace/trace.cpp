@@ -200,12 +200,22 @@ PixelHistory Trace::pixel_history(i64 x, i64 y) const {
   if (auto it = rows_.find(y); it != rows_.end())
     for (std::size_t i : it->second) {
       const Scanline& s = std::get<Scanline>(events_[i]);
-      if (!s.span || !s.span->contains(x) || !at(s.triangle).pixels.empty()) continue;
+      if (!s.span || !at(s.triangle).pixels.empty()) continue;
+      // A general polygon's row has one span per inside interval.
+      std::optional<Span> span;
+      std::optional<SpanColors> colors;
+      if (s.intervals) {
+        for (const Interval& iv : *s.intervals)
+          if (iv.pixels.contains(x)) span = iv.pixels, colors = iv.colors;
+      } else if (s.span->contains(x)) {
+        span = s.span, colors = s.span_colors;
+      }
+      if (!span) continue;
       Color c;
-      if (s.span_colors) {
-        const i64 last = s.span->x_end - 1 - s.span->x_begin;
-        const double w = last > 0 ? static_cast<double>(x - s.span->x_begin) / last : 0.0;
-        c = s.span_colors->begin + (s.span_colors->end - s.span_colors->begin) * w;
+      if (colors) {
+        const i64 last = span->x_end - 1 - span->x_begin;
+        const double w = last > 0 ? static_cast<double>(x - span->x_begin) / last : 0.0;
+        c = colors->begin + (colors->end - colors->begin) * w;
       } else if (const auto& ix = at(s.triangle); ix.begin) {
         const TriangleBegin& b = std::get<TriangleBegin>(events_[*ix.begin]);
         if (b.flat_color) c = *b.flat_color;

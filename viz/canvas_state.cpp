@@ -53,6 +53,17 @@ void CanvasState::paint_scanline(const trace::Trace& trace, const trace::Scanlin
     flat = trace.triangle_begin(s.triangle).flat_color;
   } catch (const std::out_of_range&) {
   }
+  if (s.intervals) {
+    // A general polygon's row: each inside interval is a span of its own.
+    for (const trace::Interval& iv : *s.intervals) {
+      trace::Scanline one;
+      one.span = iv.pixels;
+      one.span_colors = iv.colors;
+      for (std::int64_t x = iv.pixels.x_begin; x < iv.pixels.x_end; ++x)
+        put(x, s.y, span_pixel_colour(one, flat, x));
+    }
+    return;
+  }
   for (std::int64_t x = s.span->x_begin; x < s.span->x_end; ++x)
     put(x, s.y, span_pixel_colour(s, flat, x));
 }

@@ -29,6 +29,12 @@ std::string shading_text(const trace::Header& h) {
 
 std::string triangle_text(const trace::Trace& t, int triangle) {
   const trace::TriangleBegin* b = find_begin(t, triangle);
+  // A general polygon: its size and rule, as its vertex list would not fit on a line.
+  if (t.header().winding_rule)
+    return fmt::format("Polygon {}: {} vertices, {} {}, {}", triangle, b ? b->vertices.size() : 0,
+                       b ? std::max<std::size_t>(1, b->contours.size()) : 1,
+                       b && b->contours.size() > 1 ? "contours" : "contour",
+                       *t.header().winding_rule);
   std::string s = fmt::format("Triangle {}", triangle);
   if (!b) return s;
   s += ":";
@@ -102,9 +108,13 @@ void draw_title_card(cv::Mat& frame, const Typography& type, const trace::Trace&
     w.paragraph("1   Set-up: the vertices, snapped to the subpixel grid, and their colours.");
     w.gap(4);
     w.paragraph("2   The edge table: one entry per edge, with y_min, y_max, x and dx/dy.");
+    const bool polygon = trace.header().winding_rule.has_value();
     std::string scanlines =
-        "3   The scanlines, top to bottom: the active edges, where they cross the row, the span "
-        "of pixels filled, and the colours interpolated.";
+        polygon ? "3   The scanlines, top to bottom: the active edges, where they cross the row, "
+                  "their windings (+1 down, -1 up), the inside intervals filled, and the colours "
+                  "interpolated."
+                : "3   The scanlines, top to bottom: the active edges, where they cross the row, "
+                  "the span of pixels filled, and the colours interpolated.";
     if (info.rows_per_step > 1)
       scanlines +=
           fmt::format(" Up to {} rows per step; rows where an edge enters or leaves get their own.",
@@ -112,7 +122,7 @@ void draw_title_card(cv::Mat& frame, const Typography& type, const trace::Trace&
     w.gap(4);
     w.paragraph(scanlines);
     w.gap(4);
-    w.paragraph("4   The finished triangle.");
+    w.paragraph(polygon ? "4   The finished polygon." : "4   The finished triangle.");
   }
   if (plan.order.empty())
     w.paragraph("The trace holds no triangle (all filtered out?): there is nothing to replay.",

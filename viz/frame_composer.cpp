@@ -94,8 +94,10 @@ void FrameComposer::title_bar(cv::Mat& frame, const Step& step, std::size_t inde
           ? fmt::format("painter's algorithm, {} triangles   |   {} shading, {} rule",
                         integer(static_cast<std::int64_t>(plan_.order.size())), h.shading,
                         h.fill_rule)
-          : fmt::format("triangle {}   |   {} shading, {} rule", step.triangle, h.shading,
-                        h.fill_rule);
+      : h.winding_rule ? fmt::format("polygon {}   |   {} shading, {} rule, {} winding",
+                                     step.triangle, h.shading, h.fill_rule, *h.winding_rule)
+                       : fmt::format("triangle {}   |   {} shading, {} rule", step.triangle,
+                                     h.shading, h.fill_rule);
   type_.draw(frame, context, {x + type_.px(18), top + type_.px(2)}, TextStyle::body,
              palette::kTitleText);
   const std::string right = counter(step, index, plan_.steps.size());
@@ -115,7 +117,7 @@ void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step,
   const trace::Scanline* row = step.kind == StepKind::scanlines
                                    ? find_scanline(trace_, step.triangle, step.last_row)
                                    : nullptr;
-  if (b) view.outline(polygon_of(*b), palette::kOutline, step.kind == StepKind::scanlines ? 1 : 2);
+  if (b) view.outline(*b, palette::kOutline, step.kind == StepKind::scanlines ? 1 : 2);
   if (table && step.kind == StepKind::edge_table_entry) {
     const int n = static_cast<int>(table->edges.size());
     for (int i = 0; i <= step.entry && i < n; ++i)
@@ -130,7 +132,7 @@ void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step,
     for (const trace::ActiveEdge& a : row->active_edges)
       if (const trace::EdgeEntry* e = find_edge(table, a.edge))
         view.edge(e->from, e->to, e->edge, true);
-    if (row->span) view.span(row->y, *row->span);
+    view.spans(*row);
   }
   if (b) view.vertices(*b);
   if (row) view.active_points(*row);
@@ -171,7 +173,7 @@ void FrameComposer::card_picture(cv::Mat& frame, const Step& step, const CanvasS
   if (step.kind == StepKind::title && plan_.order.size() <= kMaxOutlines)
     for (int t : plan_.order)
       if (const trace::TriangleBegin* b = find_begin(trace_, t))
-        view.outline(polygon_of(*b), palette::kOutline, one ? 2 : 1);
+        view.outline(*b, palette::kOutline, one ? 2 : 1);
   if (one)
     if (const trace::TriangleBegin* b = find_begin(trace_, plan_.order.front())) view.vertices(*b);
   cv::rectangle(frame, area, palette::kPanelBorder, 1);

@@ -11,6 +11,7 @@
 #include "viz/opencv_image.hpp"
 #include "viz/palette.hpp"
 #include "viz/text_format.hpp"
+#include "viz/trace_lookup.hpp"
 
 namespace scantrace::viz {
 namespace {
@@ -102,6 +103,18 @@ void GridView::outline(std::span<const Vec2> polygon, const cv::Scalar& colour,
   }
 }
 
+void GridView::outline(const trace::TriangleBegin& polygon, const cv::Scalar& colour,
+                       double design_thickness) {
+  for (const std::vector<Vec2>& c : contours_of(polygon)) outline(c, colour, design_thickness);
+}
+
+void GridView::spans(const trace::Scanline& row) {
+  if (row.intervals)
+    for (const trace::Interval& iv : *row.intervals) span(row.y, iv.pixels);
+  else if (row.span)
+    span(row.y, *row.span);
+}
+
 void GridView::edge(Vec2 from, Vec2 to, int id, bool active) {
   draw_segment_with_halo(frame_, at(from.x, from.y), at(to.x, to.y), geometry_.view(),
                          palette::edge_colour(id), type_.px(active ? 4 : 2), palette::kHalo,
@@ -185,14 +198,16 @@ void GridView::active_points(const trace::Scanline& row) {
     cv::circle(frame_, qi, r + type_.px(2), palette::edge_colour(p.edge), cv::FILLED, cv::LINE_AA);
     cv::circle(frame_, qi, r, to_scalar(p.color), cv::FILLED, cv::LINE_AA);
     // The leftmost label goes left of its point, the rightmost right of it, so the two x values
-    // of a row never overlap even where the points meet at a vertex.
+    // of a row never overlap even where the points meet at a vertex. With more points (general
+    // polygons) the ones between alternate above and below the row.
     const std::string label = fmt::format("x = {}", number(p.x, 2));
     const cv::Size s = type_.measure(label, TextStyle::strong);
     const int gap = r + type_.px(6);
     int left = static_cast<int>(q.x) - s.width / 2;
     if (n >= 2 && i == 0) left = static_cast<int>(q.x) - gap - s.width;
     if (n >= 2 && i == n - 1) left = static_cast<int>(q.x) + gap;
-    const int top = static_cast<int>(q.y) - gap - s.height;
+    const bool below = n > 2 && i > 0 && i + 1 < n && i % 2 == 1;
+    const int top = below ? static_cast<int>(q.y) + gap : static_cast<int>(q.y) - gap - s.height;
     type_.draw_boxed(frame_, label, inside({left, top}, s), TextStyle::strong, palette::kText,
                      palette::kLabelBox, palette::edge_colour(p.edge));
   }

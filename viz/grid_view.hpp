@@ -27,11 +27,16 @@ class GridView {
   void cells(const CanvasState& state);
   void grid();
   void outline(std::span<const Vec2> polygon, const cv::Scalar& colour, double design_thickness);
+  // Every closed contour of the polygon (one for a triangle).
+  void outline(const trace::TriangleBegin& polygon, const cv::Scalar& colour,
+               double design_thickness);
   // An edge of the edge table in its own colour; `active` ones are drawn bold.
   void edge(Vec2 from, Vec2 to, int id, bool active);
   void vertices(const trace::TriangleBegin& triangle);
   void scanline(std::int64_t y, bool labelled = true);
   void span(std::int64_t y, const trace::Span& span);
+  // The row's span, or every inside interval of a general polygon's row.
+  void spans(const trace::Scanline& row);
   void active_points(const trace::Scanline& row);
 
  private:

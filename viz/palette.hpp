@@ -33,8 +33,10 @@ inline const cv::Scalar kLabelBox{255, 255, 255};
 // Edge ids keep their colour in every view and table: 0 orange, 1 magenta, 2 azure, then more for
 // polygons with more edges.
 inline cv::Scalar edge_colour(int edge) {
-  static const cv::Scalar colours[] = {{0, 130, 255},  {200, 40, 200}, {215, 150, 0},
-                                       {40, 160, 100}, {90, 90, 200},  {150, 110, 60}};
+  static const cv::Scalar colours[] = {{0, 130, 255},  {200, 40, 200},  {215, 150, 0},
+                                       {40, 160, 100}, {90, 90, 200},   {150, 110, 60},
+                                       {0, 90, 160},   {160, 160, 0},   {120, 0, 200},
+                                       {60, 110, 30},  {200, 100, 140}, {100, 60, 120}};
   const int n = static_cast<int>(sizeof colours / sizeof colours[0]);
   return colours[((edge % n) + n) % n];
 }

@@ -41,15 +41,15 @@ std::string id_list(const std::vector<int>& ids) {
 
 // The edge table; `listed` entries shown (all when negative), entry `newest` highlighted, and
 // with a current row, the edges not active on it greyed out.
-void edge_table(PanelWriter& w, const EdgeTableEvent& table, std::size_t vertices, int listed,
+void edge_table(PanelWriter& w, const EdgeTableEvent& table, const TriangleBegin* b, int listed,
                 int newest, const Scanline* row) {
   std::vector<TableRow> rows;
   const int n = static_cast<int>(table.edges.size());
   for (int i = 0; i < n && (listed < 0 || i < listed); ++i) {
     const EdgeEntry& e = table.edges[i];
     TableRow r;
-    r.cells = {edge_name(e.edge, vertices), number(e.y_min),    number(e.y_max),
-               number(e.x_at_y_min),        number(e.dx_dy, 4), rows_text(e)};
+    r.cells = {edge_name(e.edge, b), number(e.y_min),    number(e.y_max),
+               number(e.x_at_y_min), number(e.dx_dy, 4), rows_text(e)};
     r.marker = palette::edge_colour(e.edge);
     r.highlighted = i == newest;
     if (row)
@@ -94,7 +94,15 @@ void setup_panel(PanelWriter& w, const trace::Trace& t, const TriangleBegin& b) 
         "edges (per row), then along the row between them (per pixel).");
   }
   w.gap(8);
-  if (top_left_rule(t))
+  if (t.header().winding_rule)
+    w.paragraph(fmt::format(
+        "Winding rule {}: on each row every active edge counts +1 (going down) or -1 (going "
+        "up); a pixel centre is inside when the edges at or left of it {}. Contours after the "
+        "first are holes or more pieces, as the rule decides.",
+        *t.header().winding_rule,
+        *t.header().winding_rule == "non-zero" ? "sum to a non-zero winding number"
+                                               : "are odd in number"));
+  else if (top_left_rule(t))
     w.paragraph(
         "Fill rule top-left: a pixel is filled when its centre lies inside the triangle, or on "
         "a top or left edge. So rows ceil(y_min)~..~ceil(y_max)~-~1 are filled, and on each "
@@ -109,18 +117,17 @@ void setup_panel(PanelWriter& w, const trace::Trace& t, const TriangleBegin& b) 
 
 void entry_panel(PanelWriter& w, const trace::Trace& t, const TriangleBegin* b,
                  const EdgeTableEvent& table, int entry) {
-  const std::size_t nv = b ? b->vertices.size() : 3;
   const int n = static_cast<int>(table.edges.size());
   w.heading("2  Building the edge table");
   w.paragraph(
       "One entry per edge that crosses scanlines: where it starts (y_min and x there), where it "
       "ends (y_max), and dx/dy, how far x moves from one row to the next. Sorted by y_min.");
   w.gap(6);
-  edge_table(w, table, nv, std::min(entry + 1, n), entry < n ? entry : -1, nullptr);
+  edge_table(w, table, b, std::min(entry + 1, n), entry < n ? entry : -1, nullptr);
   w.gap(10);
   if (entry < n) {
     const EdgeEntry& e = table.edges[entry];
-    const int to = (e.edge + 1) % static_cast<int>(nv);
+    const int to = next_vertex(b, e.edge);
     // Entries run top to bottom: `from` is stored in the edge's own direction, so name the
     // endpoints by y rather than by vertex.
     const Vec2 top = e.from.y <= e.to.y ? e.from : e.to,
@@ -183,9 +190,70 @@ std::string narrative(const trace::Trace& t, const Step& step, const Scanline& r
   return s;
 }
 
+// A row of a general polygon (docs/polygons.md): any even number of active edges, each with its
+// winding direction and the running winding number after it, and the inside intervals.
+void polygon_scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step,
+                            const TriangleBegin* b, const EdgeTableEvent* table,
+                            const Scanline& row) {
+  const std::string rule = t.header().winding_rule.value_or("even-odd");
+  const bool even_odd = rule != "non-zero";
+  w.heading(step.first_row == step.last_row
+                ? fmt::format("3  Scanline y = {}", row.y)
+                : fmt::format("3  Scanlines y = {} .. {}", step.first_row, step.last_row));
+  w.paragraph(fmt::format(
+      "Walking the row left to right, each active edge adds its winding (+1 going down, -1 going "
+      "up). Rule {}: a pixel is inside where {}. Inside intervals fill ceil(x_L)~..~ceil(x_R)~-~1.",
+      rule, even_odd ? "the count of edges passed is odd" : "the winding sum is not zero"));
+  w.gap(6);
+  w.line(fmt::format("Active edge table at y = {} ({} edges)", row.y, row.active_edges.size()),
+         TextStyle::strong);
+  std::vector<TableRow> aet;
+  int winding = 0;
+  for (const trace::ActiveEdge& a : row.active_edges) {
+    const EdgeEntry* e = find_edge(table, a.edge);
+    const int d = a.winding.value_or(0);
+    winding += d;
+    const bool inside = even_odd ? (winding & 1) != 0 : winding != 0;
+    TableRow r;
+    r.cells = {edge_name(a.edge, b), fixed(a.x, 3), d > 0 ? "+1 down" : "-1 up",
+               fmt::format("{}{}", winding, inside ? "  in" : "  out"), e ? number(e->y_max) : "?"};
+    r.marker = palette::edge_colour(a.edge);
+    aet.push_back(r);
+  }
+  w.table({{"edge", false}, {"x on this row"}, {"winding"}, {"sum after"}, {"y_max"}}, aet);
+  w.gap(8);
+  if (!row.intervals || row.intervals->empty()) {
+    w.line("Inside intervals: none with a pixel centre on this row", TextStyle::body);
+    return;
+  }
+  w.line(fmt::format("Inside intervals ({})", row.intervals->size()), TextStyle::strong);
+  const std::optional<Color> flat = b ? b->flat_color : std::nullopt;
+  // Swatches for up to two intervals; more would push the formula off the panel.
+  const bool swatches = row.intervals->size() <= 2;
+  for (const trace::Interval& iv : *row.intervals) {
+    w.line(fmt::format("e{} .. e{}: x = {} .. {}  -> pixels {} .. {}", iv.left_edge, iv.right_edge,
+                       fixed(iv.x_left, 2), fixed(iv.x_right, 2), iv.pixels.x_begin,
+                       iv.pixels.x_end - 1),
+           TextStyle::body);
+    if (!swatches) continue;
+    if (iv.colors) {
+      w.swatch(iv.colors->begin,
+               fmt::format("pixel {}: {}", iv.pixels.x_begin, colour(iv.colors->begin)));
+      if (iv.pixels.size() > 1)
+        w.swatch(iv.colors->end,
+                 fmt::format("pixel {}: {}", iv.pixels.x_end - 1, colour(iv.colors->end)));
+    } else if (flat) {
+      w.swatch(*flat, fmt::format("flat colour {}", colour(*flat)));
+    }
+  }
+  w.gap(8);
+  w.formula({"per row:    x += dx/dy for each active edge; re-sort by x",
+             "per pixel:  c(x) = c_L + (x - x_L) / (x_R - x_L) * (c_R - c_L)"});
+}
+
 void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, const TriangleBegin* b,
                     const EdgeTableEvent* table, const Scanline& row) {
-  const std::size_t nv = b ? b->vertices.size() : 3;
+  if (row.intervals) return polygon_scanline_panel(w, t, step, b, table, row);
   w.heading(step.first_row == step.last_row
                 ? fmt::format("3  Scanline y = {}", row.y)
                 : fmt::format("3  Scanlines y = {} .. {}", step.first_row, step.last_row));
@@ -193,7 +261,7 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
   w.gap(6);
   if (table) {
     w.line("Edge table", TextStyle::strong);
-    edge_table(w, *table, nv, -1, -1, &row);
+    edge_table(w, *table, b, -1, -1, &row);
     w.gap(6);
   }
   w.line(fmt::format("Active edge table at y = {}", row.y), TextStyle::strong);
@@ -201,7 +269,7 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
   for (const trace::ActiveEdge& a : row.active_edges) {
     TableRow r;
     const EdgeEntry* e = find_edge(table, a.edge);
-    r.cells = {edge_name(a.edge, nv), fixed(a.x, 3), e ? number(e->dx_dy, 4) : "?",
+    r.cells = {edge_name(a.edge, b), fixed(a.x, 3), e ? number(e->dx_dy, 4) : "?",
                e ? number(e->y_max) : "?"};
     r.marker = palette::edge_colour(a.edge);
     aet.push_back(r);
@@ -273,8 +341,8 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
 
 void done_panel(PanelWriter& w, const trace::Trace& t, const TriangleBegin* b,
                 const EdgeTableEvent* table, int triangle) {
-  const std::size_t nv = b ? b->vertices.size() : 3;
-  w.heading(fmt::format("4  Triangle {} is filled", triangle));
+  w.heading(fmt::format("4  {} {} is filled", t.header().winding_rule ? "Polygon" : "Triangle",
+                        triangle));
   if (const auto end = t.triangle_end(triangle))
     w.paragraph(fmt::format("{} {}, {} {} written, each exactly once.", integer(end->rows),
                             end->rows == 1 ? "row" : "rows", integer(end->pixels),
@@ -288,7 +356,7 @@ void done_panel(PanelWriter& w, const trace::Trace& t, const TriangleBegin* b,
   w.gap(6);
   if (table) {
     w.line("Edge table", TextStyle::strong);
-    edge_table(w, *table, nv, -1, -1, nullptr);
+    edge_table(w, *table, b, -1, -1, nullptr);
     w.gap(8);
   }
   if (top_left_rule(t))

@@ -57,12 +57,12 @@ void draw_inset(cv::Mat& frame, const cv::Rect& r, double cell, const Typography
   GridView view(frame, g, type, canvas);
   view.cells(state);
   view.grid();
-  if (b) view.outline(polygon_of(*b), palette::kOutline, 1);
+  if (b) view.outline(*b, palette::kOutline, 1);
   view.scanline(row.y, false);
   for (const trace::ActiveEdge& a : row.active_edges)
     if (const trace::EdgeEntry* e = find_edge(table, a.edge))
       view.edge(e->from, e->to, e->edge, true);
-  if (row.span) view.span(row.y, *row.span);
+  view.spans(row);
   view.active_points(row);
   type.draw_boxed(frame, title, {r.x + type.px(6), r.y + type.px(6)}, TextStyle::small,
                   palette::kText, palette::kLabelBox);

@@ -1,6 +1,10 @@
 // `scantrace trace`: what it writes is the recorded narration of the same fill; filters and caps
 // are honoured and reported; bad arguments are usage errors, bad input files input errors.
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "cli_test_support.hpp"
 #include "io/scene_json.hpp"
@@ -77,4 +81,67 @@ TEST_CASE("trace: usage errors exit 2, bad input exits 1 naming the file", "[com
   CHECK(bad.exit_code == 1);
   CHECK_THAT(bad.err, Catch::StartsWith("scantrace: error: bad.json: faces[0]"));
   CHECK_FALSE(std::filesystem::exists(dir / "x.jsonl"));
+}
+
+TEST_CASE("trace --polygon writes the narration of a polygon with a hole under a winding rule",
+          "[command][trace][polygon]") {
+  TempDir dir;
+  const auto r =
+      run_scantrace(dir.path(), {"trace", "--polygon", "2,2 20,2 20,20 2,20 | 8,8 14,8 14,14 8,14",
+                                 "--winding", "non-zero", "--size", "24x24", "-o", "p.jsonl"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const trace::Trace t = trace::Trace::load(dir / "p.jsonl");
+  CHECK(t.header().winding_rule == std::optional<std::string>("non-zero"));
+  // The hole runs the same way round as the square: winding 2 inside it, filled under non-zero.
+  CHECK(t.triangle_end(0)->pixels == 18 * 18);
+  const trace::Scanline& row = t.scanline(0, 10);
+  CHECK(row.active_edges.size() == 4);
+  REQUIRE(row.intervals);
+  CHECK(row.intervals->size() == 1);
+  // Default colours repeat red, green, blue over the eight vertices.
+  CHECK(t.triangle_begin(0).colors.size() == 8);
+  CHECK(t.triangle_begin(0).colors[3].r == 1);
+
+  const auto eo =
+      run_scantrace(dir.path(), {"trace", "--polygon", "2,2 20,2 20,20 2,20 | 8,8 14,8 14,14 8,14",
+                                 "--size", "24x24", "-o", "e.jsonl"});
+  REQUIRE(eo.exit_code == 0);
+  const trace::Trace e = trace::Trace::load(dir / "e.jsonl");
+  CHECK(e.header().winding_rule == std::optional<std::string>("even-odd"));
+  CHECK(e.triangle_end(0)->pixels == 18 * 18 - 6 * 6);
+  CHECK(e.scanline(0, 10).intervals->size() == 2);
+}
+
+TEST_CASE("trace --polygon: malformed polygons and the closed rule are usage errors",
+          "[command][trace][polygon]") {
+  TempDir dir;
+  auto code = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), "trace");
+    args.insert(args.end(), {"-o", "x.jsonl"});
+    return run_scantrace(dir.path(), args).exit_code;
+  };
+  CHECK(code({"--polygon", "0,0 9,0 | 1,1 2,2 3,1"}) == 2);  // a contour of two points
+  CHECK(code({"--polygon", "0,0 9,0 x,1"}) == 2);
+  CHECK(code({"--polygon", "0,0 9,0 0,9", "--fill-rule", "closed"}) == 2);
+  CHECK(code({"--polygon", "0,0 9,0 0,9", "--colors", "1,0,0 0,1,0 0,0,1 1,1,1"}) == 2);
+  CHECK(code({"--polygon", "0,0 9,0 0,9", "--triangle", "0,0 9,0 0,9"}) == 2);
+  CHECK(code({"--triangle", "0,0 9,0 0,9", "--winding", "non-zero"}) == 2);
+  CHECK(code({"--polygon", "0,0 9,0 0,9", "--winding", "odd"}) == 2);
+  CHECK_FALSE(std::filesystem::exists(dir / "x.jsonl"));
+}
+
+TEST_CASE("explain --polygon replays the polygon into frames", "[command][explain][polygon]") {
+  TempDir dir;
+  const auto r = run_scantrace(
+      dir.path(), {"explain", "--polygon", "2,2 20,2 20,20 2,20 | 8,8 14,8 14,14 8,14", "--size",
+                   "22x22", "--winding", "non-zero", "-o", "frames/", "--video-size", "640x360"});
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  // Title, set-up, one step per edge-table entry (4 edges, 4 horizontal), scanline steps, the
+  // finished polygon and the end card: more than a dozen frames.
+  int frames = 0;
+  for (const auto& f : std::filesystem::directory_iterator(dir / "frames"))
+    frames += f.path().extension() == ".png";
+  CHECK(frames > 12);
 }

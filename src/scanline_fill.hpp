@@ -14,6 +14,7 @@
 // directly at the first visible row (Edge::start_at). Columns outside are clipped before writing.
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -63,6 +64,8 @@ struct FillScratch {
   std::vector<int> entered, retired;
   std::vector<ActiveEdgeState> active_states;
   std::vector<ActivePointState> active_points;
+  // A row of the current polygon's flat colour in the canvas's pixel format (fill_flat_span).
+  std::vector<unsigned char> pattern;
 
   template <class Stepper>
   std::vector<ActiveEdge<Stepper>>& active() {
@@ -202,6 +205,27 @@ struct RunEdgeColor<ExactStepper> {
   }
 };
 
+// A flat span of a direct canvas. Short spans (the common case) are a plain loop; long ones are
+// one memcpy from a row of the polygon's colour kept in `pattern`, which is built on the first long
+// span and grown geometrically, so a large flat polygon is written at memcpy speed.
+template <class P>
+void fill_flat_span(P* out, int n, P value, std::vector<unsigned char>& pattern,
+                    std::size_t& pattern_pixels) {
+  constexpr int kShort = 32;
+  if (n <= kShort) {
+    for (int k = 0; k < n; ++k) out[k] = value;
+    return;
+  }
+  const auto need = static_cast<std::size_t>(n);
+  if (pattern_pixels < need) {
+    pattern_pixels = std::max(need, 2 * pattern_pixels);
+    pattern.resize(pattern_pixels * sizeof(P));
+    for (std::size_t k = 0; k < pattern_pixels; ++k)
+      std::memcpy(pattern.data() + k * sizeof(P), &value, sizeof(P));
+  }
+  std::memcpy(out, pattern.data(), need * sizeof(P));
+}
+
 // What the set-up hands to the sweep.
 struct Setup {
   SubpixelGrid grid;
@@ -238,6 +262,7 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
   active.clear();
   std::size_t next = 0;
   i64 rows = 0, pixels = 0;
+  [[maybe_unused]] std::size_t pattern_pixels = 0;  // of s.pattern, valid for this polygon
   [[maybe_unused]] const auto flat_pixel = [&] {
     if constexpr (DirectCanvas<C>)
       return C::convert(setup.flat);
@@ -328,7 +353,7 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
         };
         if (!shade) {
           if constexpr (DirectCanvas<C>)
-            C::fill_pixels(canvas.row(yi) + xb, canvas.row(yi) + xe, flat_pixel);
+            fill_flat_span(canvas.row(yi) + xb, xe - xb, flat_pixel, s.pattern, pattern_pixels);
           else
             canvas.fill_span(yi, xb, xe, setup.flat);
           if constexpr (kPixelLevel)
@@ -336,25 +361,23 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
               for (int x = xb; x < xe; ++x) tracer.pixel(in.triangle, x, y, setup.flat, weight(x));
         } else {
           SpanShader<Stepper> shade(c_left, c_right, x_left, x_right, x_begin);
+          // The exact method's span is linear from its first pixel's colour, so an image canvas
+          // writes it in its pixel format's fastest way (whether the row is traced or not, so that
+          // tracing never changes a pixel); the loop below then only narrates.
+          constexpr bool kCanvasShades = DirectCanvas<C> && std::is_same_v<Stepper, ExactStepper>;
+          if constexpr (kCanvasShades) canvas.shade_span(yi, xb, xe, shade.c, shade.step);
           if constexpr (kScanlineLevel)
             if (trace_row) span_first = shade.color();
-          [[maybe_unused]] auto row = [&] {
-            if constexpr (DirectCanvas<C>)
-              return canvas.row(yi);
-            else
-              return nullptr;
-          }();
-          for (int x = xb; x < xe; ++x) {
-            const Color c = shade.color();
-            if constexpr (DirectCanvas<C>)
-              row[x] = C::convert(c);
-            else
-              canvas.set(x, yi, c);
-            if constexpr (kPixelLevel)
-              if (trace_pixels) tracer.pixel(in.triangle, x, y, c, weight(x));
-            if constexpr (kScanlineLevel)
-              if (trace_row) span_last = c;
-            shade.next();
+          if (!kCanvasShades || trace_row) {
+            for (int x = xb; x < xe; ++x) {
+              const Color c = shade.color();
+              if constexpr (!kCanvasShades) canvas.set(x, yi, c);
+              if constexpr (kPixelLevel)
+                if (trace_pixels) tracer.pixel(in.triangle, x, y, c, weight(x));
+              if constexpr (kScanlineLevel)
+                if (trace_row) span_last = c;
+              shade.next();
+            }
           }
         }
         pixels += x_end - x_begin;

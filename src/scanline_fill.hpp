@@ -274,8 +274,7 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
     [[maybe_unused]] bool trace_row = false;
     if constexpr (kScanlineLevel) {
       trace_row = setup.traced && tracer.wants_scanline(in.triangle, y);
-      s.entered.clear();
-      s.retired.clear();
+      if (trace_row) s.entered.clear(), s.retired.clear();
     }
     // Retire the edges whose last row is behind us (keeping the others in order).
     std::size_t kept = 0;
@@ -418,8 +417,7 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
       if (y == run_last) break;
       if constexpr (kScanlineLevel) {
         trace_row = setup.traced && tracer.wants_scanline(in.triangle, y + 1);
-        s.entered.clear();
-        s.retired.clear();
+        if (trace_row) s.entered.clear(), s.retired.clear();
       }
     }
     if (n_active >= 2) active.front().at = l, active.back().at = r;

@@ -97,11 +97,19 @@ struct Scanline {
   std::optional<SpanColors> span_colors;  // Gouraud
 };
 
+// The outcome of a pixel's depth test (z-buffer renders only).
+struct PixelDepthTest {
+  bool passed = true;
+  double depth = 0;              // the triangle's depth at the pixel centre
+  std::optional<double> stored;  // the buffer's depth before the test; none: empty (+inf)
+};
+
 struct Pixel {
   int triangle = 0;
   i64 x = 0, y = 0;
   Color color;
   double t = 0;  // weight along the span: 0 at the left active point, 1 at the right
+  std::optional<PixelDepthTest> depth_test;
 };
 
 struct TriangleEnd {

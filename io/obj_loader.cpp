@@ -83,7 +83,8 @@ class Checker {
   }
 
   // One OBJ index: 1-based, or negative counting back from the last one defined so far.
-  void index(std::string_view text, long count, const char* what, std::string_view corner) {
+  void index(std::string_view text, long count, const char* what, const char* plural,
+             std::string_view corner) {
     long i = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), i);
     if (ec != std::errc() || end != text.data() + text.size())
@@ -92,7 +93,7 @@ class Checker {
     const long resolved = i < 0 ? count + i + 1 : i;
     if (i == 0 || resolved < 1 || resolved > count)
       fail("f: corner \"" + std::string(corner) + "\": " + what + " index " + std::to_string(i) +
-           " is out of range (" + std::to_string(count) + " " + what + "s so far)");
+           " is out of range (" + std::to_string(count) + " " + plural + " so far)");
   }
 
   void face(const std::vector<std::string_view>& t) {
@@ -110,9 +111,9 @@ class Checker {
         if (slash == std::string_view::npos) break;
         rest = rest.substr(slash + 1);
       }
-      index(parts[0], vertices_, "vertex", t[c]);
-      if (n > 1 && !parts[1].empty()) index(parts[1], texcoords_, "texcoord", t[c]);
-      if (n > 2 && !parts[2].empty()) index(parts[2], normals_, "normal", t[c]);
+      index(parts[0], vertices_, "vertex", "vertices", t[c]);
+      if (n > 1 && !parts[1].empty()) index(parts[1], texcoords_, "texcoord", "texcoords", t[c]);
+      if (n > 2 && !parts[2].empty()) index(parts[2], normals_, "normal", "normals", t[c]);
     }
   }
 

@@ -52,6 +52,8 @@ Scene ModelFlags::load_model(const std::string& file, Shading shading) const {
   o.shading = shading;
   o.gamma = gamma;
   std::tie(o.camera.width, o.camera.height) = parse_size(size);
+  const Vec3 bg = parse_vec3(background, "--background");
+  o.background = {bg.x, bg.y, bg.z};
   if (!eye.empty()) {
     o.camera.perspective = true;
     o.camera.eye = parse_vec3(eye, "--eye");
@@ -126,6 +128,14 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool beside_triangle_flags) {
       ->group(g);
   cmd.add_option(size_option, f.size, "canvas of a model, WIDTHxHEIGHT")
       ->check(parsed_by(parse_size))
+      ->capture_default_str()
+      ->group(g);
+  cmd.add_option("--background", f.background, "canvas colour of a model, R,G,B in [0, 1]")
+      ->check(parsed_by([](const std::string& v) {
+        const Vec3 c = parse_vec3(v, "--background");
+        for (double x : {c.x, c.y, c.z})
+          if (x < 0 || x > 1) throw std::invalid_argument("--background: components in [0, 1]");
+      }))
       ->capture_default_str()
       ->group(g);
   cmd.add_option("--cull", f.cull,

@@ -31,6 +31,7 @@ struct ModelFlags {
   std::string eye, target;
   double fov = 45;
   std::string size = "512x512";
+  std::string background = "1,1,1";
   std::string cull;   // empty: by input
   std::string depth;  // empty: by input
 

@@ -50,10 +50,10 @@ Projection orthographic(const Mesh& m, const Camera& cam, const Box& box) {
 
 Projection perspective(const Mesh& m, const Camera& cam, const Box& box) {
   if (!(cam.fov_degrees > 0 && cam.fov_degrees < 180))
-    throw std::invalid_argument("camera: the field of view must be in (0, 180) degrees");
+    throw std::invalid_argument("the field of view must be in (0, 180) degrees");
   const Vec3 target = cam.target.value_or(box.centre());
   const Vec3 f = normalized(target - cam.eye);
-  if (length(f) == 0) throw std::invalid_argument("camera: the eye is at the target");
+  if (length(f) == 0) throw std::invalid_argument("the eye is at the target");
   Vec3 r = normalized(cross(f, Vec3{0, 1, 0}));
   // Looking straight up or down: world y cannot be "up", take z instead.
   if (length(r) == 0) r = normalized(cross(f, Vec3{0, 0, -1}));
@@ -77,7 +77,7 @@ Projection perspective(const Mesh& m, const Camera& cam, const Box& box) {
 
 Projection project(const Mesh& mesh, const Camera& camera) {
   if (camera.width <= 0 || camera.height <= 0)
-    throw std::invalid_argument("camera: the canvas must have pixels");
+    throw std::invalid_argument("the canvas must have pixels");
   const Box box = bounds(mesh);
   return camera.perspective ? perspective(mesh, camera, box) : orthographic(mesh, camera, box);
 }

@@ -196,3 +196,38 @@ TEST_CASE("the african head renders lit and culled", "[obj][shared_data]") {
   CHECK(covered > 512 * 512 / 4);
   CHECK(asymmetric < covered / 10);
 }
+
+TEST_CASE("model flags: seeds, perspective, gamma and their errors", "[obj]") {
+  TempDir dir;
+  test::write_text(dir / "cube.obj", kCube);
+  const auto render = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), {"render", "cube.obj"});
+    return run_scantrace(dir.path(), args);
+  };
+  // --colors random: a seed names the picture.
+  REQUIRE(render({"--colors", "random", "--unlit", "--seed", "3", "-o", "a.png"}).exit_code == 0);
+  REQUIRE(render({"--colors", "random", "--unlit", "--seed", "3", "-o", "b.png"}).exit_code == 0);
+  REQUIRE(render({"--colors", "random", "--unlit", "--seed", "4", "-o", "c.png"}).exit_code == 0);
+  CHECK(test::read_text(dir / "a.png") == test::read_text(dir / "b.png"));
+  CHECK(test::read_text(dir / "a.png") != test::read_text(dir / "c.png"));
+
+  // A perspective camera off the axes sees three faces of the cube: 6 triangles drawn, 6 culled.
+  auto r = render({"--eye", "3,2.5,4", "--fov", "40", "-o", "p.png"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("6 faces drawn, 6 culled, 0 skipped"));
+
+  // Gamma: the +z face lit head-on is white, so with the light from the side (0.6 of it) the
+  // face reads 0.1 + 0.9·0.6 = 0.64 linear, encoded 0.64^(1/2.2) = 0.8162 → 208 in 8 bits.
+  r = render({"--light", "0,-0.8,-0.6", "--gamma", "2.2", "--shading", "flat", "-o", "g.png"});
+  REQUIRE(r.exit_code == 0);
+  const cv::Mat g = cv::imread((dir / "g.png").string(), cv::IMREAD_COLOR);
+  CHECK(g.at<cv::Vec3b>(256, 256) == cv::Vec3b(208, 208, 208));
+
+  r = render({"--eye", "0,0,0", "--target", "0,0,0", "-o", "e.png"});
+  CHECK(r.exit_code == 1);
+  CHECK(r.err == "scantrace: error: cube.obj: camera: the eye is at the target\n");
+  CHECK(render({"--light", "0,0", "-o", "x.png"}).exit_code == 2);
+  CHECK(render({"--cull", "sideways", "-o", "x.png"}).exit_code == 2);
+  CHECK(render({"--target", "0,0,0", "-o", "x.png"}).exit_code == 2);  // needs --eye
+}

@@ -36,15 +36,18 @@ ojson list(const std::vector<T>& items) {
 }
 
 ojson encode(const Header& h) {
-  return {{"type", "header"},
-          {"format", h.format},
-          {"version", h.version},
-          {"canvas", {{"width", h.canvas.width}, {"height", h.canvas.height}}},
-          {"shading", h.shading},
-          {"fill_rule", h.fill_rule},
-          {"subpixel_bits", h.subpixel_bits},
-          {"level", h.level},
-          {"generator", h.generator}};
+  ojson j = {{"type", "header"},
+             {"format", h.format},
+             {"version", h.version},
+             {"canvas", {{"width", h.canvas.width}, {"height", h.canvas.height}}},
+             {"shading", h.shading},
+             {"fill_rule", h.fill_rule},
+             {"subpixel_bits", h.subpixel_bits},
+             {"level", h.level},
+             {"generator", h.generator}};
+  if (h.visibility != "painter") j["visibility"] = h.visibility;
+  if (h.cull != "none") j["cull"] = h.cull;
+  return j;
 }
 
 ojson encode(const TriangleBegin& e) {
@@ -131,6 +134,8 @@ Header decode_header(const json& j) {
   h.subpixel_bits = j.at("subpixel_bits").get<int>();
   h.level = j.at("level").get<std::string>();
   h.generator = j.at("generator").get<std::string>();
+  h.visibility = j.value("visibility", "painter");
+  h.cull = j.value("cull", "none");
   return h;
 }
 

@@ -31,6 +31,10 @@ struct Header {
   int subpixel_bits = 8;
   std::string level;      // "triangle" | "scanline" | "pixel"
   std::string generator;  // "scantrace X.Y.Z"
+  // Written only when they differ from the course's render (painter's order, no culling), so
+  // that traces of course scenes keep their bytes.
+  std::string visibility = "painter";  // "painter" | "zbuffer"
+  std::string cull = "none";           // "none" | "back" | "front"
 };
 
 struct TriangleBegin {

@@ -10,8 +10,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/fill_flags.hpp"
+#include "cli/model_flags.hpp"
 #include "cli/replay_flags.hpp"
 #include "cli/trace_flags.hpp"
+#include "io/obj_loader.hpp"
 #include "trace/record.hpp"
 
 namespace scantrace::cli {
@@ -20,14 +22,15 @@ namespace {
 struct ExplainArgs {
   TraceFlags what;
   FillFlags fill;
+  ModelFlags model;
   ReplayFlags replay;
 };
 
 void run(const ExplainArgs& args) {
-  const auto input = args.what.input();
-  const trace::TraceFilter filter = args.what.filter();
-  FillOptions options = args.fill.options();
+  FillOptions options = args.model.apply(args.fill.options(), is_obj_file(args.what.scene));
   options.winding_rule = args.what.winding_rule();
+  const auto input = trace_input(args.what, args.model, options.shading);
+  const trace::TraceFilter filter = args.what.filter();
   const trace::Trace t = std::visit(
       [&](const auto& in) {
         if constexpr (std::is_same_v<std::decay_t<decltype(in)>, Scene>)
@@ -58,6 +61,7 @@ Command add_explain_command(CLI::App& app) {
       "'replay'; the video size is --video-size (--size is the triangle's canvas).");
   add_trace_flags(*cmd, args->what);
   add_fill_flags(*cmd, args->fill);
+  add_model_flags(*cmd, args->model, true);
   add_replay_flags(*cmd, args->replay, false);
   cmd->callback([args] { args->what.check(args->fill.fill_rule); });
   cmd->footer(

@@ -9,7 +9,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/fill_flags.hpp"
+#include "cli/model_flags.hpp"
 #include "cli/stopwatch.hpp"
+#include "io/obj_loader.hpp"
 #include "io/scene_json.hpp"
 #include "src/painter.hpp"
 #include "viz/image_file.hpp"
@@ -21,6 +23,7 @@ struct RenderArgs {
   std::string scene;
   std::string output;  // empty: SCENE's stem + ".png" in the current directory
   FillFlags fill;
+  ModelFlags model;
 };
 
 std::filesystem::path output_path(const RenderArgs& args) {
@@ -31,10 +34,12 @@ std::filesystem::path output_path(const RenderArgs& args) {
 void run_render(const RenderArgs& args) {
   const std::filesystem::path out = output_path(args);
   const Stopwatch load_clock;
-  const Scene scene = load_scene(args.scene);
+  const bool model = is_obj_file(args.scene);
+  const FillOptions options = args.model.apply(args.fill.options(), model);
+  const Scene scene =
+      model ? args.model.load_model(args.scene, options.shading) : load_scene(args.scene);
   const double load_ms = load_clock.ms();
 
-  const FillOptions options = args.fill.options();
   RenderStats stats;
   const Stopwatch render_clock;
   const RgbImage image = render(scene, options, &stats);
@@ -46,10 +51,11 @@ void run_render(const RenderArgs& args) {
     spdlog::warn("warning: {}: the name does not end in .png; writing PNG data anyway",
                  out.string());
   spdlog::info(
-      "rendered {} ({}x{}, {}, {}, {}): {} faces drawn, {} skipped, {} pixels in {:.2f} ms "
-      "(load {:.1f} ms) -> {}",
+      "rendered {} ({}x{}, {}, {}, {}, {}, cull {}): {} faces drawn, {} culled, {} skipped, {} "
+      "pixels in {:.2f} ms (load {:.1f} ms) -> {}",
       args.scene, scene.width, scene.height, to_string(options.shading),
-      to_string(options.fill_rule), to_string(options.method), stats.triangles_filled,
+      to_string(options.fill_rule), to_string(options.method), to_string(options.visibility),
+      to_string(options.cull), stats.triangles_filled, stats.triangles_culled,
       stats.triangles_skipped, stats.pixels, render_ms, load_ms, out.string());
 }
 
@@ -63,18 +69,22 @@ Command add_render_command(CLI::App& app) {
                                      "order). Prints faces drawn/skipped, pixels and time.");
   cmd->add_option("SCENE", args->scene,
                   "scene file: JSON with vertices, vcolors, faces, depth\n"
-                  "and optional width, height, background")
+                  "and optional width, height, background; or an OBJ\n"
+                  "model (.obj), lit and projected (see Models)")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "output PNG (default: SCENE's name with .png, in the\n"
                   "current directory)");
   add_fill_flags(*cmd, args->fill);
+  add_model_flags(*cmd, args->model, false);
   cmd->footer(
       "Examples:\n"
       "  scantrace render scene.json                     writes ./scene.png\n"
       "  scantrace render scene.json --shading flat -o flat.png\n"
       "  scantrace render scene.json --fill-rule closed --subpixel-bits 0\n"
-      "  scantrace render scene.json --method float      the textbook loop, for comparison");
+      "  scantrace render scene.json --method float      the textbook loop, for comparison\n"
+      "  scantrace render head.obj --light 0,0,-1 --shading gouraud --cull back --gamma 2.2\n"
+      "      --depth zbuffer -o head.png");
   return {cmd, [args] { run_render(*args); }};
 }
 

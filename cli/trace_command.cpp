@@ -10,8 +10,10 @@
 
 #include "cli/commands.hpp"
 #include "cli/fill_flags.hpp"
+#include "cli/model_flags.hpp"
 #include "cli/stopwatch.hpp"
 #include "cli/trace_flags.hpp"
+#include "io/obj_loader.hpp"
 #include "trace/record.hpp"
 
 namespace scantrace::cli {
@@ -20,14 +22,15 @@ namespace {
 struct TraceArgs {
   TraceFlags what;
   FillFlags fill;
+  ModelFlags model;
   std::string output;
 };
 
 void run_trace(const TraceArgs& args) {
-  const auto input = args.what.input();
-  const trace::TraceFilter filter = args.what.filter();
-  FillOptions options = args.fill.options();
+  FillOptions options = args.model.apply(args.fill.options(), is_obj_file(args.what.scene));
   options.winding_rule = args.what.winding_rule();
+  const auto input = trace_input(args.what, args.model, options.shading);
+  const trace::TraceFilter filter = args.what.filter();
   const Stopwatch clock;
   const trace::Footer footer = std::visit(
       [&](const auto& in) {
@@ -63,6 +66,7 @@ Command add_trace_command(CLI::App& app) {
       "and each active edge's winding direction).");
   add_trace_flags(*cmd, args->what);
   add_fill_flags(*cmd, args->fill);
+  add_model_flags(*cmd, args->model, true);
   cmd->add_option("-o,--output", args->output, "output trace (.jsonl)")->required();
   cmd->callback([args] { args->what.check(args->fill.fill_rule); });
   cmd->footer(

@@ -5,7 +5,7 @@ set -euo pipefail
 
 # ffmpeg provides ffprobe, with which the tests check the codec of the videos `replay` writes.
 packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 libcli11-dev
-          libbenchmark-dev python3-jsonschema ffmpeg)
+          libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev)
 
 if ! command -v dpkg >/dev/null 2>&1; then
   echo "deps.sh: dpkg not found (not Debian/Ubuntu?); install these yourself: ${packages[*]}" >&2

@@ -53,6 +53,9 @@ inline std::vector<std::vector<int>> faces_by_band(const Scene& scene,
 template <class P = Rgb32f>
 Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads = 0,
                          RenderStats* stats = nullptr) {
+  // The z-buffer keeps depth per pixel across faces drawn in scene order: a band could be
+  // z-buffered just the same, but that render is not parallelised yet.
+  if (opt.visibility == Visibility::zbuffer) return render<P>(scene, opt, stats);
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Image<P> image(scene.width, scene.height, P::from(scene.background));
   const std::vector<double> depth = face_depths(scene);
@@ -64,7 +67,9 @@ Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads
   const std::vector<std::vector<int>> by_band =
       detail::faces_by_band(scene, order, band_height, bands);
 
-  std::vector<char> filled(scene.faces.size(), 0);  // written as 1 only: no race on the value
+  // Per face: 1 when some band filled part of it, 2 when culled (every band that sets it up culls
+  // it), 0 otherwise. Bands only ever store these values, so concurrent stores agree.
+  std::vector<char> filled(scene.faces.size(), 0);
   std::vector<long long> pixels(bands, 0);
   std::atomic<int> next_band{0};
   const auto work = [&] {
@@ -81,6 +86,7 @@ Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads
         const FillResult r =
             fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, none);
         if (r.skipped == SkipReason::none) std::atomic_ref<char>(filled[f]).store(1);
+        if (r.skipped == SkipReason::culled) std::atomic_ref<char>(filled[f]).store(2);
         pixels[b] += r.pixels;
       }
     }
@@ -92,7 +98,9 @@ Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads
   }
   if (stats) {
     *stats = {};
-    for (char f : filled) (f ? stats->triangles_filled : stats->triangles_skipped) += 1;
+    for (char f : filled)
+      (f == 1 ? stats->triangles_filled : f == 2 ? stats->triangles_culled : stats->triangles_skipped) +=
+          1;
     for (long long p : pixels) stats->pixels += p;
   }
   return image;

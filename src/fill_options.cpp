@@ -26,6 +26,13 @@ const char* to_string(Method m) {
   return "exact";
 }
 
+const char* to_string(Cull c) {
+  return c == Cull::back ? "back" : c == Cull::front ? "front" : "none";
+}
+const char* to_string(Visibility v) {
+  return v == Visibility::zbuffer ? "zbuffer" : "painter";
+}
+
 bool parse_method(const char* name, Method& out) {
   for (Method m : {Method::exact, Method::float32, Method::double64, Method::halfspace})
     if (std::strcmp(name, to_string(m)) == 0) {

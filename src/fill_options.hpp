@@ -27,17 +27,34 @@ enum class Method { exact, float32, double64, halfspace };
 // Only the general polygon fill (winding_fill.hpp) reads it; for a convex polygon both agree.
 enum class WindingRule { even_odd, non_zero };
 
+// Back-face culling, decided by the sign of the exact (snapped) signed area. "Front" is the
+// winding that OBJ and OpenGL call front: counter-clockwise seen from the viewer in a y-up world.
+// Pixel coordinates point y down, and that flip negates the signed area
+// sum(x_i·y_{i+1} − x_{i+1}·y_i), so on the canvas a front face has a *negative* twice_area
+// (clockwise in y-down maths, though it still looks counter-clockwise in the picture).
+enum class Cull { none, back, front };
+
+// Which face is visible where faces overlap (read by render(), not by the fill of one polygon):
+// painter: the course's order — farthest mean depth first, later faces overwrite (design.md §2);
+// zbuffer: per-pixel depth, interpolated over the triangle like a Gouraud colour; the nearest
+// (smallest) depth wins, ties keep the face drawn first.
+enum class Visibility { painter, zbuffer };
+
 struct FillOptions {
   Shading shading = Shading::gouraud;
   FillRule fill_rule = FillRule::top_left;
   int subpixel_bits = kDefaultSubpixelBits;
   Method method = Method::exact;
   WindingRule winding_rule = WindingRule::even_odd;
+  Cull cull = Cull::none;
+  Visibility visibility = Visibility::painter;
 };
 
 const char* to_string(Shading s);
 const char* to_string(FillRule r);
-const char* to_string(Method m);  // "exact", "float", "double", "halfspace"
+const char* to_string(Method m);      // "exact", "float", "double", "halfspace"
+const char* to_string(Cull c);        // "none", "back", "front"
+const char* to_string(Visibility v);  // "painter", "zbuffer"
 // The method named `name`, or false when there is none.
 bool parse_method(const char* name, Method& out);
 const char* to_string(WindingRule w);  // "even-odd", "non-zero"

@@ -11,6 +11,7 @@ enum class SkipReason {
   degenerate,        // zero area after snapping: fills nothing under either rule
   no_pixel_centre,   // its bounding box holds no pixel centre: too small to own a pixel
   offscreen,         // no row or no column of its bounding box is on the canvas
+  culled,            // facing away (or towards) the viewer, as FillOptions::cull asks
 };
 const char* to_string(SkipReason r);
 

@@ -1,9 +1,11 @@
 #pragma once
-// The course's render: every face of the scene filled in painter's order (design.md §2).
+// The course's render: every face of the scene filled in painter's order (design.md §2), or, when
+// FillOptions::visibility asks for it, in face order through a depth buffer (zbuffer_canvas.hpp).
 #include <vector>
 
 #include "scanline_fill.hpp"
 #include "scene.hpp"
+#include "zbuffer_canvas.hpp"
 
 namespace scantrace {
 
@@ -14,8 +16,16 @@ std::vector<int> painter_order(const std::vector<double>& face_depths);
 
 struct RenderStats {
   long long triangles_filled = 0;
-  long long triangles_skipped = 0;
-  long long pixels = 0;
+  long long triangles_skipped = 0;  // for any reason but culling
+  long long triangles_culled = 0;   // FillOptions::cull
+  long long pixels = 0;             // written by the fill (z-buffer: before the depth test)
+
+  void count(const FillResult& r) {
+    (r.skipped == SkipReason::none     ? triangles_filled
+     : r.skipped == SkipReason::culled ? triangles_culled
+                                       : triangles_skipped) += 1;
+    pixels += r.pixels;
+  }
 };
 
 // Fills the faces of `scene` onto `canvas` (which the caller has cleared to the background).
@@ -31,10 +41,29 @@ RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt, T
                                 scene.vertices[face[2]]};
     const std::array<Color, 3> c{scene.vcolors[face[0]], scene.vcolors[face[1]],
                                  scene.vcolors[face[2]]};
-    const FillResult r =
-        fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, tracer);
-    (r.skipped == SkipReason::none ? stats.triangles_filled : stats.triangles_skipped) += 1;
-    stats.pixels += r.pixels;
+    stats.count(fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, tracer));
+  }
+  return stats;
+}
+
+// The faces in scene order through the depth buffer of `canvas`: no sort, and the order does not
+// matter except for exact depth ties (the first face drawn keeps the pixel).
+template <class P, FillTracer Tracer = NoTracer>
+RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
+                                const FillOptions& opt, Tracer& tracer) {
+  const std::vector<double> depth = face_depths(scene);
+  const SubpixelGrid grid(opt.subpixel_bits);
+  FillScratch scratch;
+  RenderStats stats;
+  for (int f = 0; f < static_cast<int>(scene.faces.size()); ++f) {
+    const auto& face = scene.faces[f];
+    const std::array<Vec2, 3> v{scene.vertices[face[0]], scene.vertices[face[1]],
+                                scene.vertices[face[2]]};
+    const std::array<Color, 3> c{scene.vcolors[face[0]], scene.vcolors[face[1]],
+                                 scene.vcolors[face[2]]};
+    const std::array<double, 3> d{scene.depth[face[0]], scene.depth[face[1]], scene.depth[face[2]]};
+    if (grid.valid()) canvas.begin_triangle(v, d, grid);
+    stats.count(fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, tracer));
   }
   return stats;
 }
@@ -45,8 +74,15 @@ template <class P = Rgb32f, FillTracer Tracer = NoTracer>
 Image<P> render(const Scene& scene, const FillOptions& opt, Tracer& tracer,
                 RenderStats* stats = nullptr) {
   Image<P> image(scene.width, scene.height, P::from(scene.background));
-  ImageCanvas<P> canvas(image);
-  const RenderStats s = render_into(canvas, scene, opt, tracer);
+  RenderStats s;
+  if (opt.visibility == Visibility::zbuffer) {
+    // Only a pixel-level trace reads the per-pixel outcomes of the depth test.
+    ZBufferCanvas<P> canvas(image, kTraceHooks && Tracer::max_level >= TraceLevel::pixel);
+    s = render_zbuffer_into(canvas, scene, opt, tracer);
+  } else {
+    ImageCanvas<P> canvas(image);
+    s = render_into(canvas, scene, opt, tracer);
+  }
   if (stats) *stats = s;
   return image;
 }

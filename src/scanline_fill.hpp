@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "canvas.hpp"
+#include "depth_test.hpp"
 #include "edge_stepper.hpp"
 #include "edge_table.hpp"
 #include "fill_options.hpp"
@@ -226,6 +227,18 @@ void fill_flat_span(P* out, int n, P value, std::vector<unsigned char>& pattern,
   std::memcpy(out, pattern.data(), need * sizeof(P));
 }
 
+// One pixel to the pixel-level trace, with the outcome of its depth test when the canvas tests
+// depth and the tracer takes it (the canvas has just written the pixel: a span's pixels are
+// narrated right after fill_span).
+template <class Tracer, class C>
+void trace_pixel(Tracer& tracer, const C& canvas, int triangle, int x, i64 y, Color c, double t) {
+  if constexpr (DepthTestingCanvas<C> &&
+                requires { tracer.pixel(triangle, x, y, c, t, canvas.depth_test(x)); })
+    tracer.pixel(triangle, x, y, c, t, canvas.depth_test(x));
+  else
+    tracer.pixel(triangle, x, y, c, t);
+}
+
 // What the set-up hands to the sweep.
 struct Setup {
   SubpixelGrid grid;
@@ -357,7 +370,8 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
             canvas.fill_span(yi, xb, xe, setup.flat);
           if constexpr (kPixelLevel)
             if (trace_pixels)
-              for (int x = xb; x < xe; ++x) tracer.pixel(in.triangle, x, y, setup.flat, weight(x));
+              for (int x = xb; x < xe; ++x)
+                trace_pixel(tracer, canvas, in.triangle, x, y, setup.flat, weight(x));
         } else {
           SpanShader<Stepper> shade(c_left, c_right, x_left, x_right, x_begin);
           // The exact method's span is linear from its first pixel's colour, so an image canvas
@@ -372,7 +386,7 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
               const Color c = shade.color();
               if constexpr (!kCanvasShades) canvas.set(x, yi, c);
               if constexpr (kPixelLevel)
-                if (trace_pixels) tracer.pixel(in.triangle, x, y, c, weight(x));
+                if (trace_pixels) trace_pixel(tracer, canvas, in.triangle, x, y, c, weight(x));
               if constexpr (kScanlineLevel)
                 if (trace_row) span_last = c;
               shade.next();
@@ -457,7 +471,12 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   const std::span<const FixedPoint> pts(s.snapped);
   // A zero-area polygon has no interior; under the top-left rule it owns no pixel, and the closed
   // rule is defined here for polygons with an interior too, so both skip it.
-  if (detail::twice_area(pts) == 0) return skip(SkipReason::degenerate);
+  const i128 area2 = detail::twice_area(pts);
+  if (area2 == 0) return skip(SkipReason::degenerate);
+  // Culling on the exact sign: a front face has negative twice_area on the y-down canvas
+  // (fill_options.hpp, Cull).
+  if (opt.cull != Cull::none && (opt.cull == Cull::back ? area2 > 0 : area2 < 0))
+    return skip(SkipReason::culled);
 
   const bool closed = opt.fill_rule == FillRule::closed;
   {

@@ -16,6 +16,8 @@ const char* to_string(SkipReason r) {
       return "no_pixel_centre";
     case SkipReason::offscreen:
       return "offscreen";
+    case SkipReason::culled:
+      return "culled";
   }
   return "unknown";
 }

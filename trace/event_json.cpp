@@ -46,6 +46,8 @@ ojson encode(const Header& h) {
              {"level", h.level},
              {"generator", h.generator}};
   if (h.winding_rule) j["winding_rule"] = *h.winding_rule;
+  if (h.visibility != "painter") j["visibility"] = h.visibility;
+  if (h.cull != "none") j["cull"] = h.cull;
   return j;
 }
 
@@ -112,8 +114,14 @@ ojson encode(const Scanline& s) {
 }
 
 ojson encode(const Pixel& p) {
-  return {{"type", "pixel"}, {"triangle", p.triangle}, {"x", p.x},
-          {"y", p.y},        {"color", p.color},       {"t", p.t}};
+  ojson j = {{"type", "pixel"}, {"triangle", p.triangle}, {"x", p.x},
+             {"y", p.y},        {"color", p.color},       {"t", p.t}};
+  if (p.depth_test) {
+    j["depth_test"] = p.depth_test->passed ? "passed" : "rejected";
+    j["depth"] = p.depth_test->depth;
+    if (p.depth_test->stored) j["stored_depth"] = *p.depth_test->stored;
+  }
+  return j;
 }
 ojson encode(const TriangleEnd& e) {
   return {
@@ -144,6 +152,8 @@ Header decode_header(const json& j) {
   h.level = j.at("level").get<std::string>();
   h.generator = j.at("generator").get<std::string>();
   if (j.contains("winding_rule")) h.winding_rule = j["winding_rule"].get<std::string>();
+  h.visibility = j.value("visibility", "painter");
+  h.cull = j.value("cull", "none");
   return h;
 }
 
@@ -231,9 +241,18 @@ Event event_from_json(const json& j) {
   if (type == "triangle_begin") return decode_begin(j);
   if (type == "edge_table") return decode_edge_table(j);
   if (type == "scanline") return decode_scanline(j);
-  if (type == "pixel")
-    return Pixel{j.at("triangle").get<int>(), j.at("x").get<i64>(), j.at("y").get<i64>(),
-                 j.at("color").get<Color>(), j.at("t").get<double>()};
+  if (type == "pixel") {
+    Pixel p{j.at("triangle").get<int>(), j.at("x").get<i64>(),    j.at("y").get<i64>(),
+            j.at("color").get<Color>(),  j.at("t").get<double>(), {}};
+    if (j.contains("depth_test")) {
+      PixelDepthTest d;
+      d.passed = j.at("depth_test").get<std::string>() == "passed";
+      d.depth = j.at("depth").get<double>();
+      if (j.contains("stored_depth")) d.stored = j.at("stored_depth").get<double>();
+      p.depth_test = d;
+    }
+    return p;
+  }
   if (type == "triangle_end")
     return TriangleEnd{j.at("triangle").get<int>(), j.at("rows").get<i64>(),
                        j.at("pixels").get<i64>()};

@@ -10,6 +10,8 @@ Header make_header(int width, int height, const FillOptions& options, TraceLevel
   h.subpixel_bits = options.subpixel_bits;
   h.level = to_string(level);
   h.generator = std::string("scantrace ") + SCANTRACE_VERSION;
+  h.visibility = to_string(options.visibility);
+  h.cull = to_string(options.cull);
   return h;
 }
 

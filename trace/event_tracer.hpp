@@ -2,10 +2,13 @@
 // The tracer that turns the fill's hooks (src/tracer.hpp) into trace events and hands them to a
 // sink — an in-memory Recorder or a JsonlWriter. Filters are applied before any event is built, so
 // tracing one triangle of a 10,000-triangle scene costs one rendering plus that one triangle.
+#include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "events.hpp"
+#include "src/depth_test.hpp"
 #include "src/tracer.hpp"
 #include "trace_filter.hpp"
 
@@ -40,7 +43,12 @@ class EventTracer {
   void triangle_begin(const PolygonSetup& s) { emit(to_event(s)); }
   void edge_table(const EdgeTableView& v) { emit(to_event(v)); }
   void scanline(const ScanlineStep& s) { emit(to_event(s)); }
-  void pixel(int t, i64 x, i64 y, Color c, double w) { emit(Pixel{t, x, y, c, w}); }
+  void pixel(int t, i64 x, i64 y, Color c, double w) { emit(Pixel{t, x, y, c, w, {}}); }
+  void pixel(int t, i64 x, i64 y, Color c, double w, const DepthTest& d) {
+    emit(Pixel{t, x, y, c, w,
+               PixelDepthTest{d.passed, d.depth,
+                              std::isinf(d.stored) ? std::nullopt : std::optional(d.stored)}});
+  }
   void triangle_end(int t, i64 rows, i64 pixels) { emit(TriangleEnd{t, rows, pixels}); }
   void triangle_skipped(int t, SkipReason r) { emit(TriangleSkipped{t, to_string(r)}); }
 

@@ -33,6 +33,10 @@ struct Header {
   std::string generator;  // "scantrace X.Y.Z"
   // "even-odd" | "non-zero": present in traces of general polygons (docs/polygons.md).
   std::optional<std::string> winding_rule = std::nullopt;
+  // Written only when they differ from the course's render (painter's order, no culling), so
+  // that traces of course scenes keep their bytes.
+  std::string visibility = "painter";  // "painter" | "zbuffer"
+  std::string cull = "none";           // "none" | "back" | "front"
 };
 
 struct TriangleBegin {
@@ -114,11 +118,19 @@ struct Scanline {
   std::optional<std::vector<Interval>> intervals = std::nullopt;
 };
 
+// The outcome of a pixel's depth test (z-buffer renders only).
+struct PixelDepthTest {
+  bool passed = true;
+  double depth = 0;              // the triangle's depth at the pixel centre
+  std::optional<double> stored;  // the buffer's depth before the test; none: empty (+inf)
+};
+
 struct Pixel {
   int triangle = 0;
   i64 x = 0, y = 0;
   Color color;
   double t = 0;  // weight along the span: 0 at the left active point, 1 at the right
+  std::optional<PixelDepthTest> depth_test;
 };
 
 struct TriangleEnd {

@@ -76,7 +76,8 @@ void CanvasState::paint_rows(const trace::Trace& trace, int triangle, std::int64
   std::vector<std::int64_t> rows_with_pixels;
   for (const trace::Pixel* p : trace.pixels(triangle))
     if (p->y >= first_row && p->y <= last_row) {
-      put(p->x, p->y, p->color);
+      // A pixel the z-buffer rejected is narrated but was not written.
+      if (!p->depth_test || p->depth_test->passed) put(p->x, p->y, p->color);
       if (rows_with_pixels.empty() || rows_with_pixels.back() != p->y)
         rows_with_pixels.push_back(p->y);
     }

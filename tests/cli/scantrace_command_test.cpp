@@ -1,5 +1,6 @@
 // The scantrace binary, run through the shell as a user would: exit status, messages, outputs.
 #include <cmath>
+#include <set>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -191,13 +192,14 @@ TEST_CASE("demo writes the demo renders, the example triangle and the scene", "[
   const auto r = run_scantrace(dir.path(), {"demo", "-o", "out"});
   INFO("stderr: " << r.err);
   REQUIRE(r.exit_code == 0);
-  const std::vector<std::string> expected{"demo_flat.png",   "demo_gouraud.png",
-                                          "demo_scene.json", "triangle.jsonl",
-                                          "triangle.mp4",    "triangle_gouraud.png"};
+  const std::vector<std::string> expected{
+      "demo_flat.png",  "demo_gouraud.png", "demo_model.png",      "demo_scene.json",
+      "triangle.jsonl", "triangle.mp4",     "triangle_gouraud.png"};
   CHECK(test::file_names(dir / "out") == expected);
   for (const auto& name : expected) CHECK_THAT(r.err, Catch::Contains("out/" + name));
 
-  for (const char* name : {"demo_flat.png", "demo_gouraud.png", "triangle_gouraud.png"}) {
+  for (const char* name :
+       {"demo_flat.png", "demo_gouraud.png", "demo_model.png", "triangle_gouraud.png"}) {
     const cv::Mat png = read_bgr(dir / "out" / name);
     INFO(name);
     REQUIRE(png.type() == CV_8UC3);
@@ -209,6 +211,24 @@ TEST_CASE("demo writes the demo renders, the example triangle and the scene", "[
   flat.shading = Shading::flat;
   CHECK(same_pixels(read_bgr(dir / "out" / "demo_flat.png"), to_bgr8(render(demo_scene(), flat))));
   CHECK(same_pixels(read_bgr(dir / "out" / "demo_gouraud.png"), to_bgr8(render(demo_scene()))));
+
+  {
+    // The torus: lit (not one flat colour), its hole shows the background at the centre, and
+    // Gouraud leaves no two neighbours on a row far apart inside the model.
+    const cv::Mat model = read_bgr(dir / "out" / "demo_model.png");
+    CHECK(model.at<cv::Vec3b>(256, 256) == cv::Vec3b(255, 255, 255));
+    std::set<int> levels;
+    int painted = 0;
+    for (int y = 0; y < 512; ++y)
+      for (int x = 0; x < 512; ++x) {
+        const cv::Vec3b p = model.at<cv::Vec3b>(y, x);
+        if (p == cv::Vec3b(255, 255, 255)) continue;
+        ++painted;
+        levels.insert(p[0] + p[1] + p[2]);
+      }
+    CHECK(painted > 512 * 512 / 8);
+    CHECK(levels.size() > 200);
+  }
 
   // The course's triangle (20,20) red, (250,80) green, (300,400) blue: at its centroid
   // (190, 166.67) the colour is close to the mean (1/3 each).

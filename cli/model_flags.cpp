@@ -1,0 +1,154 @@
+#include "cli/model_flags.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+
+#include "cli/trace_flags.hpp"
+#include "cli/validators.hpp"
+#include "io/obj_loader.hpp"
+
+namespace scantrace::cli {
+
+Vec3 parse_vec3(const std::string& text, const std::string& what) {
+  std::vector<double> v;
+  std::stringstream in(text);
+  for (std::string part; std::getline(in, part, ',');) {
+    double x = 0;
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), x);
+    if (part.empty() || ec != std::errc() || end != part.data() + part.size() || !std::isfinite(x))
+      throw std::invalid_argument(what + ": \"" + part + "\" is not a finite number");
+    v.push_back(x);
+  }
+  if (v.size() != 3) throw std::invalid_argument(what + ": \"" + text + "\" is not X,Y,Z");
+  return {v[0], v[1], v[2]};
+}
+
+FillOptions ModelFlags::apply(FillOptions o, bool model) const {
+  const std::string c = cull.empty() ? (model ? "back" : "none") : cull;
+  o.cull = c == "back" ? Cull::back : c == "front" ? Cull::front : Cull::none;
+  const std::string d = depth.empty() ? (model ? "zbuffer" : "painter") : depth;
+  o.visibility = d == "zbuffer" ? Visibility::zbuffer : Visibility::painter;
+  return o;
+}
+
+Scene ModelFlags::load_model(const std::string& file, Shading shading) const {
+  std::vector<std::string> warnings;
+  const Mesh mesh = load_obj(file, &warnings);
+  for (const std::string& w : warnings) spdlog::warn("warning: {}", w);
+  ShadeOptions o;
+  o.colors = colors == "random"  ? ColorSource::random
+             : colors == "white" ? ColorSource::white
+                                 : ColorSource::file;
+  o.seed = seed;
+  o.light.enabled = !unlit;
+  o.light.direction = parse_vec3(light, "--light");
+  o.light.ambient = ambient;
+  o.shading = shading;
+  o.gamma = gamma;
+  std::tie(o.camera.width, o.camera.height) = parse_size(size);
+  const Vec3 bg = parse_vec3(background, "--background");
+  o.background = {bg.x, bg.y, bg.z};
+  if (!eye.empty()) {
+    o.camera.perspective = true;
+    o.camera.eye = parse_vec3(eye, "--eye");
+    if (!target.empty()) o.camera.target = parse_vec3(target, "--target");
+    o.camera.fov_degrees = fov;
+  }
+  ShadeStats stats;
+  Scene scene;
+  try {
+    scene = shade_mesh(mesh, o, &stats);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(file, "camera", e.what());
+  }
+  if (stats.faces_behind_eye > 0)
+    spdlog::warn("warning: {}: {} faces have a vertex behind the eye and are not drawn", file,
+                 stats.faces_behind_eye);
+  return scene;
+}
+
+std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> trace_input(const TraceFlags& what,
+                                                      const ModelFlags& model, Shading shading) {
+  if (!what.scene.empty() && is_obj_file(what.scene)) return model.load_model(what.scene, shading);
+  return what.input();
+}
+
+void add_model_flags(CLI::App& cmd, ModelFlags& f, bool beside_triangle_flags) {
+  // trace and explain already have --colors and --size for --triangle.
+  const std::string colors_option = beside_triangle_flags ? "--model-colors" : "--colors";
+  const std::string size_option = beside_triangle_flags ? "--model-size" : "--size";
+  const auto vec3 = [](const char* what) {
+    return parsed_by([what](const std::string& v) { parse_vec3(v, what); });
+  };
+  const std::string g = "Models (.obj)";
+  cmd.add_option("--light", f.light,
+                 "direction the light travels, X,Y,Z (0,0,-1: from the\n"
+                 "viewer into the screen); Lambert: ambient + (1-ambient)\n"
+                 "* max(0, n . -light)")
+      ->check(vec3("--light"))
+      ->capture_default_str()
+      ->group(g);
+  cmd.add_flag("--unlit", f.unlit, "no lighting: the base colours as they are")->group(g);
+  cmd.add_option("--ambient", f.ambient, "light every face receives, in [0, 1]")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str()
+      ->group(g);
+  cmd.add_option("--gamma", f.gamma,
+                 "encode the shaded vertex colours as c^(1/G)\n"
+                 "(2.2 for a display; 1 = off)")
+      ->check(CLI::Range(0.1, 10.0))
+      ->capture_default_str()
+      ->group(g);
+  cmd.add_option(colors_option, f.colors,
+                 "base colour: file (the model's vertex colours, white\n"
+                 "without), random (one per face, from --seed), white")
+      ->check(CLI::IsMember({"file", "random", "white"}))
+      ->capture_default_str()
+      ->group(g);
+  cmd.add_option("--seed", f.seed, "seed of --colors random")->capture_default_str()->group(g);
+  auto* eye = cmd.add_option("--eye", f.eye,
+                             "perspective camera at X,Y,Z (default: orthographic,\n"
+                             "looking down -z, the model fitted to the canvas)")
+                  ->check(vec3("--eye"))
+                  ->group(g);
+  cmd.add_option("--target", f.target, "point the camera looks at (default: model centre)")
+      ->check(vec3("--target"))
+      ->needs(eye)
+      ->group(g);
+  cmd.add_option("--fov", f.fov, "vertical field of view in degrees")
+      ->check(CLI::Range(1.0, 179.0))
+      ->needs(eye)
+      ->capture_default_str()
+      ->group(g);
+  cmd.add_option(size_option, f.size, "canvas of a model, WIDTHxHEIGHT")
+      ->check(parsed_by(parse_size))
+      ->capture_default_str()
+      ->group(g);
+  cmd.add_option("--background", f.background, "canvas colour of a model, R,G,B in [0, 1]")
+      ->check(parsed_by([](const std::string& v) {
+        const Vec3 c = parse_vec3(v, "--background");
+        for (double x : {c.x, c.y, c.z})
+          if (x < 0 || x > 1) throw std::invalid_argument("--background: components in [0, 1]");
+      }))
+      ->capture_default_str()
+      ->group(g);
+  cmd.add_option("--cull", f.cull,
+                 "skip faces turned away (back) or towards the viewer\n"
+                 "(front); default: back for a model, none for a scene")
+      ->check(CLI::IsMember({"none", "back", "front"}))
+      ->group(g);
+  cmd.add_option("--depth", f.depth,
+                 "painter: farthest mean depth first (the course's);\n"
+                 "zbuffer: per-pixel depth test; default: zbuffer for a\n"
+                 "model, painter for a scene")
+      ->check(CLI::IsMember({"painter", "zbuffer"}))
+      ->group(g);
+}
+
+}  // namespace scantrace::cli

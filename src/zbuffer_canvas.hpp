@@ -1,0 +1,93 @@
+#pragma once
+// A canvas adaptor that adds a depth buffer to an Image<P>: the sweep writes through it unchanged
+// (fill_span / set), and it lets a pixel through only where the triangle is nearer than what is
+// already there. Depth is linear in the pixel position over the triangle, computed from the
+// *snapped* vertices the colour interpolation also uses (edge_color_at): Gouraud's two passes of
+// vector_interp evaluate that same linear function, so per-pixel depth is interpolated exactly as
+// colours are — here in closed form (the plane through the three (x, y, depth) points), so that
+// the sweep needs no extra per-pixel state and the painter's path is untouched.
+//
+// Depth convention: the scene's (larger = farther). The nearer (smaller) depth wins; equal depth
+// keeps the pixel of the face drawn first, so results do not depend on floating-point ties.
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "canvas.hpp"
+#include "depth_test.hpp"
+#include "fixed_point.hpp"
+#include "vec2.hpp"
+
+namespace scantrace {
+
+template <class P>
+class ZBufferCanvas {
+ public:
+  // `log_tests`: remember each pixel's outcome on the current row for depth_test() (only the
+  // pixel-level trace asks; an untraced render leaves it off).
+  ZBufferCanvas(Image<P>& image, bool log_tests = false)
+      : image_(image),
+        depth_(static_cast<std::size_t>(image.width()) * image.height(),
+               std::numeric_limits<double>::infinity()),
+        log_(log_tests ? static_cast<std::size_t>(image.width()) : 0) {}
+
+  int width() const { return image_.width(); }
+  int height() const { return image_.height(); }
+
+  // Sets up the depth plane of the next triangle from its vertices (pixels, snapped to `grid`
+  // as the fill will snap them) and their depths.
+  void begin_triangle(std::span<const Vec2> v, std::span<const double> d,
+                      const SubpixelGrid& grid) {
+    x0_ = y0_ = a_ = b_ = 0, d0_ = d[0];
+    // The fill skips such a triangle before writing anything (SkipReason::out_of_range).
+    for (int i = 0; i < 3; ++i)
+      if (!SubpixelGrid::representable(v[i])) return;
+    const Vec2 p0 = grid.to_pixels(grid.snap(v[0])), p1 = grid.to_pixels(grid.snap(v[1])),
+               p2 = grid.to_pixels(grid.snap(v[2]));
+    const double ux = p1.x - p0.x, uy = p1.y - p0.y, wx = p2.x - p0.x, wy = p2.y - p0.y;
+    const double det = ux * wy - wx * uy;
+    x0_ = p0.x, y0_ = p0.y, d0_ = d[0];
+    if (det == 0) {
+      // The fill skips a zero-area triangle before writing anything; keep the plane flat.
+      a_ = b_ = 0;
+      return;
+    }
+    const double e1 = d[1] - d[0], e2 = d[2] - d[0];
+    a_ = (e1 * wy - e2 * uy) / det;
+    b_ = (ux * e2 - wx * e1) / det;
+  }
+
+  double depth_at(int x, int y) const { return d0_ + a_ * (x - x0_) + b_ * (y - y0_); }
+  double stored(int x, int y) const {
+    return depth_[static_cast<std::size_t>(y) * image_.width() + x];
+  }
+
+  void fill_span(int y, int x_begin, int x_end, Color c) {
+    const P p = P::from(c);
+    for (int x = x_begin; x < x_end; ++x) write(x, y, p);
+  }
+  void set(int x, int y, Color c) { write(x, y, P::from(c)); }
+
+  DepthTest depth_test(int x) const { return log_[x]; }
+
+ private:
+  void write(int x, int y, const P& p) {
+    const double d = depth_at(x, y);
+    double& z = depth_[static_cast<std::size_t>(y) * image_.width() + x];
+    const bool passed = d < z;
+    if (!log_.empty()) log_[x] = DepthTest{passed, d, z};
+    if (passed) {
+      z = d;
+      image_.row(y)[x] = p;
+    }
+  }
+
+  Image<P>& image_;
+  std::vector<double> depth_;
+  std::vector<DepthTest> log_;
+  double x0_ = 0, y0_ = 0, d0_ = 0, a_ = 0, b_ = 0;
+};
+
+}  // namespace scantrace

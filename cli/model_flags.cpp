@@ -73,8 +73,8 @@ Scene ModelFlags::load_model(const std::string& file, Shading shading) const {
   return scene;
 }
 
-std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> trace_input(const TraceFlags& what,
-                                                      const ModelFlags& model, Shading shading) {
+std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> trace_input(
+    const TraceFlags& what, const ModelFlags& model, Shading shading) {
   if (!what.scene.empty() && is_obj_file(what.scene)) return model.load_model(what.scene, shading);
   return what.input();
 }

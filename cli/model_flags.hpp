@@ -47,8 +47,8 @@ struct ModelFlags {
 void add_model_flags(CLI::App& command, ModelFlags& flags, bool beside_triangle_flags);
 
 // What trace and explain fill: a model shaded into a scene, a scene file, or one triangle.
-std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> trace_input(const TraceFlags& what,
-                                                      const ModelFlags& model, Shading shading);
+std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> trace_input(
+    const TraceFlags& what, const ModelFlags& model, Shading shading);
 
 // "x,y,z" → a vector (throws std::invalid_argument naming `what`).
 Vec3 parse_vec3(const std::string& text, const std::string& what);

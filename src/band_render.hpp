@@ -99,8 +99,9 @@ Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads
   if (stats) {
     *stats = {};
     for (char f : filled)
-      (f == 1 ? stats->triangles_filled : f == 2 ? stats->triangles_culled : stats->triangles_skipped) +=
-          1;
+      (f == 1   ? stats->triangles_filled
+       : f == 2 ? stats->triangles_culled
+                : stats->triangles_skipped) += 1;
     for (long long p : pixels) stats->pixels += p;
   }
   return image;

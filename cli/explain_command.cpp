@@ -24,7 +24,7 @@ struct ExplainArgs {
 };
 
 void run(const ExplainArgs& args) {
-  const auto input = args.what.input();
+  const auto input = args.what.input(args.fill.clamp_colors);
   const trace::TraceFilter filter = args.what.filter();
   const FillOptions options = args.fill.options();
   const trace::Trace t = std::visit(

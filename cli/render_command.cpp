@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/fill_flags.hpp"
+#include "cli/scene_input.hpp"
 #include "cli/stopwatch.hpp"
 #include "io/scene_json.hpp"
 #include "src/painter.hpp"
@@ -31,7 +32,7 @@ std::filesystem::path output_path(const RenderArgs& args) {
 void run_render(const RenderArgs& args) {
   const std::filesystem::path out = output_path(args);
   const Stopwatch load_clock;
-  const Scene scene = load_scene(args.scene);
+  const Scene scene = load_scene_file(args.scene, args.fill.clamp_colors);
   const double load_ms = load_clock.ms();
 
   const FillOptions options = args.fill.options();

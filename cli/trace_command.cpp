@@ -20,11 +20,14 @@ struct TraceArgs {
   TraceFlags what;
   FillFlags fill;
   std::string output;
+  // A full disk is not how a pixel-level trace of a large scene should end.
+  long long max_bytes = 1LL << 30;
 };
 
 void run_trace(const TraceArgs& args) {
-  const auto input = args.what.input();
-  const trace::TraceFilter filter = args.what.filter();
+  const auto input = args.what.input(args.fill.clamp_colors);
+  trace::TraceFilter filter = args.what.filter();
+  filter.max_bytes = args.max_bytes;
   const FillOptions options = args.fill.options();
   const Stopwatch clock;
   const trace::Footer footer = std::visit(
@@ -40,9 +43,9 @@ void run_trace(const TraceArgs& args) {
                clock.ms(), args.output);
   if (footer.truncated)
     spdlog::warn(
-        "warning: {}: the trace was truncated after {} events (--max-events); its "
-        "footer says \"truncated\": true",
-        args.output, footer.events);
+        "warning: {}: the trace was truncated after {} events (budget --max-events or "
+        "--max-bytes {}); its footer says \"truncated\": true",
+        args.output, footer.events, args.max_bytes);
 }
 
 }  // namespace
@@ -58,6 +61,10 @@ Command add_trace_command(CLI::App& app) {
   add_trace_flags(*cmd, args->what);
   add_fill_flags(*cmd, args->fill);
   cmd->add_option("-o,--output", args->output, "output trace (.jsonl)")->required();
+  cmd->add_option("--max-bytes", args->max_bytes,
+                  "stop before the file would exceed N bytes; the footer\nthen says truncated")
+      ->check(CLI::Range(1024LL, 1LL << 50))
+      ->capture_default_str();
   cmd->callback([args] {
     if (args->what.scene.empty() && args->what.triangle.empty())
       throw CLI::RequiredError("a SCENE file or --triangle");

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/scene_input.hpp"
 #include "cli/validators.hpp"
 
 #include "io/scene_json.hpp"
@@ -82,12 +83,13 @@ std::pair<int, int> parse_size(const std::string& text) {
   return {w, h};
 }
 
-std::variant<Scene, trace::TriangleInput> TraceFlags::input() const {
-  if (!scene.empty()) return load_scene(scene);
+std::variant<Scene, trace::TriangleInput> TraceFlags::input(bool clamp_colors) const {
+  if (!scene.empty()) return load_scene_file(scene, clamp_colors);
   trace::TriangleInput t;
   t.vertices = parse_triangle(triangle);
   t.colors = parse_colors(colors);
   std::tie(t.width, t.height) = parse_size(size);
+  check_canvas_memory(t.width, t.height, "--size", size);
   return t;
 }
 

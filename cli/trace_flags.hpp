@@ -27,8 +27,8 @@ struct TraceFlags {
   std::string rows;
   std::optional<long long> max_events;
 
-  // Throws InputError when the scene file is bad.
-  std::variant<Scene, trace::TriangleInput> input() const;
+  // Throws InputError when the scene file is bad; `clamp_colors` as in cli/scene_input.hpp.
+  std::variant<Scene, trace::TriangleInput> input(bool clamp_colors) const;
   trace::TraceFilter filter() const;
   // "SCENE" or "the triangle (x0,y0) (x1,y1) (x2,y2)", for messages.
   std::string input_name() const;

@@ -44,6 +44,9 @@ std::string progress_of(const std::vector<Event>& events) {
   std::string s = "it holds the header and " + std::to_string(n == 0 ? 0 : n - 1) + " events";
   // The last triangle and row reached, from the end: what a user needs to resume or re-trace.
   for (auto it = events.rbegin(); it != events.rend(); ++it) {
+    if (const Pixel* p = std::get_if<Pixel>(&*it))
+      return s + ", the last at triangle " + std::to_string(p->triangle) + ", pixel (" +
+             std::to_string(p->x) + ", " + std::to_string(p->y) + ")";
     if (const Scanline* row = std::get_if<Scanline>(&*it))
       return s + ", the last at triangle " + std::to_string(row->triangle) + ", row " +
              std::to_string(row->y);
@@ -112,8 +115,9 @@ Trace Trace::parse(std::istream& in, const std::string& name) {
       const std::string format = text("format");
       if (format != kFormatName)
         throw TraceError(where + "format is \"" + format + "\", not a scantrace trace");
-      const int version =
-          j.contains("version") && j["version"].is_number_integer() ? j["version"].get<int>() : 0;
+      const std::int64_t version = j.contains("version") && j["version"].is_number_integer()
+                                       ? j["version"].get<std::int64_t>()
+                                       : 0;
       if (version != kFormatVersion)
         throw TraceError(where + "trace format version " + std::to_string(version) +
                          " is not supported (this build reads version " +

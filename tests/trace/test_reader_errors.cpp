@@ -92,3 +92,24 @@ TEST_CASE("the reader bounds a line's length and tells a cut-off last line from 
   huge.replace(huge.find("\"width\":8"), 9, "\"width\":-3");
   CHECK_THROWS_WITH(parse(huge + "\n"), Catch::Contains("t.jsonl:1: header: canvas -3x8"));
 }
+
+TEST_CASE("integers out of range or fractional are malformed events, not casts (found by fuzzing)",
+          "[trace][reader][fuzz]") {
+  // fuzz/regressions/trace_reader/header-canvas-float-to-int: get<int>() of 5.5e33 was a float to
+  // int cast out of range, undefined behaviour caught by UBSan.
+  std::string huge = kHeader;
+  huge.replace(huge.find("\"height\":8"), 10, "\"height\":5555555555555555555555555555555554");
+  CHECK_THROWS_WITH(parse(huge + "\n"), Catch::StartsWith("t.jsonl:1: malformed event") &&
+                                            Catch::Contains("expected an integer in range"));
+  CHECK_THROWS_WITH(
+      parse(kHeader + "\n" + R"({"type":"triangle_skipped","triangle":4294967296,"reason":"x"})" +
+            "\n"),
+      Catch::StartsWith("t.jsonl:2: malformed event"));
+  CHECK_THROWS_WITH(
+      parse(kHeader + "\n" + R"({"type":"triangle_skipped","triangle":1.5,"reason":"x"})" + "\n"),
+      Catch::StartsWith("t.jsonl:2: malformed event"));
+  CHECK_THROWS_WITH(parse(kHeader + "\n" +
+                          R"({"type":"scanline","triangle":0,"y":1,"entered":[1e300],)"
+                          R"("retired":[],"active_edges":[],"active_points":[]})" + "\n"),
+                    Catch::StartsWith("t.jsonl:2: malformed event"));
+}

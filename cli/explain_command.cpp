@@ -17,6 +17,8 @@
 namespace scantrace::cli {
 namespace {
 
+constexpr long long kDefaultMaxEvents = 2'000'000;
+
 struct ExplainArgs {
   TraceFlags what;
   FillFlags fill;
@@ -25,7 +27,10 @@ struct ExplainArgs {
 
 void run(const ExplainArgs& args) {
   const auto input = args.what.input(args.fill.clamp_colors);
-  const trace::TraceFilter filter = args.what.filter();
+  trace::TraceFilter filter = args.what.filter();
+  // The trace stays in memory: unless --max-events says otherwise, a budget keeps a pixel-level
+  // trace of a large scene from exhausting it (a video could not show that many steps anyway).
+  if (!filter.max_events) filter.max_events = kDefaultMaxEvents;
   const FillOptions options = args.fill.options();
   const trace::Trace t = std::visit(
       [&](const auto& in) {
@@ -37,8 +42,8 @@ void run(const ExplainArgs& args) {
       input);
   if (t.truncated())
     spdlog::warn(
-        "warning: the trace was truncated after {} events (--max-events); the video "
-        "shows the steps before the cut",
+        "warning: the trace was truncated after {} events (--max-events, default 2000000 "
+        "for explain); the video shows the steps before the cut",
         t.footer()->events);
   run_replay(t, args.replay, args.what.input_name());
 }

@@ -19,6 +19,8 @@
 namespace scantrace::cli {
 namespace {
 
+constexpr long long kDefaultMaxEvents = 2'000'000;
+
 struct ExplainArgs {
   TraceFlags what;
   FillFlags fill;
@@ -29,8 +31,11 @@ struct ExplainArgs {
 void run(const ExplainArgs& args) {
   FillOptions options = args.model.apply(args.fill.options(), is_obj_file(args.what.scene));
   options.winding_rule = args.what.winding_rule();
-  const auto input = trace_input(args.what, args.model, options.shading);
-  const trace::TraceFilter filter = args.what.filter();
+  const auto input = trace_input(args.what, args.model, options.shading, args.fill.clamp_colors);
+  trace::TraceFilter filter = args.what.filter();
+  // The trace stays in memory: unless --max-events says otherwise, a budget keeps a pixel-level
+  // trace of a large scene from exhausting it (a video could not show that many steps anyway).
+  if (!filter.max_events) filter.max_events = kDefaultMaxEvents;
   const trace::Trace t = std::visit(
       [&](const auto& in) {
         if constexpr (std::is_same_v<std::decay_t<decltype(in)>, Scene>)
@@ -43,8 +48,8 @@ void run(const ExplainArgs& args) {
       input);
   if (t.truncated())
     spdlog::warn(
-        "warning: the trace was truncated after {} events (--max-events); the video "
-        "shows the steps before the cut",
+        "warning: the trace was truncated after {} events (--max-events, default 2000000 "
+        "for explain); the video shows the steps before the cut",
         t.footer()->events);
   run_replay(t, args.replay, args.what.input_name());
 }

@@ -47,6 +47,9 @@ void add_fill_flags(CLI::App& command, FillFlags& flags) {
                   "(docs/accuracy.md: what each gets wrong)")
       ->check(CLI::IsMember({"exact", "float", "double", "halfspace"}))
       ->capture_default_str();
+  command.add_flag("--clamp-colors", flags.clamp_colors,
+                   "clamp scene colours outside [0, 1] into it, with a\n"
+                   "warning (without it they are an error)");
 }
 
 }  // namespace scantrace::cli

@@ -16,6 +16,7 @@ struct FillFlags {
   std::string fill_rule = "top-left";
   int subpixel_bits = kDefaultSubpixelBits;
   std::string method = "exact";
+  bool clamp_colors = false;  // for the SCENE these commands read (cli/scene_input.hpp)
 
   FillOptions options() const;
 };

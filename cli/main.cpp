@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/log.hpp"
+#include "io/interrupt.hpp"
 
 namespace {
 
@@ -30,6 +31,7 @@ std::string usage_failure(const CLI::App* app, const CLI::Error& e) {
 
 int main(int argc, char** argv) {
   scantrace::cli::setup_logging();
+  scantrace::install_interrupt_handlers();
 
   CLI::App app("scantrace " SCANTRACE_VERSION
                ": an educational, exact edge-table scanline rasterizer.\n"
@@ -46,7 +48,8 @@ int main(int argc, char** argv) {
       "Run 'scantrace SUBCOMMAND --help' for the options of a subcommand.\n"
       "Exit status: 0 success, 1 bad input data (one line on stderr naming the\n"
       "file, the element and the problem), a failed write, or a failure of the\n"
-      "exact method found by 'stress', 2 usage error.");
+      "exact method found by 'stress', 2 usage error, 130/143 interrupted by\n"
+      "SIGINT/SIGTERM (no output is left under its final name).");
 
   const std::vector<scantrace::cli::Command> commands{
       scantrace::cli::add_demo_command(app),    scantrace::cli::add_render_command(app),
@@ -65,6 +68,9 @@ int main(int argc, char** argv) {
   try {
     for (const auto& command : commands)
       if (command.app->parsed()) command.run();
+  } catch (const scantrace::Interrupted& e) {
+    spdlog::error("error: {}", e.what());
+    return e.exit_status();  // 130 (SIGINT) or 143 (SIGTERM), as the shell reports a signal
   } catch (const std::exception& e) {
     spdlog::error("error: {}", e.what());
     return kExitBadInput;

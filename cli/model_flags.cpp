@@ -74,9 +74,9 @@ Scene ModelFlags::load_model(const std::string& file, Shading shading) const {
 }
 
 std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> trace_input(
-    const TraceFlags& what, const ModelFlags& model, Shading shading) {
+    const TraceFlags& what, const ModelFlags& model, Shading shading, bool clamp_colors) {
   if (!what.scene.empty() && is_obj_file(what.scene)) return model.load_model(what.scene, shading);
-  return what.input();
+  return what.input(clamp_colors);
 }
 
 void add_model_flags(CLI::App& cmd, ModelFlags& f, bool beside_triangle_flags) {

@@ -48,7 +48,7 @@ void add_model_flags(CLI::App& command, ModelFlags& flags, bool beside_triangle_
 
 // What trace and explain fill: a model shaded into a scene, a scene file, or one triangle.
 std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> trace_input(
-    const TraceFlags& what, const ModelFlags& model, Shading shading);
+    const TraceFlags& what, const ModelFlags& model, Shading shading, bool clamp_colors);
 
 // "x,y,z" → a vector (throws std::invalid_argument naming `what`).
 Vec3 parse_vec3(const std::string& text, const std::string& what);

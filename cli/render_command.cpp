@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/fill_flags.hpp"
 #include "cli/model_flags.hpp"
+#include "cli/scene_input.hpp"
 #include "cli/stopwatch.hpp"
 #include "io/obj_loader.hpp"
 #include "io/scene_json.hpp"
@@ -38,8 +39,8 @@ void run_render(const RenderArgs& args) {
   const Stopwatch load_clock;
   const bool model = is_obj_file(args.scene);
   const FillOptions options = args.model.apply(args.fill.options(), model);
-  const Scene scene =
-      model ? args.model.load_model(args.scene, options.shading) : load_scene(args.scene);
+  const Scene scene = model ? args.model.load_model(args.scene, options.shading)
+                            : load_scene_file(args.scene, args.fill.clamp_colors);
   const double load_ms = load_clock.ms();
 
   RenderStats stats;

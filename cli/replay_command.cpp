@@ -27,10 +27,10 @@ trace::Trace load_trace(const std::string& file, bool partial) {
   if (!partial) {
     trace::Trace t = trace::Trace::load(file);
     if (!t.complete())
-      throw trace::TraceError(
-          file +
-          ": the trace has no footer, so it was cut short (an interrupted writer or a "
-          "truncated file); --partial replays the events it holds");
+      throw trace::TraceError(file +
+                              ": the trace has no footer, so it is incomplete (an interrupted "
+                              "writer or a truncated file): " +
+                              t.progress() + "; --partial replays them");
     return t;
   }
   std::ifstream in(file, std::ios::binary);
@@ -46,10 +46,8 @@ trace::Trace load_trace(const std::string& file, bool partial) {
   std::istringstream lines(text);
   trace::Trace t = trace::Trace::parse(lines, file);
   if (!t.complete())
-    spdlog::warn(
-        "warning: {}: the trace has no footer (cut short); replaying the {} events it "
-        "holds",
-        file, t.events().size());
+    spdlog::warn("warning: {}: the trace has no footer (cut short): {}; replaying them", file,
+                 t.progress());
   return t;
 }
 

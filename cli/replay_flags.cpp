@@ -41,6 +41,7 @@ viz::ReplayOptions ReplayFlags::options(const std::string& source) const {
   o.plan.rows_per_step = rows_per_step;
   o.plan.mode = viz::parse_replay_mode(mode);
   o.source = source;
+  o.max_frames = max_frames;
   return o;
 }
 
@@ -80,6 +81,11 @@ void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) 
                   "scene: the painter's algorithm, triangles in batches\n"
                   "auto: triangles for one triangle, scene for more")
       ->check(CLI::IsMember({"auto", "triangles", "scene"}))
+      ->capture_default_str();
+  command
+      .add_option("--max-frames", flags.max_frames,
+                  "refuse (before drawing) a replay that needs more frames")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
 }
 

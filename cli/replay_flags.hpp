@@ -23,6 +23,7 @@ struct ReplayFlags {
   std::string steps;
   int rows_per_step = 0;
   std::string mode = "auto";
+  std::size_t max_frames = viz::kDefaultMaxFrames;
 
   viz::ReplayOptions options(const std::string& source) const;
 };

@@ -17,6 +17,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/stress_opencv.hpp"
+#include "io/interrupt.hpp"
 #include "src/stress/report.hpp"
 #include "src/stress/runner.hpp"
 
@@ -91,6 +92,7 @@ void run_stress_command(const StressArgs& args) {
   spdlog::info("stress: seed {} (replay with --seed {}), {} s", options.seed, options.seed,
                options.seconds);
   options.progress = [](const stress::Progress& p) {
+    check_interrupt();  // about once a second: Ctrl-C stops a long run here
     spdlog::info("stress: {:.0f}/{:.0f} s, {} cases, {} failing exact cases", p.elapsed, p.budget,
                  p.cases, p.default_failures);
   };

@@ -24,13 +24,16 @@ struct TraceArgs {
   FillFlags fill;
   ModelFlags model;
   std::string output;
+  // A full disk is not how a pixel-level trace of a large scene should end.
+  long long max_bytes = 1LL << 30;
 };
 
 void run_trace(const TraceArgs& args) {
   FillOptions options = args.model.apply(args.fill.options(), is_obj_file(args.what.scene));
   options.winding_rule = args.what.winding_rule();
-  const auto input = trace_input(args.what, args.model, options.shading);
-  const trace::TraceFilter filter = args.what.filter();
+  const auto input = trace_input(args.what, args.model, options.shading, args.fill.clamp_colors);
+  trace::TraceFilter filter = args.what.filter();
+  filter.max_bytes = args.max_bytes;
   const Stopwatch clock;
   const trace::Footer footer = std::visit(
       [&](const auto& in) {
@@ -47,9 +50,9 @@ void run_trace(const TraceArgs& args) {
                clock.ms(), args.output);
   if (footer.truncated)
     spdlog::warn(
-        "warning: {}: the trace was truncated after {} events (--max-events); its "
-        "footer says \"truncated\": true",
-        args.output, footer.events);
+        "warning: {}: the trace was truncated after {} events (budget --max-events or "
+        "--max-bytes {}); its footer says \"truncated\": true",
+        args.output, footer.events, args.max_bytes);
 }
 
 }  // namespace
@@ -68,6 +71,10 @@ Command add_trace_command(CLI::App& app) {
   add_fill_flags(*cmd, args->fill);
   add_model_flags(*cmd, args->model, true);
   cmd->add_option("-o,--output", args->output, "output trace (.jsonl)")->required();
+  cmd->add_option("--max-bytes", args->max_bytes,
+                  "stop before the file would exceed N bytes; the footer\nthen says truncated")
+      ->check(CLI::Range(1024LL, 1LL << 50))
+      ->capture_default_str();
   cmd->callback([args] { args->what.check(args->fill.fill_rule); });
   cmd->footer(
       "Examples:\n"

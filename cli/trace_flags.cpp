@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/scene_input.hpp"
 #include "cli/validators.hpp"
 
 #include "io/scene_json.hpp"
@@ -142,8 +143,9 @@ void TraceFlags::check(const std::string& fill_rule) const {
   }
 }
 
-std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> TraceFlags::input() const {
-  if (!scene.empty()) return load_scene(scene);
+std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> TraceFlags::input(
+    bool clamp_colors) const {
+  if (!scene.empty()) return load_scene_file(scene, clamp_colors);
   if (!polygon.empty()) {
     trace::GeneralPolygonInput p;
     p.contours = parse_polygon(polygon);
@@ -159,6 +161,7 @@ std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> TraceFlags
   t.vertices = parse_triangle(triangle);
   t.colors = parse_colors(colors);
   std::tie(t.width, t.height) = parse_size(size);
+  check_canvas_memory(t.width, t.height, "--size", size);
   return t;
 }
 

@@ -31,8 +31,9 @@ struct TraceFlags {
   std::string rows;
   std::optional<long long> max_events;
 
-  // Throws InputError when the scene file is bad.
-  std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> input() const;
+  // Throws InputError when the scene file is bad; `clamp_colors` as in cli/scene_input.hpp.
+  std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> input(
+      bool clamp_colors) const;
   WindingRule winding_rule() const;
   // The checks that need several options at once (run from the subcommand's callback, so they
   // are usage errors): an input is given, --colors fits it, a polygon is not filled `closed`.

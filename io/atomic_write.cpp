@@ -1,4 +1,5 @@
 #include "io/atomic_write.hpp"
+#include "io/interrupt.hpp"
 
 #include <unistd.h>
 
@@ -40,9 +41,11 @@ void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& temp)>& write) {
   if (!target.has_filename()) fail(target, "cannot write", "not a file name");
   const std::filesystem::path temp = temporary_name_for(target);
+  register_temporary(temp);
   auto discard = [&] {
     std::error_code ignored;
     std::filesystem::remove(temp, ignored);
+    unregister_temporary(temp);
   };
   try {
     write(temp);
@@ -56,6 +59,7 @@ void write_atomically(const std::filesystem::path& target,
     discard();
     fail(target, "cannot write", ec.message());
   }
+  unregister_temporary(temp);
 }
 
 void write_file_atomically(const std::filesystem::path& target, std::string_view bytes) {
@@ -73,8 +77,12 @@ void write_file_atomically(const std::filesystem::path& target, std::string_view
 
 AtomicFile::AtomicFile(std::filesystem::path target)
     : target_(std::move(target)), temp_(temporary_name_for(target_)) {
+  register_temporary(temp_);
   out_.open(temp_, std::ios::binary | std::ios::trunc);
-  if (!out_) fail(target_, "cannot create file", std::strerror(errno));
+  if (!out_) {
+    unregister_temporary(temp_);
+    fail(target_, "cannot create file", std::strerror(errno));
+  }
 }
 
 AtomicFile::~AtomicFile() {
@@ -82,6 +90,7 @@ AtomicFile::~AtomicFile() {
   out_.close();
   std::error_code ignored;
   std::filesystem::remove(temp_, ignored);
+  unregister_temporary(temp_);
 }
 
 void AtomicFile::commit() {
@@ -93,6 +102,7 @@ void AtomicFile::commit() {
   std::filesystem::rename(temp_, target_, ec);
   if (ec) fail(target_, "cannot write", ec.message());
   done_ = true;
+  unregister_temporary(temp_);
 }
 
 }  // namespace scantrace

@@ -58,6 +58,22 @@ nlohmann::json parse(std::string_view text, const std::string& name_for_errors) 
     throw InputError(
         name_for_errors + ":" + std::to_string(p.line) + ":" + std::to_string(p.column), "",
         "JSON syntax error: " + explanation(e));
+  } catch (const nlohmann::json::out_of_range& e) {
+    // The one out_of_range a parse throws is 406, a number beyond a double ("1e999"): it carries
+    // no position, so the literal it quotes is looked up in the text.
+    const std::string what = e.what();
+    const std::size_t open = what.find('\''), close = what.rfind('\'');
+    const std::string literal =
+        open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    const std::size_t at = literal.empty() ? std::string_view::npos : text.find(literal);
+    std::string where = name_for_errors;
+    if (at != std::string_view::npos) {
+      const TextPosition p = position_of(text, at);
+      where += ":" + std::to_string(p.line) + ":" + std::to_string(p.column);
+    }
+    throw InputError(where, "",
+                     "number " + (literal.empty() ? std::string("literal") : literal) +
+                         " is too large for a double (infinite and NaN values are not accepted)");
   }
 }
 

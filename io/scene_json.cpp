@@ -1,6 +1,7 @@
 // Reading scene files: JSON syntax, then the shape of every key (arrays of the right lengths,
 // numbers where numbers belong), then the meaning (scantrace::validate: indices in range, colours
 // in [0, 1], finite numbers, canvas size).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <istream>
@@ -41,7 +42,8 @@ std::optional<long double> integer(const json& v) {
 
 class SceneReader {
  public:
-  SceneReader(const json& root, const std::string& file) : root_(root), file_(file) {}
+  SceneReader(const json& root, const std::string& file, ColorClamping* clamping)
+      : root_(root), file_(file), clamping_(clamping) {}
 
   Scene read() {
     if (!root_.is_object())
@@ -74,12 +76,29 @@ class SceneReader {
     if (const json* w = optional_key("width")) s.width = canvas_size(*w, "width");
     if (const json* h = optional_key("height")) s.height = canvas_size(*h, "height");
     if (const json* b = optional_key("background")) s.background = color(*b, "background");
+    if (clamping_) {
+      for (std::size_t i = 0; i < s.vcolors.size(); ++i) clamp(s.vcolors[i], at("vcolors", i));
+      clamp(s.background, "background");
+    }
 
     if (const auto problem = validate(s)) fail(problem->element, problem->problem);
     return s;
   }
 
  private:
+  // Only finite components are clamped: a number too large for a double is damage, not a colour
+  // slightly out of range, and stays an error.
+  void clamp(Color& c, const std::string& element) const {
+    bool changed = false;
+    for (double* v : {&c.r, &c.g, &c.b})
+      if (std::isfinite(*v) && (*v < 0.0 || *v > 1.0)) {
+        *v = std::clamp(*v, 0.0, 1.0);
+        changed = true;
+      }
+    if (!changed) return;
+    if (clamping_->clamped++ == 0) clamping_->first = element;
+  }
+
   [[noreturn]] void fail(const std::string& element, const std::string& problem) const {
     throw InputError(file_, element, problem);
   }
@@ -153,23 +172,25 @@ class SceneReader {
 
   const json& root_;
   const std::string& file_;
+  ColorClamping* clamping_;
 };
 
 }  // namespace
 
-Scene parse_scene_text(std::string_view text, const std::string& name_for_errors) {
+Scene parse_scene_text(std::string_view text, const std::string& name_for_errors,
+                       ColorClamping* clamping) {
   const json root = json_input::parse(text, name_for_errors);
-  return SceneReader(root, name_for_errors).read();
+  return SceneReader(root, name_for_errors, clamping).read();
 }
 
-Scene parse_scene(std::istream& in, const std::string& name_for_errors) {
+Scene parse_scene(std::istream& in, const std::string& name_for_errors, ColorClamping* clamping) {
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (in.bad()) throw InputError(name_for_errors, "", "cannot read the input stream");
-  return parse_scene_text(text, name_for_errors);
+  return parse_scene_text(text, name_for_errors, clamping);
 }
 
-Scene load_scene(const std::filesystem::path& file) {
-  return parse_scene_text(json_input::read_text_file(file), file.string());
+Scene load_scene(const std::filesystem::path& file, ColorClamping* clamping) {
+  return parse_scene_text(json_input::read_text_file(file), file.string(), clamping);
 }
 
 }  // namespace scantrace

@@ -21,12 +21,22 @@
 
 namespace scantrace {
 
-// Reads, parses and validates a scene file.
-Scene load_scene(const std::filesystem::path& file);
+// What --clamp-colors did: how many colours (vcolors entries and the background) had a component
+// outside [0, 1] and were clamped into it, and the first of them ("vcolors[3]").
+struct ColorClamping {
+  std::size_t clamped = 0;
+  std::string first;
+};
+
+// Reads, parses and validates a scene file. Colours outside [0, 1] are an error naming the
+// element, unless `clamping` is given: then they are clamped and counted in it.
+Scene load_scene(const std::filesystem::path& file, ColorClamping* clamping = nullptr);
 
 // Parses and validates a scene from a stream; `name_for_errors` starts every error message.
-Scene parse_scene(std::istream& in, const std::string& name_for_errors);
-Scene parse_scene_text(std::string_view text, const std::string& name_for_errors);
+Scene parse_scene(std::istream& in, const std::string& name_for_errors,
+                  ColorClamping* clamping = nullptr);
+Scene parse_scene_text(std::string_view text, const std::string& name_for_errors,
+                       ColorClamping* clamping = nullptr);
 
 // The scene as JSON text with every key present, one array element per line (so that a syntax
 // error's line number points at the element). Doubles are written with enough digits to read

@@ -3,9 +3,10 @@
 # when everything is installed this neither calls apt-get nor asks for sudo.
 set -euo pipefail
 
-# ffmpeg provides ffprobe, with which the tests check the codec of the videos `replay` writes.
+# ffmpeg provides ffprobe, with which the tests check the codec of the videos `replay` writes;
+# clang-14 and libfuzzer-14-dev build the fuzz targets (scripts/fuzz.sh, run by .ci/run).
 packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 libcli11-dev
-          libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev)
+          libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev clang-14 libfuzzer-14-dev)
 
 if ! command -v dpkg >/dev/null 2>&1; then
   echo "deps.sh: dpkg not found (not Debian/Ubuntu?); install these yourself: ${packages[*]}" >&2

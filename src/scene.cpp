@@ -1,6 +1,7 @@
 #include "scene.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace scantrace {
 namespace {
@@ -19,6 +20,13 @@ bool in_unit_range(Color c) {
   return in_unit_range(c.r) && in_unit_range(c.g) && in_unit_range(c.b);
 }
 
+std::string color_problem(Color c) {
+  if (!finite(c)) return "colour components must be finite numbers";
+  std::ostringstream s;
+  s << "colour [" << c.r << ", " << c.g << ", " << c.b << "] has a component outside [0, 1]";
+  return s.str();
+}
+
 }  // namespace
 
 std::optional<SceneProblem> validate(const Scene& scene) {
@@ -27,11 +35,12 @@ std::optional<SceneProblem> validate(const Scene& scene) {
                                             std::to_string(scene.width) + "x" +
                                             std::to_string(scene.height)};
   if (static_cast<long long>(scene.width) * scene.height > kMaxCanvasPixels)
-    return SceneProblem{"width/height", "canvas of " + std::to_string(scene.width) + "x" +
-                                            std::to_string(scene.height) +
-                                            " pixels exceeds the limit of 2^28 pixels"};
+    return SceneProblem{
+        "width/height",
+        "canvas of " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+            " pixels exceeds the limit of 2^28 pixels (3 GiB as a float RGB canvas)"};
   if (!finite(scene.background) || !in_unit_range(scene.background))
-    return SceneProblem{"background", "colour components must be numbers in [0, 1]"};
+    return SceneProblem{"background", color_problem(scene.background)};
   const std::size_t n = scene.vertices.size();
   if (scene.vcolors.size() != n)
     return SceneProblem{"vcolors", "has " + std::to_string(scene.vcolors.size()) +
@@ -43,7 +52,7 @@ std::optional<SceneProblem> validate(const Scene& scene) {
     if (!std::isfinite(scene.vertices[i].x) || !std::isfinite(scene.vertices[i].y))
       return SceneProblem{at("vertices", i), "coordinate is not a finite number"};
     if (!finite(scene.vcolors[i]) || !in_unit_range(scene.vcolors[i]))
-      return SceneProblem{at("vcolors", i), "colour components must be numbers in [0, 1]"};
+      return SceneProblem{at("vcolors", i), color_problem(scene.vcolors[i])};
     if (!std::isfinite(scene.depth[i]))
       return SceneProblem{at("depth", i), "depth is not a finite number"};
   }

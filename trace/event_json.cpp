@@ -1,6 +1,9 @@
 #include "event_json.hpp"
 
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace scantrace {
 
@@ -27,6 +30,28 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 using json = nlohmann::json;
+
+// nlohmann's get<int>() converts a float or an out-of-range integer by a plain cast, which is
+// undefined behaviour for 5e33 (found by fuzzing the reader): integers are checked here.
+template <class T>
+T integer(const json& v) {
+  if (v.is_number_integer() && !v.is_number_unsigned()) {
+    const std::int64_t i = v.get<std::int64_t>();
+    if (i >= std::numeric_limits<T>::min() && i <= std::numeric_limits<T>::max())
+      return static_cast<T>(i);
+  } else if (v.is_number_unsigned()) {
+    const std::uint64_t u = v.get<std::uint64_t>();
+    if (u <= static_cast<std::uint64_t>(std::numeric_limits<T>::max())) return static_cast<T>(u);
+  }
+  throw std::invalid_argument("expected an integer in range, got " + v.dump());
+}
+
+std::vector<int> integers(const json& v) {
+  if (!v.is_array()) throw std::invalid_argument("expected an array of integers");
+  std::vector<int> out;
+  for (const json& item : v) out.push_back(integer<int>(item));
+  return out;
+}
 
 template <class T>
 ojson list(const std::vector<T>& items) {
@@ -144,11 +169,11 @@ std::vector<T> list_of(const json& j, const char* key) {
 Header decode_header(const json& j) {
   Header h;
   h.format = j.at("format").get<std::string>();
-  h.version = j.at("version").get<int>();
-  h.canvas = {j.at("canvas").at("width").get<int>(), j.at("canvas").at("height").get<int>()};
+  h.version = integer<int>(j.at("version"));
+  h.canvas = {integer<int>(j.at("canvas").at("width")), integer<int>(j.at("canvas").at("height"))};
   h.shading = j.at("shading").get<std::string>();
   h.fill_rule = j.at("fill_rule").get<std::string>();
-  h.subpixel_bits = j.at("subpixel_bits").get<int>();
+  h.subpixel_bits = integer<int>(j.at("subpixel_bits"));
   h.level = j.at("level").get<std::string>();
   h.generator = j.at("generator").get<std::string>();
   if (j.contains("winding_rule")) h.winding_rule = j["winding_rule"].get<std::string>();
@@ -159,7 +184,7 @@ Header decode_header(const json& j) {
 
 TriangleBegin decode_begin(const json& j) {
   TriangleBegin e;
-  e.triangle = j.at("triangle").get<int>();
+  e.triangle = integer<int>(j.at("triangle"));
   e.vertices = list_of<Vec2>(j, "vertices");
   e.snapped = list_of<Vec2>(j, "snapped");
   e.colors = list_of<Color>(j, "colors");
@@ -171,14 +196,14 @@ TriangleBegin decode_begin(const json& j) {
 
 EdgeTableEvent decode_edge_table(const json& j) {
   EdgeTableEvent e;
-  e.triangle = j.at("triangle").get<int>();
+  e.triangle = integer<int>(j.at("triangle"));
   for (const json& x : j.at("edges"))
-    e.edges.push_back({x.at("edge").get<int>(), x.at("from").get<Vec2>(), x.at("to").get<Vec2>(),
+    e.edges.push_back({integer<int>(x.at("edge")), x.at("from").get<Vec2>(), x.at("to").get<Vec2>(),
                        x.at("y_min").get<double>(), x.at("y_max").get<double>(),
                        x.at("x_at_y_min").get<double>(), x.at("dx_dy").get<double>(),
-                       x.at("first_row").get<i64>(), x.at("last_row").get<i64>()});
+                       integer<i64>(x.at("first_row")), integer<i64>(x.at("last_row"))});
   for (const json& h : j.at("horizontal"))
-    e.horizontal.push_back({h.at("edge").get<int>(), h.at("from").get<Vec2>(),
+    e.horizontal.push_back({integer<int>(h.at("edge")), h.at("from").get<Vec2>(),
                             h.at("to").get<Vec2>(), h.at("y").get<double>(),
                             h.at("reason").get<std::string>()});
   return e;
@@ -186,20 +211,20 @@ EdgeTableEvent decode_edge_table(const json& j) {
 
 Scanline decode_scanline(const json& j) {
   Scanline s;
-  s.triangle = j.at("triangle").get<int>();
-  s.y = j.at("y").get<i64>();
-  s.entered = j.at("entered").get<std::vector<int>>();
-  s.retired = j.at("retired").get<std::vector<int>>();
+  s.triangle = integer<int>(j.at("triangle"));
+  s.y = integer<i64>(j.at("y"));
+  s.entered = integers(j.at("entered"));
+  s.retired = integers(j.at("retired"));
   for (const json& a : j.at("active_edges")) {
-    ActiveEdge e{a.at("edge").get<int>(), a.at("x").get<double>()};
-    if (a.contains("winding")) e.winding = a["winding"].get<int>();
+    ActiveEdge e{integer<int>(a.at("edge")), a.at("x").get<double>()};
+    if (a.contains("winding")) e.winding = integer<int>(a["winding"]);
     s.active_edges.push_back(e);
   }
   for (const json& p : j.at("active_points"))
     s.active_points.push_back(
-        {p.at("x").get<double>(), p.at("edge").get<int>(), p.at("color").get<Color>()});
+        {p.at("x").get<double>(), integer<int>(p.at("edge")), p.at("color").get<Color>()});
   if (j.contains("span"))
-    s.span = Span{j["span"].at("x_begin").get<i64>(), j["span"].at("x_end").get<i64>()};
+    s.span = Span{integer<i64>(j["span"].at("x_begin")), integer<i64>(j["span"].at("x_end"))};
   if (j.contains("span_colors"))
     s.span_colors = SpanColors{j["span_colors"].at("begin").get<Color>(),
                                j["span_colors"].at("end").get<Color>()};
@@ -242,8 +267,8 @@ Event event_from_json(const json& j) {
   if (type == "edge_table") return decode_edge_table(j);
   if (type == "scanline") return decode_scanline(j);
   if (type == "pixel") {
-    Pixel p{j.at("triangle").get<int>(), j.at("x").get<i64>(),    j.at("y").get<i64>(),
-            j.at("color").get<Color>(),  j.at("t").get<double>(), {}};
+    Pixel p{integer<int>(j.at("triangle")), integer<i64>(j.at("x")), integer<i64>(j.at("y")),
+            j.at("color").get<Color>(),     j.at("t").get<double>(), {}};
     if (j.contains("depth_test")) {
       PixelDepthTest d;
       d.passed = j.at("depth_test").get<std::string>() == "passed";
@@ -254,11 +279,11 @@ Event event_from_json(const json& j) {
     return p;
   }
   if (type == "triangle_end")
-    return TriangleEnd{j.at("triangle").get<int>(), j.at("rows").get<i64>(),
-                       j.at("pixels").get<i64>()};
+    return TriangleEnd{integer<int>(j.at("triangle")), integer<i64>(j.at("rows")),
+                       integer<i64>(j.at("pixels"))};
   if (type == "triangle_skipped")
-    return TriangleSkipped{j.at("triangle").get<int>(), j.at("reason").get<std::string>()};
-  if (type == "footer") return Footer{j.at("events").get<i64>(), j.at("truncated").get<bool>()};
+    return TriangleSkipped{integer<int>(j.at("triangle")), j.at("reason").get<std::string>()};
+  if (type == "footer") return Footer{integer<i64>(j.at("events")), j.at("truncated").get<bool>()};
   throw std::invalid_argument("unknown event type \"" + type + "\"");
 }
 

@@ -22,7 +22,9 @@ TriangleBegin to_event(const PolygonSetup& s);
 EdgeTableEvent to_event(const EdgeTableView& v);
 Scanline to_event(const ScanlineStep& s);
 
-// A Sink provides `void write(const Event&)` and `R finish(const Footer&)`.
+// A Sink provides `void write(const Event&)` and `R finish(const Footer&)`; one that writes bytes
+// may also provide `bool write_within(const Event&, std::int64_t max_bytes)`, which writes the
+// event only if the output stays within max_bytes (TraceFilter::max_bytes).
 template <class Sink>
 class EventTracer {
  public:
@@ -66,6 +68,15 @@ class EventTracer {
       // events at all, and the footer says the trace is incomplete.
       full_ = truncated_ = true;
       return;
+    }
+    if constexpr (requires(Sink & sink) { sink.write_within(e, std::int64_t{}); }) {
+      if (filter_.max_bytes) {
+        if (!sink_.write_within(e, *filter_.max_bytes))
+          full_ = truncated_ = true;
+        else
+          ++events_;
+        return;
+      }
     }
     ++events_;
     sink_.write(e);

@@ -9,8 +9,28 @@
 namespace scantrace::trace {
 namespace {
 
-// Lines longer than this are not a trace line but damage (or another file).
-constexpr std::size_t kMaxLineBytes = std::size_t{64} << 20;
+// Lines longer than this are not a trace line but damage (or another file). The longest real
+// lines are edge tables and scanlines of many-sided polygons, far below it.
+constexpr std::size_t kMaxLineBytes = std::size_t{16} << 20;
+
+enum class LineRead { line, last_line_unterminated, too_long, end };
+
+// std::getline would read a 10 GB line into memory before its length could be checked; this
+// stops at kMaxLineBytes.
+LineRead read_line(std::istream& in, std::string& line) {
+  line.clear();
+  std::streambuf* buf = in.rdbuf();
+  for (;;) {
+    const int c = buf->sbumpc();
+    if (c == std::char_traits<char>::eof()) {
+      in.setstate(std::ios::eofbit);
+      return line.empty() ? LineRead::end : LineRead::last_line_unterminated;
+    }
+    if (c == '\n') return LineRead::line;
+    if (line.size() == kMaxLineBytes) return LineRead::too_long;
+    line.push_back(static_cast<char>(c));
+  }
+}
 
 std::uint64_t pixel_key(i64 x, i64 y) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(x)) << 32) |
@@ -18,6 +38,34 @@ std::uint64_t pixel_key(i64 x, i64 y) {
 }
 
 }  // namespace
+
+std::string progress_of(const std::vector<Event>& events) {
+  std::size_t n = events.size();
+  std::string s = "it holds the header and " + std::to_string(n == 0 ? 0 : n - 1) + " events";
+  // The last triangle and row reached, from the end: what a user needs to resume or re-trace.
+  for (auto it = events.rbegin(); it != events.rend(); ++it) {
+    if (const Pixel* p = std::get_if<Pixel>(&*it))
+      return s + ", the last at triangle " + std::to_string(p->triangle) + ", pixel (" +
+             std::to_string(p->x) + ", " + std::to_string(p->y) + ")";
+    if (const Scanline* row = std::get_if<Scanline>(&*it))
+      return s + ", the last at triangle " + std::to_string(row->triangle) + ", row " +
+             std::to_string(row->y);
+    const int tri = std::visit(
+        [](const auto& v) -> int {
+          if constexpr (requires { v.triangle; })
+            return v.triangle;
+          else
+            return -1;
+        },
+        *it);
+    if (tri >= 0) return s + ", the last for triangle " + std::to_string(tri);
+  }
+  return s;
+}
+
+std::string Trace::progress() const {
+  return progress_of(events_);
+}
 
 const PixelWrite& PixelHistory::final() const {
   if (writes.empty()) throw std::out_of_range("no triangle wrote this pixel");
@@ -34,16 +82,27 @@ Trace Trace::parse(std::istream& in, const std::string& name) {
   std::vector<Event> events;
   std::string line;
   std::size_t number = 0;
-  while (std::getline(in, line)) {
+  for (LineRead r; (r = read_line(in, line)) != LineRead::end;) {
     ++number;
     const std::string where = name + ":" + std::to_string(number) + ": ";
-    if (line.size() > kMaxLineBytes) throw TraceError(where + "line too long to be a trace event");
+    if (r == LineRead::too_long)
+      throw TraceError(where + "line longer than " + std::to_string(kMaxLineBytes >> 20) +
+                       " MiB: not a trace event (a damaged file, or not a trace)");
     if (line.empty()) throw TraceError(where + "empty line (one JSON object per line expected)");
     nlohmann::json j;
     try {
       j = nlohmann::json::parse(line);
     } catch (const nlohmann::json::parse_error& e) {
+      // A last line without its newline is where a writer was cut off, not damage in the middle.
+      if (r == LineRead::last_line_unterminated && !events.empty())
+        throw TraceError(where +
+                         "the file ends in the middle of this line: the trace is "
+                         "incomplete (cut off while being written); " +
+                         progress_of(events));
       throw TraceError(where + "not valid JSON (" + e.what() + ")");
+    } catch (const nlohmann::json::out_of_range&) {
+      // Thrown by parse for a number beyond a double ("1e999", found by fuzzing).
+      throw TraceError(where + "a number is too large for a double");
     }
     // The format and version are checked before anything else is decoded: a later version may
     // change any other key, and "version 2 is not supported" is the message that helps then.
@@ -56,8 +115,9 @@ Trace Trace::parse(std::istream& in, const std::string& name) {
       const std::string format = text("format");
       if (format != kFormatName)
         throw TraceError(where + "format is \"" + format + "\", not a scantrace trace");
-      const int version =
-          j.contains("version") && j["version"].is_number_integer() ? j["version"].get<int>() : 0;
+      const std::int64_t version = j.contains("version") && j["version"].is_number_integer()
+                                       ? j["version"].get<std::int64_t>()
+                                       : 0;
       if (version != kFormatVersion)
         throw TraceError(where + "trace format version " + std::to_string(version) +
                          " is not supported (this build reads version " +
@@ -78,6 +138,13 @@ Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
   t.name_ = name;
   if (events.empty() || !std::holds_alternative<Header>(events.front()))
     throw TraceError(name + ": a trace starts with its header");
+  // Replay allocates from the canvas size: refuse what no writer could have produced.
+  const Canvas canvas = std::get<Header>(events.front()).canvas;
+  if (canvas.width <= 0 || canvas.height <= 0 ||
+      static_cast<long long>(canvas.width) * canvas.height > kMaxCanvasPixels)
+    throw TraceError(name + ":1: header: canvas " + std::to_string(canvas.width) + "x" +
+                     std::to_string(canvas.height) +
+                     " is not a positive size of at most 2^28 pixels");
   for (std::size_t i = 1; i < events.size(); ++i) {
     const Event& e = events[i];
     auto fail = [&](const std::string& what) {

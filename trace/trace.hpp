@@ -18,6 +18,7 @@
 
 #include "events.hpp"
 #include "io/input_error.hpp"
+#include "src/scene.hpp"
 
 namespace scantrace::trace {
 
@@ -27,6 +28,9 @@ class TraceError : public InputError {
  public:
   explicit TraceError(const std::string& message) : InputError(message, "", "") {}
 };
+
+// progress() of a trace holding `events` (header first).
+std::string progress_of(const std::vector<Event>& events);
 
 struct PixelWrite {
   int triangle = 0;
@@ -51,6 +55,9 @@ class Trace {
   const Header& header() const;
   const std::vector<Event>& events() const { return events_; }
   bool complete() const { return footer_.has_value(); }  // false: the writer was interrupted
+  // How far the trace got, for messages about an incomplete one: "it holds the header and 812
+  // events, the last at triangle 17, row 212".
+  std::string progress() const;
   bool truncated() const { return footer_ && footer_->truncated; }
   const std::optional<Footer>& footer() const { return footer_; }
 

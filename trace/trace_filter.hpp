@@ -35,6 +35,9 @@ struct TraceFilter {
   std::optional<IndexSet> triangles{};       // none: every triangle
   std::optional<RowRange> rows{};            // none: every row (scanline and pixel events only)
   std::optional<std::int64_t> max_events{};  // cap on the events between header and footer
+  // Cap on the size of a written trace: the header and event lines stay within it (the footer
+  // line, under 100 bytes, comes on top). Only sinks that write bytes (JSON Lines) apply it.
+  std::optional<std::int64_t> max_bytes{};
 };
 
 const char* to_string(TraceLevel level);

@@ -7,6 +7,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "io/interrupt.hpp"
 #include "viz/frame_directory.hpp"
 #include "viz/replayer.hpp"
 #include "viz/video_writer.hpp"
@@ -89,17 +90,24 @@ ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
   result.mode = replayer.plan().mode;
   result.rows_per_step = replayer.plan().rows_per_step;
 
-  std::unique_ptr<FrameSink> sink;
-  std::size_t work = result.steps;  // progress is counted in frames written
+  std::size_t work = result.steps;  // frames to write; progress is counted in them
   if (result.kind == OutputKind::video) {
-    sink = std::make_unique<VideoFile>(out, options.size, options.fps);
     work = 0;
     for (std::size_t i = first; i <= last; ++i)
       work += static_cast<std::size_t>(frames_for(replayer.steps()[i], options.fps, options.hold));
-  } else {
-    sink = std::make_unique<FrameDirectory>(out, options.size);
   }
+  if (work > options.max_frames)
+    throw std::invalid_argument(fmt::format(
+        "{}: the replay needs {} frames ({} steps), more than the budget of {} (--max-frames); "
+        "choose fewer steps (--steps A:B, --rows-per-step N, fewer triangles) or raise the budget",
+        out.string(), work, result.steps, options.max_frames));
+  std::unique_ptr<FrameSink> sink;
+  if (result.kind == OutputKind::video)
+    sink = std::make_unique<VideoFile>(out, options.size, options.fps);
+  else
+    sink = std::make_unique<FrameDirectory>(out, options.size);
   for (std::size_t i = first; i <= last; ++i) {
+    check_interrupt();  // a long video: Ctrl-C stops here and the sink removes its temporary
     const int repeat = frames_for(replayer.steps()[i], options.fps, options.hold);
     sink->write(replayer.frame(i), repeat);
     if (progress) progress->update(sink->frames(), work);

@@ -24,6 +24,8 @@ struct StepRange {
   static StepRange parse(const std::string& text);  // throws std::invalid_argument
 };
 
+inline constexpr std::size_t kDefaultMaxFrames = 20000;
+
 struct ReplayOptions {
   cv::Size size{1280, 720};  // even, at least 320x180
   double fps = 5;            // video only: the frames are stills, so few are needed
@@ -31,6 +33,10 @@ struct ReplayOptions {
   StepRange steps{};
   StepOptions plan{};
   std::string source{};  // how the title card names the input (default: "the trace")
+  // The most frames a replay may write (video frames, or PNG files): checked before the first
+  // frame is drawn, so a trace too long to replay is a clear error, not hours of encoding or a
+  // full disk. 20,000 frames is over an hour of video at 5 fps.
+  std::size_t max_frames = kDefaultMaxFrames;
 };
 
 // Throws std::invalid_argument naming the option that is out of range.

@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "io/atomic_write.hpp"
+#include "io/interrupt.hpp"
 
 namespace scantrace::viz {
 
@@ -32,6 +33,7 @@ VideoFile::VideoFile(std::filesystem::path path, cv::Size size, double fps)
     const char* fourcc;
     const char* name;
   };
+  register_temporary(temp_);
   for (const Codec c : {Codec{"avc1", "h264"}, Codec{"mp4v", "mpeg4"}}) {
     try {
       writer_.open(temp_.string(), cv::CAP_FFMPEG,
@@ -48,6 +50,7 @@ VideoFile::VideoFile(std::filesystem::path path, cv::Size size, double fps)
   if (!writer_.isOpened()) {
     std::error_code ignored;
     std::filesystem::remove(temp_, ignored);
+    unregister_temporary(temp_);
     throw std::runtime_error(path_.string() +
                              ": cannot open a video writer (neither H.264 'avc1' nor MPEG-4 "
                              "'mp4v' through OpenCV's FFmpeg backend; is the directory "
@@ -65,6 +68,7 @@ VideoFile::~VideoFile() {
   writer_.release();
   std::error_code ignored;
   std::filesystem::remove(temp_, ignored);
+  unregister_temporary(temp_);
 }
 
 void VideoFile::write(const cv::Mat& frame, int repeat) {
@@ -89,6 +93,7 @@ void VideoFile::commit() {
     throw std::runtime_error(path_.string() + ": cannot write: " + ec.message());
   }
   committed_ = true;
+  unregister_temporary(temp_);
 }
 
 }  // namespace scantrace::viz

@@ -150,7 +150,7 @@ TEST_CASE("scene errors name the file and the element", "[scene_json][errors]") 
           "scene.json: faces[0]: vertex index 99999999999999 is out of range (3 vertices)");
     CHECK(load_error("{" + three_vertices +
                      R"("faces": [], "vcolors": [[1,0,0],[0,1,0],[0,0,1.5]], "depth": [1,2,3]})") ==
-          "scene.json: vcolors[2]: colour components must be numbers in [0, 1]");
+          "scene.json: vcolors[2]: colour [0, 0, 1.5] has a component outside [0, 1]");
     CHECK(load_error("{" + three_vertices +
                      R"("faces": [], "vcolors": [[1,0,0],[0,1,0],[0,0,1]], "depth": [1,2]})") ==
           "scene.json: depth: has 2 entries but there are 3 vertices");
@@ -186,4 +186,39 @@ TEST_CASE("the course scene loads quickly", "[scene_json][shared_data]") {
   // accidental quadratic, not a slow (e.g. Debug or sanitizer) build.
   INFO("load_scene took " << ms << " ms");
   CHECK(ms < 2000);
+}
+
+TEST_CASE("numbers beyond a double are an input error with their position (found by fuzzing)",
+          "[scene_json][fuzz]") {
+  // fuzz/regressions/scene_parser/number-overflow: nlohmann throws out_of_range for these, which
+  // escaped the parser and terminated the program.
+  CHECK(load_error("{\"vertices\": [[0, 0], [9, 0],\n [0, 1e999]], " + kValidTail +
+                   ", \"faces\": []}") ==
+        "scene.json:2:6: number 1e999 is too large for a double (infinite and NaN values are "
+        "not accepted)");
+  CHECK(load_error("{\"depth\": [-1e400]}") ==
+        "scene.json:1:12: number -1e400 is too large for a double (infinite and NaN values are "
+        "not accepted)");
+  const std::string crasher = test::read_text(std::filesystem::path(SCANTRACE_SOURCE_DIR) /
+                                              "fuzz/regressions/scene_parser/number-overflow");
+  REQUIRE(!crasher.empty());
+  CHECK_THAT(load_error(crasher), Catch::Contains("is too large for a double"));
+}
+
+TEST_CASE("clamping on request: out-of-range colours are clamped and counted, the first named",
+          "[scene_json]") {
+  TempDir dir;
+  test::write_text(dir / "s.json",
+                   R"({"vertices": [[0,0],[1,0],[0,1]], "vcolors": [[1,0,0],[0,1.5,0],[-2,0,1]],)"
+                   R"( "faces": [[0,1,2]], "depth": [1,2,3], "background": [2,2,2]})");
+  ColorClamping clamping;
+  const Scene s = load_scene(dir / "s.json", &clamping);
+  CHECK(clamping.clamped == 3);
+  CHECK(clamping.first == "vcolors[1]");
+  CHECK(s.vcolors[1].g == 1.0);
+  CHECK(s.vcolors[2].r == 0.0);
+  CHECK(s.vcolors[2].b == 1.0);
+  CHECK(s.background.r == 1.0);
+  CHECK_THROWS_WITH(load_scene(dir / "s.json"),
+                    Catch::EndsWith("background: colour [2, 2, 2] has a component outside [0, 1]"));
 }

@@ -21,7 +21,8 @@ Trace parse(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("a well-formed trace parses, and without its footer it is incomplete", "[trace][reader]") {
+TEST_CASE("a well-formed trace parses, and without its footer it is incomplete",
+          "[trace][reader]") {
   const Trace t = parse(kHeader + "\n" + kSkipped + "\n" + kFooter + "\n");
   CHECK(t.complete());
   CHECK(t.skipped(0)->reason == "degenerate");
@@ -61,4 +62,54 @@ TEST_CASE("queries about absent things say what is missing", "[trace][reader]") 
   CHECK_THROWS_WITH(t.edge_table(7), Catch::Contains("triangle 7 is not in the trace"));
   CHECK(t.pixel_history(1, 1).empty());
   CHECK_THROWS(t.pixel_history(1, 1).final());
+}
+
+TEST_CASE("inputs found by fuzzing are errors naming the line, not crashes",
+          "[trace][reader][fuzz]") {
+  // fuzz/regressions/trace_reader/number-overflow: nlohmann throws out_of_range, not parse_error,
+  // for a number beyond a double; it escaped the reader and terminated the program.
+  CHECK_THROWS_AS(parse("-66E666"), TraceError);
+  CHECK_THROWS_WITH(
+      parse(kHeader + "\n" + R"({"type":"triangle_skipped","triangle":1e999})" + "\n"),
+      Catch::StartsWith("t.jsonl:2: a number is too large for a double"));
+}
+
+TEST_CASE("the reader bounds a line's length and tells a cut-off last line from damage",
+          "[trace][reader]") {
+  // 16 MiB of one line: refused without reading further.
+  CHECK_THROWS_WITH(parse(kHeader + "\n" + std::string((16u << 20) + 10, 'x')),
+                    Catch::StartsWith("t.jsonl:2: line longer than 16 MiB"));
+  // The last line without its newline: the writer was cut off there.
+  CHECK_THROWS_WITH(parse(kHeader + "\n" + kSkipped + "\n" + kFooter.substr(0, 12)),
+                    Catch::StartsWith("t.jsonl:3: the file ends in the middle of this line") &&
+                        Catch::Contains("it holds the header and 1 events, the last for "
+                                        "triangle 0"));
+  // The same damage in the middle is a syntax error.
+  CHECK_THROWS_WITH(parse(kHeader + "\n" + kFooter.substr(0, 12) + "\n" + kSkipped + "\n"),
+                    Catch::StartsWith("t.jsonl:2: not valid JSON"));
+  // A header whose canvas no writer could produce: replay would allocate from it.
+  std::string huge = kHeader;
+  huge.replace(huge.find("\"width\":8"), 9, "\"width\":-3");
+  CHECK_THROWS_WITH(parse(huge + "\n"), Catch::Contains("t.jsonl:1: header: canvas -3x8"));
+}
+
+TEST_CASE("integers out of range or fractional are malformed events, not casts (found by fuzzing)",
+          "[trace][reader][fuzz]") {
+  // fuzz/regressions/trace_reader/header-canvas-float-to-int: get<int>() of 5.5e33 was a float to
+  // int cast out of range, undefined behaviour caught by UBSan.
+  std::string huge = kHeader;
+  huge.replace(huge.find("\"height\":8"), 10, "\"height\":5555555555555555555555555555555554");
+  CHECK_THROWS_WITH(parse(huge + "\n"), Catch::StartsWith("t.jsonl:1: malformed event") &&
+                                            Catch::Contains("expected an integer in range"));
+  CHECK_THROWS_WITH(
+      parse(kHeader + "\n" + R"({"type":"triangle_skipped","triangle":4294967296,"reason":"x"})" +
+            "\n"),
+      Catch::StartsWith("t.jsonl:2: malformed event"));
+  CHECK_THROWS_WITH(
+      parse(kHeader + "\n" + R"({"type":"triangle_skipped","triangle":1.5,"reason":"x"})" + "\n"),
+      Catch::StartsWith("t.jsonl:2: malformed event"));
+  CHECK_THROWS_WITH(parse(kHeader + "\n" +
+                          R"({"type":"scanline","triangle":0,"y":1,"entered":[1e300],)"
+                          R"("retired":[],"active_edges":[],"active_points":[]})" + "\n"),
+                    Catch::StartsWith("t.jsonl:2: malformed event"));
 }

@@ -1,0 +1,50 @@
+#include "cli/scene_input.hpp"
+
+#include <cstdint>
+
+#include <spdlog/spdlog.h>
+
+#include "io/memory_budget.hpp"
+#include "io/scene_json.hpp"
+
+namespace scantrace::cli {
+
+namespace {
+
+// Float RGB canvas (12 bytes), 8-bit BGR image (3) and PNG encoding buffers (about 3), rounded up.
+constexpr std::uint64_t kBytesPerPixel = 20;
+
+Scene load(const std::string& file, bool clamp_colors) {
+  if (!clamp_colors) {
+    try {
+      return load_scene(file);
+    } catch (const InputError& e) {
+      // The one problem an option can fix: say so where the user looks, in the error line.
+      if (e.problem().find("outside [0, 1]") == std::string::npos) throw;
+      throw InputError(e.file(), e.element(), e.problem() + " (--clamp-colors clamps it)");
+    }
+  }
+  ColorClamping clamping;
+  Scene scene = load_scene(file, &clamping);
+  if (clamping.clamped > 0)
+    spdlog::warn("warning: {}: clamped {} colour{} into [0, 1] (--clamp-colors), the first {}",
+                 file, clamping.clamped, clamping.clamped == 1 ? "" : "s", clamping.first);
+  return scene;
+}
+
+}  // namespace
+
+void check_canvas_memory(int width, int height, const std::string& file,
+                         const std::string& element) {
+  check_memory(
+      static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) * kBytesPerPixel,
+      "a " + std::to_string(width) + "x" + std::to_string(height) + " canvas", file, element);
+}
+
+Scene load_scene_file(const std::string& file, bool clamp_colors) {
+  Scene scene = load(file, clamp_colors);
+  check_canvas_memory(scene.width, scene.height, file, "width/height");
+  return scene;
+}
+
+}  // namespace scantrace::cli

@@ -1,0 +1,20 @@
+#pragma once
+// Loading the SCENE of render, trace and explain, with --clamp-colors applied the same way.
+#include <string>
+
+#include "src/scene.hpp"
+
+namespace scantrace::cli {
+
+// Loads and validates `file`. Colours outside [0, 1] are an error naming the element (with a hint
+// at --clamp-colors) unless `clamp_colors`: then they are clamped, and one warning line says how
+// many and which was first.
+// The canvas's memory (its size permitting) is checked too: check_canvas_memory.
+Scene load_scene_file(const std::string& file, bool clamp_colors);
+
+// Throws InputError naming `file` and `element` when a width×height render (the float canvas, the
+// 8-bit image and the PNG encoder's buffers) would not fit in the memory available.
+void check_canvas_memory(int width, int height, const std::string& file,
+                         const std::string& element);
+
+}  // namespace scantrace::cli

@@ -174,6 +174,23 @@ Mesh parse_obj(const std::string& text, const std::string& name,
   }
   if (!any_normal || m.normals.empty()) m.face_normals.clear(), m.normals.clear();
   if (m.faces.empty()) throw InputError(name, "", "the model has no faces");
+  // The line check above reads lines as '\n' ends them; tinyobjloader also ends a line at a lone
+  // '\r', so a face can reach it unchecked (found by fuzzing: "v1 2 1\rf 1 1 21"). Whatever the
+  // parser made of the text, no index may leave the arrays.
+  const auto valid = [](int i, std::size_t n) { return i >= 0 && static_cast<std::size_t>(i) < n; };
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      if (!valid(m.faces[f][k], m.positions.size()))
+        throw InputError(name, "face " + std::to_string(f + 1),
+                         "vertex index " + std::to_string(m.faces[f][k] + 1) +
+                             " is out of range (" + std::to_string(m.positions.size()) +
+                             " vertices; lines ended by a lone carriage return count too)");
+      if (!m.face_normals.empty() && m.face_normals[f][k] >= 0 &&
+          !valid(m.face_normals[f][k], m.normals.size()))
+        throw InputError(name, "face " + std::to_string(f + 1),
+                         "normal index " + std::to_string(m.face_normals[f][k] + 1) +
+                             " is out of range (" + std::to_string(m.normals.size()) + " normals)");
+    }
   return m;
 }
 

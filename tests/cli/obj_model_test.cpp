@@ -98,6 +98,11 @@ TEST_CASE("OBJ: a malformed file is one error naming file, line and problem", "[
       {tri + "vn 0 0 1\nf 1//1 2//2 3//1\n",
        "m.obj:5: f: corner \"2//2\": normal index 2 is out of range (1 normals so far)"},
       {"# nothing\n", "m.obj: the model has no faces"},
+      // Found by fuzzing (fuzz/regressions/obj_loader/): tinyobjloader ends a line at a lone
+      // '\r', so this face was read with index 21 and read past the vertices.
+      {tri + "v1 2  1\rf 1 1 21\n",
+       "m.obj: face 1: vertex index 21 is out of range (3 vertices; lines ended by a lone "
+       "carriage return count too)"},
   };
   for (const auto& [text, message] : cases) {
     INFO(text);

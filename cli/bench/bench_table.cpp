@@ -43,7 +43,7 @@ void write_plot(const std::vector<Measurement>& rows, const std::filesystem::pat
   // Two panels, time per triangle (log) across: coverage errors per million reference pixels and
   // the largest Gouraud colour error, both on log scales, with "0" (exact) drawn as its own lane
   // below the scale since a log axis has no zero.
-  const int W = 1400, H = 640, panel_w = 640, top = 70, plot_h = 460, lane = 40;
+  const int W = 1480, H = 640, panel_w = 640, top = 70, plot_h = 460, lane = 40;
   cv::Mat img(H, W, CV_8UC3, cv::Scalar(255, 255, 255));
   const auto text = [&](const std::string& s, cv::Point at, double scale = 0.5,
                         cv::Scalar c = cv::Scalar(40, 40, 40)) {

@@ -6,38 +6,44 @@
 
 namespace scantrace {
 
-void EdgeTable::build(std::span<const FixedPoint> points, const SubpixelGrid& grid, FillRule rule) {
-  const int n = static_cast<int>(points.size());
-  edges_.resize(n);
+void EdgeTable::reset() {
+  edges_.clear();
   horizontal_.clear();
   first_row_ = std::numeric_limits<i64>::max();
   last_row_ = std::numeric_limits<i64>::min();
-  int count = 0;
-  for (int i = 0; i < n; ++i) {
-    const int j = i + 1 == n ? 0 : i + 1;
-    const FixedPoint a = points[i], b = points[j];
-    if (a.y == b.y) {
-      horizontal_.push_back({i, i, j, a.y});
-      continue;
-    }
-    Edge& e = edges_[count++];
-    e.id = i;
-    e.top = a.y < b.y ? i : j;
-    e.bottom = a.y < b.y ? j : i;
-    e.p_top = points[e.top];
-    e.p_bottom = points[e.bottom];
-    // Half-open in y under the top-left rule: an edge owns the rows whose centre lies in
-    // [y_top, y_bottom). A vertex shared by two edges of a chain then belongs to exactly one of
-    // them, so the active list always holds exactly two edges per row of a convex polygon.
-    e.first_row = grid.ceil_to_pixel(e.p_top.y);
-    e.last_row = rule == FillRule::top_left ? grid.ceil_to_pixel(e.p_bottom.y) - 1
-                                            : grid.floor_to_pixel(e.p_bottom.y);
-    if (e.first_row <= e.last_row) {
-      first_row_ = std::min(first_row_, e.first_row);
-      last_row_ = std::max(last_row_, e.last_row);
-    }
+}
+
+void EdgeTable::add_edge(std::span<const FixedPoint> points, int i, int j, const SubpixelGrid& grid,
+                         FillRule rule) {
+  const FixedPoint a = points[i], b = points[j];
+  if (a.y == b.y) {
+    horizontal_.push_back({i, i, j, a.y});
+    return;
   }
-  edges_.resize(count);
+  Edge& e = edges_.emplace_back();
+  e.id = i;
+  e.top = a.y < b.y ? i : j;
+  e.bottom = a.y < b.y ? j : i;
+  e.p_top = points[e.top];
+  e.p_bottom = points[e.bottom];
+  // Half-open in y under the top-left rule: an edge owns the rows whose centre lies in
+  // [y_top, y_bottom). A vertex shared by two edges of a chain (or of a contour, where it turns
+  // or passes through) then belongs to exactly one of them, so the active list holds exactly two
+  // edges per row of a convex polygon.
+  e.first_row = grid.ceil_to_pixel(e.p_top.y);
+  e.last_row = rule == FillRule::top_left ? grid.ceil_to_pixel(e.p_bottom.y) - 1
+                                          : grid.floor_to_pixel(e.p_bottom.y);
+  if (e.first_row <= e.last_row) {
+    first_row_ = std::min(first_row_, e.first_row);
+    last_row_ = std::max(last_row_, e.last_row);
+  }
+}
+
+void EdgeTable::build(std::span<const FixedPoint> points, const SubpixelGrid& grid, FillRule rule) {
+  reset();
+  const int n = static_cast<int>(points.size());
+  for (int i = 0; i < n; ++i) add_edge(points, i, i + 1 == n ? 0 : i + 1, grid, rule);
+  const std::size_t count = edges_.size();
   // Sorted by (first_row, id). Edges are listed in id order, so a stable sort by first_row is
   // enough; for a triangle, three compare-and-swap steps. Which way each goes depends on the
   // triangle, i.e. is unpredictable, so they select rather than branch (the swap is of whole

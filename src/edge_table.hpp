@@ -34,6 +34,11 @@ class EdgeTable {
   i64 last_row() const { return last_row_; }
 
  private:
+  void reset();
+  // Edge i → j of `points` into the table (or among the horizontal edges), widening the rows.
+  void add_edge(std::span<const FixedPoint> points, int i, int j, const SubpixelGrid& grid,
+                FillRule rule);
+
   std::vector<Edge> edges_;
   std::vector<HorizontalEdge> horizontal_;
   i64 first_row_ = 0, last_row_ = -1;

@@ -75,8 +75,10 @@ Command add_render_command(CLI::App& app) {
                                      "order). Prints faces drawn/skipped, pixels and time.");
   cmd->add_option("SCENE", args->scene,
                   "scene file: JSON with vertices, vcolors, faces, depth\n"
-                  "and optional width, height, background; or an OBJ\n"
-                  "model (.obj), lit and projected (see Models)")
+                  "and optional width, height, background; a MATLAB .mat\n"
+                  "scene (vertices_2d, faces 1-based, vertex_colors, depth;\n"
+                  "canvas 512x512); or an OBJ model (.obj), lit and\n"
+                  "projected (see Models)")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "output PNG (default: SCENE's name with .png, in the\n"

@@ -4,6 +4,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "io/mat_scene.hpp"
 #include "io/memory_budget.hpp"
 #include "io/scene_json.hpp"
 
@@ -14,10 +15,15 @@ namespace {
 // Float RGB canvas (12 bytes), 8-bit BGR image (3) and PNG encoding buffers (about 3), rounded up.
 constexpr std::uint64_t kBytesPerPixel = 20;
 
+// A .mat file is the 2021 course's MATLAB scene (io/mat_scene.hpp), anything else JSON.
+Scene load_any(const std::string& file, ColorClamping* clamping) {
+  return is_mat_file(file) ? load_mat_scene(file, clamping) : load_scene(file, clamping);
+}
+
 Scene load(const std::string& file, bool clamp_colors) {
   if (!clamp_colors) {
     try {
-      return load_scene(file);
+      return load_any(file, nullptr);
     } catch (const InputError& e) {
       // The one problem an option can fix: say so where the user looks, in the error line.
       if (e.problem().find("outside [0, 1]") == std::string::npos) throw;
@@ -25,7 +31,7 @@ Scene load(const std::string& file, bool clamp_colors) {
     }
   }
   ColorClamping clamping;
-  Scene scene = load_scene(file, &clamping);
+  Scene scene = load_any(file, &clamping);
   if (clamping.clamped > 0)
     spdlog::warn("warning: {}: clamped {} colour{} into [0, 1] (--clamp-colors), the first {}",
                  file, clamping.clamped, clamping.clamped == 1 ? "" : "s", clamping.first);

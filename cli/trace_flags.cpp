@@ -181,8 +181,9 @@ std::string TraceFlags::input_name() const {
 }
 
 void add_trace_flags(CLI::App& command, TraceFlags& flags) {
-  auto* scene = command.add_option("SCENE", flags.scene,
-                                   "scene file (JSON) or OBJ model to trace, as for render");
+  auto* scene =
+      command.add_option("SCENE", flags.scene,
+                         "scene file (JSON or MATLAB .mat) or OBJ model to trace,\nas for render");
   auto* triangle = command
                        .add_option("--triangle", flags.triangle,
                                    "trace one triangle instead of a scene, e.g.\n"

@@ -1,13 +1,34 @@
 #!/usr/bin/env bash
 # Installs missing dependencies, then configures and builds scantrace (Release) in build/.
+#   scripts/build.sh           everything: libraries, command, tests, examples, benchmarks
+#   scripts/build.sh --demo    only the `scantrace` command and its libraries, with only the
+#                              packages they need (scripts/demo.sh: the quick first run)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-bash scripts/deps.sh
+demo=0
+if [ "${1:-}" = "--demo" ]; then
+  demo=1
+elif [ $# -gt 0 ]; then
+  echo "usage: scripts/build.sh [--demo]" >&2
+  exit 2
+fi
+
+if [ "$demo" = 1 ]; then bash scripts/deps.sh --demo; else bash scripts/deps.sh; fi
 # ccache, when present, makes a rebuild in another clone of the same sources cheap (CI's fresh
 # clone, worktrees): paths below the clone are hashed relative to it.
 if command -v ccache >/dev/null 2>&1 && [ -z "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ]; then
   export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 fi
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)"
+# The options are always given: build/ is shared by both forms, and a demo build must not leave
+# the tests switched off in the cache for the next full build (nor the reverse).
+if [ "$demo" = 1 ]; then
+  # Catch2 and Google Benchmark are not installed for the demo, so their parts are not configured.
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=OFF \
+    -DSCANTRACE_BUILD_BENCH=OFF
+  cmake --build build -j"$(nproc)" --target scantrace
+else
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=ON \
+    -DSCANTRACE_BUILD_BENCH=ON
+  cmake --build build -j"$(nproc)"
+fi

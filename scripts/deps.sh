@@ -1,13 +1,30 @@
 #!/usr/bin/env bash
 # Installs the Debian packages scantrace needs to build and test, but only those that are missing:
 # when everything is installed this neither calls apt-get nor asks for sudo.
+#   scripts/deps.sh           everything: the test command (scripts/test.sh) and CI (.ci/run)
+#   scripts/deps.sh --demo    only what the scantrace command and its libraries need to build
+#                             (scripts/demo.sh): the quick first run
 set -euo pipefail
 
+# The demo's packages: the compiler, CMake, and the libraries the `scantrace` target links.
+# (pkg-config finds libmatio-dev, the MATLAB .mat reader, which has no CMake package.)
+demo_packages=(cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libopencv-dev
+               libcli11-dev libtinyobjloader-dev libmatio-dev)
+
+# THE FULL LIST (the test command, CI): every package, the demo's included; append new ones here.
 # ffmpeg provides ffprobe, with which the tests check the codec of the videos `replay` writes;
 # clang-14 and libfuzzer-14-dev build the fuzz targets (scripts/fuzz.sh, run by .ci/run).
 packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 libcli11-dev
           libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev clang-14 libfuzzer-14-dev
           ccache)
+packages+=(pkg-config libmatio-dev)
+
+if [ "${1:-}" = "--demo" ]; then
+  packages=("${demo_packages[@]}")
+elif [ $# -gt 0 ]; then
+  echo "usage: scripts/deps.sh [--demo]" >&2
+  exit 2
+fi
 
 if ! command -v dpkg >/dev/null 2>&1; then
   echo "deps.sh: dpkg not found (not Debian/Ubuntu?); install these yourself: ${packages[*]}" >&2

@@ -56,7 +56,7 @@ TEST_CASE("scantrace --version and --help exit 0", "[command]") {
   TempDir dir;
   const auto version = run_scantrace(dir.path(), {"--version"});
   CHECK(version.exit_code == 0);
-  CHECK(version.out == "scantrace 0.1.0\n");
+  CHECK(version.out == "scantrace 0.2.0\n");
 
   const auto help = run_scantrace(dir.path(), {"--help"});
   CHECK(help.exit_code == 0);

@@ -1,0 +1,33 @@
+// Any bytes given to the .mat scene reader (as a file: matio reads paths, not memory) either give
+// a valid scene or an InputError; nothing else may escape. A scene that loads is rendered on a
+// small canvas, which must not fail on it either.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/mat_scene.hpp"
+#include "src/painter.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  // One file per process, rewritten for every input (parallel fuzzing jobs do not collide).
+  static const std::filesystem::path file =
+      std::filesystem::temp_directory_path() /
+      ("scantrace-fuzz-" + std::to_string(::getpid()) + ".mat");
+  {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  }
+  scantrace::Scene scene;
+  try {
+    scene = scantrace::load_mat_scene(file);
+  } catch (const scantrace::InputError&) {
+    return 0;
+  }
+  scene.width = scene.height = 64;
+  const auto image = scantrace::render(scene);
+  return image.width() == 64 ? 0 : 1;
+}

@@ -1,0 +1,280 @@
+#include "io/mat_scene.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <matio.h>
+
+#include "io/memory_budget.hpp"
+
+namespace scantrace {
+namespace {
+
+// A numeric MATLAB matrix converted to double, in MATLAB's column-major order: element (r, c)
+// (0-based here) is data[r + c * rows].
+struct Matrix {
+  std::size_t rows = 0, cols = 0;
+  std::vector<double> data;
+  double at(std::size_t r, std::size_t c) const { return data[r + c * rows]; }
+};
+
+struct MatCloser {
+  void operator()(mat_t* m) const { Mat_Close(m); }
+};
+struct VarFreer {
+  void operator()(matvar_t* v) const { Mat_VarFree(v); }
+};
+
+const char* class_name(matio_classes c) {
+  switch (c) {
+    case MAT_C_CELL:
+      return "a cell array";
+    case MAT_C_STRUCT:
+      return "a struct";
+    case MAT_C_OBJECT:
+      return "an object";
+    case MAT_C_CHAR:
+      return "a char array";
+    case MAT_C_SPARSE:
+      return "a sparse matrix";
+    case MAT_C_FUNCTION:
+      return "a function handle";
+    case MAT_C_OPAQUE:
+      return "an opaque object";
+    default:
+      return "of an unsupported class";
+  }
+}
+
+template <class T>
+void convert(const matvar_t& v, std::vector<double>& out) {
+  const T* p = static_cast<const T*>(v.data);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<double>(p[i]);
+}
+
+// matio reports problems through a log function, by default to stderr: a second, differently
+// worded line after ours. Its last message is kept instead and added to a "damaged file" error.
+thread_local std::string last_matio_message;
+
+void keep_matio_message(int, char* message) {
+  last_matio_message = message ? message : "";
+}
+
+std::string row_name(const char* var, std::size_t row) {
+  return std::string(var) + "(" + std::to_string(row + 1) + ",:)";
+}
+
+class MatReader {
+ public:
+  MatReader(const std::filesystem::path& file, ColorClamping* clamping)
+      : name_(file.string()), clamping_(clamping) {
+    static const int quiet = Mat_LogInitFunc("scantrace", keep_matio_message);
+    (void)quiet;
+    last_matio_message.clear();
+    // matio opens v4, v5 and (when built with HDF5, as Debian's is) v7.3 files alike.
+    mat_.reset(Mat_Open(name_.c_str(), MAT_ACC_RDONLY));
+    if (!mat_) {
+      if (!std::filesystem::exists(file)) fail("", "no such file");
+      fail("", "not a readable MATLAB .mat file");
+    }
+  }
+
+  Scene read() {
+    const Matrix vertices = matrix("vertices_2d", "L x 2 (one [x, y] row per vertex)", 2);
+    const std::size_t n = vertices.rows;
+    const Matrix faces = matrix("faces", "K x 3 (one row of 1-based vertex indices per face)", 3);
+    const Matrix colors = matrix("vertex_colors", "L x 3 (one [r, g, b] row per vertex)", 3);
+    const Matrix depth = column("depth");
+    if (colors.rows != n)
+      fail("vertex_colors",
+           "has " + std::to_string(colors.rows) + " rows but vertices_2d has " + std::to_string(n));
+    if (depth.data.size() != n)
+      fail("depth", "has " + std::to_string(depth.data.size()) + " entries but vertices_2d has " +
+                        std::to_string(n) + " rows");
+
+    Scene s;
+    s.vertices.resize(n);
+    s.vcolors.resize(n);
+    s.depth = depth.data;
+    for (std::size_t i = 0; i < n; ++i) {
+      s.vertices[i] = {vertices.at(i, 0), vertices.at(i, 1)};
+      s.vcolors[i] = {colors.at(i, 0), colors.at(i, 1), colors.at(i, 2)};
+      if (clamping_) clamp(s.vcolors[i], row_name("vertex_colors", i));
+    }
+    // MATLAB indices are 1-based: faces(k,:) = [1 2 3] is scantrace's faces[k-1] = {0, 1, 2}.
+    s.faces.resize(faces.rows);
+    for (std::size_t k = 0; k < faces.rows; ++k)
+      for (std::size_t c = 0; c < 3; ++c) {
+        const double v = faces.at(k, c);
+        if (!(v == std::floor(v)))
+          fail(row_name("faces", k), "vertex index " + number(v) + " is not an integer");
+        if (v < 1 || v > static_cast<double>(n))
+          fail(row_name("faces", k), "vertex index " + number(v) + " is out of range 1.." +
+                                         std::to_string(n) + " (MATLAB indices start at 1)");
+        s.faces[k][c] = static_cast<int>(v) - 1;
+      }
+    if (const auto problem = validate(s)) fail(matlab_element(problem->element), problem->problem);
+    return s;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& element, const std::string& problem) const {
+    throw InputError(name_, element, problem);
+  }
+
+  static std::string damaged() {
+    return std::string("cannot be read (damaged file?)") +
+           (last_matio_message.empty() ? "" : " (matio: " + last_matio_message + ")");
+  }
+
+  static std::string number(double v) {
+    std::string s = std::to_string(v);
+    // 5012.000000 -> 5012; 2.500000 -> 2.5
+    if (s.find('.') != std::string::npos) {
+      s.erase(s.find_last_not_of('0') + 1);
+      if (s.back() == '.') s.pop_back();
+    }
+    return s;
+  }
+
+  // validate() names scantrace's arrays ("vcolors[3]"); the user knows the file's variables.
+  static std::string matlab_element(const std::string& element) {
+    const auto open = element.find('[');
+    if (open == std::string::npos || element.back() != ']') return element;
+    const std::string array = element.substr(0, open);
+    const std::size_t index = std::stoull(element.substr(open + 1));
+    if (array == "vertices") return row_name("vertices_2d", index);
+    if (array == "vcolors") return row_name("vertex_colors", index);
+    if (array == "depth") return "depth(" + std::to_string(index + 1) + ")";
+    return element;
+  }
+
+  void clamp(Color& c, const std::string& element) const {
+    bool changed = false;
+    for (double* v : {&c.r, &c.g, &c.b})
+      if (std::isfinite(*v) && (*v < 0.0 || *v > 1.0)) {
+        *v = std::clamp(*v, 0.0, 1.0);
+        changed = true;
+      }
+    if (changed && clamping_->clamped++ == 0) clamping_->first = element;
+  }
+
+  // The variable `var` as a real numeric matrix of any class, converted to double.
+  Matrix numeric(const char* var) {
+    // The header first: class and size are checked before the data is read (and allocated).
+    std::unique_ptr<matvar_t, VarFreer> info(Mat_VarReadInfo(mat_.get(), var));
+    if (!info)
+      fail(var, "missing variable (a scene .mat holds vertices_2d, faces, vertex_colors, depth)");
+    check_numeric(*info, var);
+    if (info->rank != 2)
+      fail(var, "has " + std::to_string(info->rank) + " dimensions, expected a matrix");
+    Matrix m{info->dims[0], info->dims[1], {}};
+    const std::uint64_t count = static_cast<std::uint64_t>(m.rows) * m.cols;
+    check_memory(count * (sizeof(double) + 8), "variable " + std::string(var), name_, var);
+    info.reset();
+
+    std::unique_ptr<matvar_t, VarFreer> v(Mat_VarRead(mat_.get(), var));
+    if (!v) fail(var, damaged());
+    check_numeric(*v, var);
+    if (v->rank != 2 || v->dims[0] != m.rows || v->dims[1] != m.cols) fail(var, damaged());
+    m.data.resize(count);
+    if (count == 0) return m;
+    if (!v->data || v->nbytes < count * static_cast<std::uint64_t>(v->data_size))
+      fail(var, damaged());
+    switch (v->class_type) {
+      case MAT_C_DOUBLE:
+        convert<double>(*v, m.data);
+        break;
+      case MAT_C_SINGLE:
+        convert<float>(*v, m.data);
+        break;
+      case MAT_C_INT8:
+        convert<std::int8_t>(*v, m.data);
+        break;
+      case MAT_C_UINT8:
+        convert<std::uint8_t>(*v, m.data);
+        break;
+      case MAT_C_INT16:
+        convert<std::int16_t>(*v, m.data);
+        break;
+      case MAT_C_UINT16:
+        convert<std::uint16_t>(*v, m.data);
+        break;
+      case MAT_C_INT32:
+        convert<std::int32_t>(*v, m.data);
+        break;
+      case MAT_C_UINT32:
+        convert<std::uint32_t>(*v, m.data);
+        break;
+      case MAT_C_INT64:
+        convert<std::int64_t>(*v, m.data);
+        break;
+      case MAT_C_UINT64:
+        convert<std::uint64_t>(*v, m.data);
+        break;
+      default:  // check_numeric() let only the classes above through
+        fail(var, damaged());
+    }
+    return m;
+  }
+
+  void check_numeric(const matvar_t& v, const char* var) const {
+    switch (v.class_type) {
+      case MAT_C_DOUBLE:
+      case MAT_C_SINGLE:
+      case MAT_C_INT8:
+      case MAT_C_UINT8:
+      case MAT_C_INT16:
+      case MAT_C_UINT16:
+      case MAT_C_INT32:
+      case MAT_C_UINT32:
+      case MAT_C_INT64:
+      case MAT_C_UINT64:
+        break;
+      default:
+        fail(var, std::string("is ") + class_name(v.class_type) + ", expected a numeric matrix");
+    }
+    if (v.isComplex) fail(var, "is complex, expected a real matrix");
+    if (v.rank < 0 || !v.dims) fail(var, damaged());
+  }
+
+  Matrix matrix(const char* var, const char* shape, std::size_t cols) {
+    Matrix m = numeric(var);
+    if (m.cols != cols)
+      fail(var,
+           "is " + std::to_string(m.rows) + "x" + std::to_string(m.cols) + ", expected " + shape);
+    return m;
+  }
+
+  Matrix column(const char* var) {
+    Matrix m = numeric(var);
+    if (m.cols != 1 && m.rows != 1)
+      fail(var, "is " + std::to_string(m.rows) + "x" + std::to_string(m.cols) +
+                    ", expected L x 1 (one depth per vertex)");
+    return m;
+  }
+
+  std::string name_;
+  ColorClamping* clamping_;
+  std::unique_ptr<mat_t, MatCloser> mat_;
+};
+
+}  // namespace
+
+Scene load_mat_scene(const std::filesystem::path& file, ColorClamping* clamping) {
+  return MatReader(file, clamping).read();
+}
+
+bool is_mat_file(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".mat";
+}
+
+}  // namespace scantrace

@@ -28,8 +28,7 @@ template <class P>
 class ArrayCanvas {
  public:
   using Pixel = P;
-  ArrayCanvas(P* pixels, int width, int height)
-      : pixels_(pixels), width_(width), height_(height) {}
+  ArrayCanvas(P* pixels, int width, int height) : pixels_(pixels), width_(width), height_(height) {}
   int width() const { return width_; }
   int height() const { return height_; }
   P* row(int y) { return pixels_ + static_cast<std::size_t>(y) * width_; }

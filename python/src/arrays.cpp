@@ -6,8 +6,12 @@
 
 namespace scantrace::python {
 
-void throw_value_error(const std::string& message) { throw py::value_error(message); }
-void throw_type_error(const std::string& message) { throw py::type_error(message); }
+void throw_value_error(const std::string& message) {
+  throw py::value_error(message);
+}
+void throw_type_error(const std::string& message) {
+  throw py::type_error(message);
+}
 
 namespace {
 
@@ -29,7 +33,9 @@ std::string shape_text(const std::vector<Dim>& shape) {
   return s + (shape.size() == 1 ? ",)" : ")");
 }
 
-std::string dtype_text(const py::array& a) { return py::str(a.dtype()).cast<std::string>(); }
+std::string dtype_text(const py::array& a) {
+  return py::str(a.dtype()).cast<std::string>();
+}
 
 // np.asarray(value): lists, tuples and arrays alike; a value numpy cannot read is a TypeError.
 py::array as_numpy(py::handle value, const char* name) {
@@ -90,7 +96,8 @@ IndexArray index_array(py::handle value, const char* name, const std::vector<Dim
 py::array image_array(py::handle value, const char* name) {
   if (!py::isinstance<py::array>(value))
     throw_type_error(std::string(name) + ": expected a numpy array of shape (M, N, 3) to fill " +
-                     "in place, got " + py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+                     "in place, got " +
+                     py::str(py::type::of(value).attr("__name__")).cast<std::string>());
   const auto a = py::reinterpret_borrow<py::array>(value);
   const char kind = a.dtype().kind();
   if (kind != 'f' || (a.itemsize() != 4 && a.itemsize() != 8))
@@ -98,8 +105,7 @@ py::array image_array(py::handle value, const char* name) {
                      dtype_text(a));
   check_shape(a, name, {'M', 'N', 3});
   if (!a.writeable()) throw_value_error(std::string(name) + ": the array is read-only");
-  if (a.shape(0) > INT_MAX || a.shape(1) > INT_MAX ||
-      a.shape(0) * a.shape(1) > kMaxCanvasPixels)
+  if (a.shape(0) > INT_MAX || a.shape(1) > INT_MAX || a.shape(0) * a.shape(1) > kMaxCanvasPixels)
     throw_value_error(std::string(name) + ": image of " + shape_text(a) + " is too large");
   return a;
 }
@@ -113,8 +119,7 @@ std::array<Vec2, 3> triangle_vertices(py::handle value, const char* name) {
 std::array<Color, 3> triangle_colors(py::handle value, const char* name) {
   const DoubleArray a = float_array(value, name, {3, 3});
   const double* p = a.data();
-  std::array<Color, 3> c{Color{p[0], p[1], p[2]}, Color{p[3], p[4], p[5]},
-                         Color{p[6], p[7], p[8]}};
+  std::array<Color, 3> c{Color{p[0], p[1], p[2]}, Color{p[3], p[4], p[5]}, Color{p[6], p[7], p[8]}};
   for (int i = 0; i < 3; ++i)
     for (double v : {c[i].r, c[i].g, c[i].b})
       if (v < 0 || v > 1)
@@ -192,7 +197,8 @@ Scene scene_from_arrays(py::handle vertices, py::handle faces, py::handle vcolor
                           " vertices)");
       scene.faces[i][j] = static_cast<int>(index);
     }
-  if (const auto problem = validate(scene)) throw_value_error(problem->element + ": " + problem->problem);
+  if (const auto problem = validate(scene))
+    throw_value_error(problem->element + ": " + problem->problem);
   return scene;
 }
 

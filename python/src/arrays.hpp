@@ -44,8 +44,8 @@ Color color_argument(py::handle value, const char* name);
 // (width, height), both positive.
 std::pair<int, int> size_argument(py::handle value, const char* name = "size");
 
-Shading shading_argument(const std::string& value);      // 'f', 'g', 'flat', 'gouraud'
-FillRule fill_rule_argument(const std::string& value);   // 'top-left', 'closed'
+Shading shading_argument(const std::string& value);     // 'f', 'g', 'flat', 'gouraud'
+FillRule fill_rule_argument(const std::string& value);  // 'top-left', 'closed'
 
 // A scene from the course's arrays, validated like a scene file (scene.hpp's validate()).
 Scene scene_from_arrays(py::handle vertices, py::handle faces, py::handle vcolors, py::handle depth,

@@ -43,7 +43,8 @@ py::object shade(py::object img, py::handle vertices, py::handle vcolors, Shadin
   // A non-contiguous view (img[::2], a transposed array) is filled through a contiguous copy that
   // is written back, so the caller's array is still the one that changes.
   const bool direct = (target.flags() & py::array::c_style) != 0;
-  py::array work = direct ? target : py::array(py::module_::import("numpy").attr("ascontiguousarray")(target));
+  py::array work =
+      direct ? target : py::array(py::module_::import("numpy").attr("ascontiguousarray")(target));
   if (work.itemsize() == 8)
     fill_array<Rgb64>(work, v, c, opt);
   else
@@ -126,8 +127,8 @@ RgbImage float_image(py::handle img, const char* name) {
   const double* p = a.data();
   for (int y = 0; y < image.height(); ++y)
     for (int x = 0; x < image.width(); ++x, p += 3)
-      image(x, y) = Rgb32f{static_cast<float>(p[0]), static_cast<float>(p[1]),
-                           static_cast<float>(p[2])};
+      image(x, y) =
+          Rgb32f{static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
   return image;
 }
 
@@ -154,13 +155,13 @@ void bind_course(py::module_& m) {
         const DoubleArray v1 = float_array(V1, "V1", shape), v2 = float_array(V2, "V2", shape);
         if (!std::isfinite(coord)) throw_value_error("coord: NaN and infinity are not allowed");
         if (dim != 1 && dim != 2)
-          throw_value_error("dim: expected 1 (along x) or 2 (along y), got " +
-                            std::to_string(dim));
+          throw_value_error("dim: expected 1 (along x) or 2 (along y), got " + std::to_string(dim));
         // The C++ function interpolates colours, three components at a time, each independently;
         // a value of any shape is interpolated in groups of three (the last padded with zeros).
         const Vec2 q1{a.data()[0], a.data()[1]}, q2{b.data()[0], b.data()[1]};
-        py::array_t<double> out(shape.empty() ? std::vector<py::ssize_t>{}
-                                              : std::vector<py::ssize_t>(s1.shape(), s1.shape() + s1.ndim()));
+        py::array_t<double> out(shape.empty()
+                                    ? std::vector<py::ssize_t>{}
+                                    : std::vector<py::ssize_t>(s1.shape(), s1.shape() + s1.ndim()));
         const py::ssize_t n = v1.size();
         for (py::ssize_t i = 0; i < n; i += 3) {
           double x1[3] = {0, 0, 0}, x2[3] = {0, 0, 0};
@@ -168,24 +169,23 @@ void bind_course(py::module_& m) {
             x1[k] = v1.data()[i + k];
             x2[k] = v2.data()[i + k];
           }
-          const Color c = vector_interp(q1, q2, {x1[0], x1[1], x1[2]}, {x2[0], x2[1], x2[2]},
-                                        coord, dim);
+          const Color c =
+              vector_interp(q1, q2, {x1[0], x1[1], x1[2]}, {x2[0], x2[1], x2[2]}, coord, dim);
           const double r[3] = {c.r, c.g, c.b};
           for (py::ssize_t k = 0; k < 3 && i + k < n; ++k) out.mutable_data()[i + k] = r[k];
         }
         if (out.ndim() == 0) return py::float_(out.data()[0]);
         return out;
       },
-      py::arg("p1"), py::arg("p2"), py::arg("V1"), py::arg("V2"), py::arg("coord"),
-      py::arg("dim"));
-  m.def("f_shading",
-        [](py::object img, py::handle v, py::handle c) { return shade(img, v, c, Shading::flat); },
-        py::arg("img"), py::arg("vertices"), py::arg("vcolors"));
-  m.def("g_shading",
-        [](py::object img, py::handle v, py::handle c) {
-          return shade(img, v, c, Shading::gouraud);
-        },
-        py::arg("img"), py::arg("vertices"), py::arg("vcolors"));
+      py::arg("p1"), py::arg("p2"), py::arg("V1"), py::arg("V2"), py::arg("coord"), py::arg("dim"));
+  m.def(
+      "f_shading",
+      [](py::object img, py::handle v, py::handle c) { return shade(img, v, c, Shading::flat); },
+      py::arg("img"), py::arg("vertices"), py::arg("vcolors"));
+  m.def(
+      "g_shading",
+      [](py::object img, py::handle v, py::handle c) { return shade(img, v, c, Shading::gouraud); },
+      py::arg("img"), py::arg("vertices"), py::arg("vcolors"));
   m.def(
       "render",
       [](py::handle vertices, py::handle faces, py::handle vcolors, py::handle depth,

@@ -86,8 +86,8 @@ void bind_events(py::module_& m) {
   py::class_<Header>(m, "Header", "The first line of a trace: canvas and fill settings.")
       .def_readonly("format", &Header::format)
       .def_readonly("version", &Header::version)
-      .def_property_readonly("canvas",
-                             [](const Header& h) { return py::make_tuple(h.canvas.width, h.canvas.height); })
+      .def_property_readonly(
+          "canvas", [](const Header& h) { return py::make_tuple(h.canvas.width, h.canvas.height); })
       .def_readonly("shading", &Header::shading)
       .def_readonly("fill_rule", &Header::fill_rule)
       .def_readonly("subpixel_bits", &Header::subpixel_bits)
@@ -111,11 +111,11 @@ void bind_events(py::module_& m) {
       .def_readonly("first_row", &EdgeEntry::first_row)
       .def_readonly("last_row", &EdgeEntry::last_row)
       .def("__repr__", [](const EdgeEntry& e) {
-        return "EdgeEntry(edge=" + std::to_string(e.edge) + ", y_min=" +
-               py::repr(py::float_(e.y_min)).cast<std::string>() + ", y_max=" +
-               py::repr(py::float_(e.y_max)).cast<std::string>() + ", x_at_y_min=" +
-               py::repr(py::float_(e.x_at_y_min)).cast<std::string>() + ", dx_dy=" +
-               py::repr(py::float_(e.dx_dy)).cast<std::string>() + ")";
+        return "EdgeEntry(edge=" + std::to_string(e.edge) +
+               ", y_min=" + py::repr(py::float_(e.y_min)).cast<std::string>() +
+               ", y_max=" + py::repr(py::float_(e.y_max)).cast<std::string>() +
+               ", x_at_y_min=" + py::repr(py::float_(e.x_at_y_min)).cast<std::string>() +
+               ", dx_dy=" + py::repr(py::float_(e.dx_dy)).cast<std::string>() + ")";
       });
   py::class_<HorizontalEntry>(m, "HorizontalEntry", "A horizontal edge, kept out of the table.")
       .def_readonly("edge", &HorizontalEntry::edge)
@@ -197,14 +197,27 @@ void bind_events(py::module_& m) {
 }
 
 void bind_trace_class(py::module_& m) {
-  py::class_<PyTrace>(m, "Trace")
+  py::class_<PyTrace>(m, "Trace", R"(A trace of the fill: what it did, event by event, with queries.
+
+Made by trace_triangle(), trace_scene() or Trace.load(path) (a .jsonl file written by
+`scantrace trace`). Triangles are numbered by face index (0 for trace_triangle):
+
+    t.triangles()                         faces traced, in drawing order
+    t.edge_table(0).edges[1].dx_dy        the edge table (EdgeEntry: edge, y_min, y_max, ...)
+    t.scanline(0, 42).active_points[0].x  a row: entered, retired, active_edges, active_points,
+    t.scanline(0, 42).span.x_begin        span (None when empty), span_colors
+    t.pixel_history(x, y).final().triangle   who wrote pixel (x, y) last, and its colour
+    t.pixels(0)                           pixel events (level='pixel')
+    t.image                               the image the traced fill drew (None when loaded)
+
+A query about a triangle or row that is not in the trace raises IndexError.)")
       .def_static(
           "load",
           [](const std::filesystem::path& path) {
             PyTrace t{Trace::load(path), std::nullopt};
             return t;
           },
-          py::arg("path"))
+          py::arg("path"), "Reads a .jsonl trace; a malformed file raises InputError (file:line).")
       .def_property_readonly("header", [](const PyTrace& t) { return t.trace.header(); })
       .def_property_readonly("footer", [](const PyTrace& t) { return t.trace.footer(); })
       .def_property_readonly("complete", [](const PyTrace& t) { return t.trace.complete(); })
@@ -214,10 +227,13 @@ void bind_trace_class(py::module_& m) {
       .def("triangles", [](const PyTrace& t) { return t.trace.triangles(); })
       .def("has_triangle", [](const PyTrace& t, int i) { return t.trace.has_triangle(i); })
       .def("triangle_begin", [](const PyTrace& t, int i) { return t.trace.triangle_begin(i); })
-      .def("edge_table", [](const PyTrace& t, int i) { return t.trace.edge_table(i); },
-           py::arg("triangle"))
-      .def("scanline", [](const PyTrace& t, int i, std::int64_t y) { return t.trace.scanline(i, y); },
-           py::arg("triangle"), py::arg("y"))
+      .def(
+          "edge_table", [](const PyTrace& t, int i) { return t.trace.edge_table(i); },
+          py::arg("triangle"))
+      .def(
+          "scanline",
+          [](const PyTrace& t, int i, std::int64_t y) { return t.trace.scanline(i, y); },
+          py::arg("triangle"), py::arg("y"))
       .def("has_scanline",
            [](const PyTrace& t, int i, std::int64_t y) { return t.trace.has_scanline(i, y); })
       .def("scanlines",
@@ -234,9 +250,12 @@ void bind_trace_class(py::module_& m) {
            })
       .def("triangle_end", [](const PyTrace& t, int i) { return t.trace.triangle_end(i); })
       .def("skipped", [](const PyTrace& t, int i) { return t.trace.skipped(i); })
-      .def("pixel_history",
-           [](const PyTrace& t, std::int64_t x, std::int64_t y) { return t.trace.pixel_history(x, y); },
-           py::arg("x"), py::arg("y"));
+      .def(
+          "pixel_history",
+          [](const PyTrace& t, std::int64_t x, std::int64_t y) {
+            return t.trace.pixel_history(x, y);
+          },
+          py::arg("x"), py::arg("y"));
 }
 
 }  // namespace

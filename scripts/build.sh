@@ -23,12 +23,12 @@ fi
 # The options are always given: build/ is shared by both forms, and a demo build must not leave
 # the tests switched off in the cache for the next full build (nor the reverse).
 if [ "$demo" = 1 ]; then
-  # Catch2 and Google Benchmark are not installed for the demo, so their parts are not configured.
+  # Catch2, Google Benchmark and pybind11 are not installed for the demo, so their parts are not configured.
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=OFF \
-    -DSCANTRACE_BUILD_BENCH=OFF
+    -DSCANTRACE_BUILD_BENCH=OFF -DSCANTRACE_BUILD_PYTHON=OFF
   cmake --build build -j"$(nproc)" --target scantrace
 else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=ON \
-    -DSCANTRACE_BUILD_BENCH=ON
+    -DSCANTRACE_BUILD_BENCH=ON -DSCANTRACE_BUILD_PYTHON=ON
   cmake --build build -j"$(nproc)"
 fi

@@ -16,7 +16,8 @@ demo_packages=(cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libope
 # clang-14 and libfuzzer-14-dev build the fuzz targets (scripts/fuzz.sh, run by .ci/run).
 packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 libcli11-dev
           libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev clang-14 libfuzzer-14-dev
-          ccache)
+          ccache
+          pybind11-dev python3-dev python3-numpy python3-pytest)
 packages+=(pkg-config libmatio-dev)
 
 if [ "${1:-}" = "--demo" ]; then

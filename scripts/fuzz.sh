@@ -16,7 +16,8 @@ flags="-fsanitize=fuzzer-no-link,address,undefined,float-cast-overflow -fno-sani
 
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DSCANTRACE_BUILD_FUZZ=ON -DSCANTRACE_BUILD_TESTS=OFF -DSCANTRACE_BUILD_BENCH=OFF >/dev/null
+  -DSCANTRACE_BUILD_FUZZ=ON -DSCANTRACE_BUILD_TESTS=OFF -DSCANTRACE_BUILD_BENCH=OFF \
+  -DSCANTRACE_BUILD_PYTHON=OFF >/dev/null
 cmake --build "$build" --target scantrace_fuzz -j"$(nproc)"
 
 targets=("$@")

@@ -1,0 +1,205 @@
+#include "arrays.hpp"
+
+#include <climits>
+#include <cmath>
+#include <sstream>
+
+namespace scantrace::python {
+
+void throw_value_error(const std::string& message) {
+  throw py::value_error(message);
+}
+void throw_type_error(const std::string& message) {
+  throw py::type_error(message);
+}
+
+namespace {
+
+std::string shape_text(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) {
+    if (i) s += ", ";
+    s += std::to_string(a.shape(i));
+  }
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+std::string shape_text(const std::vector<Dim>& shape) {
+  std::string s = "(";
+  for (std::size_t i = 0; i < shape.size(); ++i) {
+    s += i ? ", " : "";
+    s += shape[i].any ? std::string(1, shape[i].any) : std::to_string(shape[i].size);
+  }
+  return s + (shape.size() == 1 ? ",)" : ")");
+}
+
+std::string dtype_text(const py::array& a) {
+  return py::str(a.dtype()).cast<std::string>();
+}
+
+// np.asarray(value): lists, tuples and arrays alike; a value numpy cannot read is a TypeError.
+py::array as_numpy(py::handle value, const char* name) {
+  if (value.is_none()) throw_type_error(std::string(name) + ": expected an array, got None");
+  try {
+    return py::module_::import("numpy").attr("asarray")(value);
+  } catch (py::error_already_set& e) {
+    throw_type_error(std::string(name) + ": cannot be read as an array (" + e.what() + ")");
+  }
+}
+
+void check_shape(const py::array& a, const char* name, const std::vector<Dim>& shape) {
+  bool ok = a.ndim() == static_cast<py::ssize_t>(shape.size());
+  for (std::size_t i = 0; ok && i < shape.size(); ++i)
+    ok = shape[i].any || a.shape(static_cast<py::ssize_t>(i)) == shape[i].size;
+  if (!ok)
+    throw_value_error(std::string(name) + ": expected an array of shape " + shape_text(shape) +
+                      ", got " + shape_text(a));
+}
+
+// "vertices[3]" for the row holding flat element i of a C-contiguous array.
+std::string element(const char* name, const py::array& a, py::ssize_t i) {
+  const py::ssize_t per_row = a.ndim() > 1 ? a.size() / a.shape(0) : 1;
+  return std::string(name) + "[" + std::to_string(per_row ? i / per_row : i) + "]";
+}
+
+}  // namespace
+
+DoubleArray float_array(py::handle value, const char* name, const std::vector<Dim>& shape) {
+  const py::array a = as_numpy(value, name);
+  const char kind = a.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u')
+    throw_type_error(std::string(name) + ": expected an array of numbers (float or int), got " +
+                     "dtype " + dtype_text(a));
+  check_shape(a, name, shape);
+  DoubleArray d = DoubleArray::ensure(a);  // no copy when a already is C-contiguous float64
+  if (!d) throw py::error_already_set();
+  const double* p = d.data();
+  for (py::ssize_t i = 0; i < d.size(); ++i)
+    if (!std::isfinite(p[i]))
+      throw_value_error(element(name, d, i) + ": NaN and infinity are not allowed, got " +
+                        py::repr(py::float_(p[i])).cast<std::string>());
+  return d;
+}
+
+IndexArray index_array(py::handle value, const char* name, const std::vector<Dim>& shape) {
+  const py::array a = as_numpy(value, name);
+  const char kind = a.dtype().kind();
+  if (kind != 'i' && kind != 'u')
+    throw_type_error(std::string(name) + ": expected an array of integers, got dtype " +
+                     dtype_text(a));
+  check_shape(a, name, shape);
+  IndexArray d = IndexArray::ensure(a);
+  if (!d) throw py::error_already_set();
+  return d;
+}
+
+py::array image_array(py::handle value, const char* name) {
+  if (!py::isinstance<py::array>(value))
+    throw_type_error(std::string(name) + ": expected a numpy array of shape (M, N, 3) to fill " +
+                     "in place, got " +
+                     py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+  const auto a = py::reinterpret_borrow<py::array>(value);
+  const char kind = a.dtype().kind();
+  if (kind != 'f' || (a.itemsize() != 4 && a.itemsize() != 8))
+    throw_type_error(std::string(name) + ": expected a float32 or float64 array, got dtype " +
+                     dtype_text(a));
+  check_shape(a, name, {'M', 'N', 3});
+  if (!a.writeable()) throw_value_error(std::string(name) + ": the array is read-only");
+  if (a.shape(0) > INT_MAX || a.shape(1) > INT_MAX || a.shape(0) * a.shape(1) > kMaxCanvasPixels)
+    throw_value_error(std::string(name) + ": image of " + shape_text(a) + " is too large");
+  return a;
+}
+
+std::array<Vec2, 3> triangle_vertices(py::handle value, const char* name) {
+  const DoubleArray a = float_array(value, name, {3, 2});
+  const double* p = a.data();
+  return {Vec2{p[0], p[1]}, Vec2{p[2], p[3]}, Vec2{p[4], p[5]}};
+}
+
+std::array<Color, 3> triangle_colors(py::handle value, const char* name) {
+  const DoubleArray a = float_array(value, name, {3, 3});
+  const double* p = a.data();
+  std::array<Color, 3> c{Color{p[0], p[1], p[2]}, Color{p[3], p[4], p[5]}, Color{p[6], p[7], p[8]}};
+  for (int i = 0; i < 3; ++i)
+    for (double v : {c[i].r, c[i].g, c[i].b})
+      if (v < 0 || v > 1)
+        throw_value_error(std::string(name) + "[" + std::to_string(i) +
+                          "]: colour components must be in [0, 1], got " +
+                          py::repr(py::float_(v)).cast<std::string>());
+  return c;
+}
+
+Color color_argument(py::handle value, const char* name) {
+  const DoubleArray a = float_array(value, name, {3});
+  const double* p = a.data();
+  for (int i = 0; i < 3; ++i)
+    if (p[i] < 0 || p[i] > 1)
+      throw_value_error(std::string(name) + ": colour components must be in [0, 1], got " +
+                        py::repr(py::float_(p[i])).cast<std::string>());
+  return {p[0], p[1], p[2]};
+}
+
+std::pair<int, int> size_argument(py::handle value, const char* name) {
+  const IndexArray a = index_array(value, name, {2});
+  const std::int64_t w = a.data()[0], h = a.data()[1];
+  if (w <= 0 || h <= 0 || w > INT_MAX || h > INT_MAX || w * h > kMaxCanvasPixels)
+    throw_value_error(std::string(name) + ": expected (width, height), both positive and at " +
+                      "most 2^28 pixels in all, got (" + std::to_string(w) + ", " +
+                      std::to_string(h) + ")");
+  return {static_cast<int>(w), static_cast<int>(h)};
+}
+
+Shading shading_argument(const std::string& s) {
+  if (s == "f" || s == "flat") return Shading::flat;
+  if (s == "g" || s == "gouraud") return Shading::gouraud;
+  throw_value_error("shading: expected 'f', 'g', 'flat' or 'gouraud', got '" + s + "'");
+}
+
+FillRule fill_rule_argument(const std::string& s) {
+  if (s == "top-left") return FillRule::top_left;
+  if (s == "closed") return FillRule::closed;
+  throw_value_error("fill_rule: expected 'top-left' or 'closed', got '" + s + "'");
+}
+
+Scene scene_from_arrays(py::handle vertices, py::handle faces, py::handle vcolors, py::handle depth,
+                        std::pair<int, int> size, Color background) {
+  const DoubleArray v = float_array(vertices, "vertices", {'L', 2});
+  const py::ssize_t n = v.shape(0);
+  const DoubleArray c = float_array(vcolors, "vcolors", {n == 0 ? Dim('L') : Dim(int(n)), 3});
+  const IndexArray f = index_array(faces, "faces", {'K', 3});
+  // depth: the course gives it as L or L×1.
+  py::array d0 = as_numpy(depth, "depth");
+  if (d0.ndim() == 2 && d0.shape(1) == 1) d0 = d0.attr("reshape")(-1);
+  const DoubleArray d = float_array(d0, "depth", {n == 0 ? Dim('L') : Dim(int(n))});
+
+  Scene scene;
+  scene.width = size.first;
+  scene.height = size.second;
+  scene.background = background;
+  scene.vertices.resize(static_cast<std::size_t>(n));
+  scene.vcolors.resize(static_cast<std::size_t>(n));
+  scene.depth.assign(d.data(), d.data() + n);
+  const double* pv = v.data();
+  const double* pc = c.data();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    scene.vertices[i] = {pv[2 * i], pv[2 * i + 1]};
+    scene.vcolors[i] = {pc[3 * i], pc[3 * i + 1], pc[3 * i + 2]};
+  }
+  const py::ssize_t k = f.shape(0);
+  scene.faces.resize(static_cast<std::size_t>(k));
+  const std::int64_t* pf = f.data();
+  for (py::ssize_t i = 0; i < k; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const std::int64_t index = pf[3 * i + j];
+      if (index < 0 || index >= n)
+        throw_value_error("faces[" + std::to_string(i) + "]: vertex index " +
+                          std::to_string(index) + " is out of range (" + std::to_string(n) +
+                          " vertices)");
+      scene.faces[i][j] = static_cast<int>(index);
+    }
+  if (const auto problem = validate(scene))
+    throw_value_error(problem->element + ": " + problem->problem);
+  return scene;
+}
+
+}  // namespace scantrace::python

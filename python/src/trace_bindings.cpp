@@ -1,0 +1,339 @@
+// Traces in Python: the C++ query API (trace/trace.hpp) with Python names, events as read-only
+// objects whose fields are plain values (ints, floats, (x, y) and (r, g, b) tuples, lists, None),
+// and the image the traced fill drew, as numpy.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cstring>
+
+#include "arrays.hpp"
+#include "casters.hpp"
+#include "trace/record.hpp"
+#include "viz/replay.hpp"
+
+namespace scantrace::python {
+
+Scene load_scene_file(const std::string& path, Shading obj_shading);
+
+namespace {
+
+using namespace scantrace::trace;
+
+// A trace and, when it was recorded here, the image its fill drew.
+struct PyTrace {
+  Trace trace;
+  std::optional<RgbImage> image;
+};
+
+py::object image_of(const PyTrace& t) {
+  if (!t.image) return py::none();
+  const RgbImage& im = *t.image;
+  py::array_t<double> out({im.height(), im.width(), 3});
+  double* o = out.mutable_data();
+  for (const Rgb32f& p : im.pixels()) {
+    *o++ = p.r;
+    *o++ = p.g;
+    *o++ = p.b;
+  }
+  return out;
+}
+
+TraceLevel level_argument(const std::string& s) {
+  try {
+    return parse_level(s);
+  } catch (const std::invalid_argument&) {
+    throw_value_error("level: expected 'triangle', 'scanline' or 'pixel', got '" + s + "'");
+  }
+}
+
+TraceFilter filter_argument(const std::string& level, py::handle triangles, py::handle rows,
+                            py::handle max_events) {
+  TraceFilter f;
+  f.level = level_argument(level);
+  if (!triangles.is_none()) {
+    std::string text;
+    if (py::isinstance<py::str>(triangles)) {
+      text = triangles.cast<std::string>();
+    } else {
+      const IndexArray a = index_array(triangles, "triangles", {'K'});
+      if (a.size() == 0) throw_value_error("triangles: expected at least one face index");
+      for (py::ssize_t i = 0; i < a.size(); ++i) {
+        if (i) text += ',';
+        text += std::to_string(a.data()[i]);
+      }
+    }
+    try {
+      f.triangles = IndexSet::parse(text);
+    } catch (const std::invalid_argument& e) {
+      throw_value_error(std::string("triangles: ") + e.what());
+    }
+  }
+  if (!rows.is_none()) {
+    const IndexArray a = index_array(rows, "rows", {2});
+    f.rows = RowRange{a.data()[0], a.data()[1]};
+  }
+  if (!max_events.is_none()) {
+    const auto n = max_events.cast<std::int64_t>();
+    if (n < 0) throw_value_error("max_events: expected a count >= 0, got " + std::to_string(n));
+    f.max_events = n;
+  }
+  return f;
+}
+
+void bind_events(py::module_& m) {
+  py::class_<Header>(m, "Header", "The first line of a trace: canvas and fill settings.")
+      .def_readonly("format", &Header::format)
+      .def_readonly("version", &Header::version)
+      .def_property_readonly(
+          "canvas", [](const Header& h) { return py::make_tuple(h.canvas.width, h.canvas.height); })
+      .def_readonly("shading", &Header::shading)
+      .def_readonly("fill_rule", &Header::fill_rule)
+      .def_readonly("subpixel_bits", &Header::subpixel_bits)
+      .def_readonly("level", &Header::level)
+      .def_readonly("generator", &Header::generator);
+  py::class_<TriangleBegin>(m, "TriangleBegin", "A traced triangle: vertices as given and snapped.")
+      .def_readonly("triangle", &TriangleBegin::triangle)
+      .def_readonly("vertices", &TriangleBegin::vertices)
+      .def_readonly("snapped", &TriangleBegin::snapped)
+      .def_readonly("colors", &TriangleBegin::colors)
+      .def_readonly("depth", &TriangleBegin::depth)
+      .def_readonly("flat_color", &TriangleBegin::flat_color);
+  py::class_<EdgeEntry>(m, "EdgeEntry", "One non-horizontal edge of the edge table.")
+      .def_readonly("edge", &EdgeEntry::edge)
+      .def_readonly("from_", &EdgeEntry::from)
+      .def_readonly("to", &EdgeEntry::to)
+      .def_readonly("y_min", &EdgeEntry::y_min)
+      .def_readonly("y_max", &EdgeEntry::y_max)
+      .def_readonly("x_at_y_min", &EdgeEntry::x_at_y_min)
+      .def_readonly("dx_dy", &EdgeEntry::dx_dy)
+      .def_readonly("first_row", &EdgeEntry::first_row)
+      .def_readonly("last_row", &EdgeEntry::last_row)
+      .def("__repr__", [](const EdgeEntry& e) {
+        return "EdgeEntry(edge=" + std::to_string(e.edge) +
+               ", y_min=" + py::repr(py::float_(e.y_min)).cast<std::string>() +
+               ", y_max=" + py::repr(py::float_(e.y_max)).cast<std::string>() +
+               ", x_at_y_min=" + py::repr(py::float_(e.x_at_y_min)).cast<std::string>() +
+               ", dx_dy=" + py::repr(py::float_(e.dx_dy)).cast<std::string>() + ")";
+      });
+  py::class_<HorizontalEntry>(m, "HorizontalEntry", "A horizontal edge, kept out of the table.")
+      .def_readonly("edge", &HorizontalEntry::edge)
+      .def_readonly("from_", &HorizontalEntry::from)
+      .def_readonly("to", &HorizontalEntry::to)
+      .def_readonly("y", &HorizontalEntry::y)
+      .def_readonly("reason", &HorizontalEntry::reason);
+  py::class_<EdgeTableEvent>(m, "EdgeTable", "A triangle's edge table, sorted by first row.")
+      .def_readonly("triangle", &EdgeTableEvent::triangle)
+      .def_readonly("edges", &EdgeTableEvent::edges)
+      .def_readonly("horizontal", &EdgeTableEvent::horizontal);
+  py::class_<ActiveEdge>(m, "ActiveEdge", "An active edge on a row: its exact intersection x.")
+      .def_readonly("edge", &ActiveEdge::edge)
+      .def_readonly("x", &ActiveEdge::x)
+      .def("__repr__", [](const ActiveEdge& e) {
+        return "ActiveEdge(edge=" + std::to_string(e.edge) +
+               ", x=" + py::repr(py::float_(e.x)).cast<std::string>() + ")";
+      });
+  py::class_<ActivePoint>(m, "ActivePoint", "An active point: x, its edge and interpolated colour.")
+      .def_readonly("x", &ActivePoint::x)
+      .def_readonly("edge", &ActivePoint::edge)
+      .def_readonly("color", &ActivePoint::color)
+      .def("__repr__", [](const ActivePoint& p) {
+        return "ActivePoint(x=" + py::repr(py::float_(p.x)).cast<std::string>() +
+               ", edge=" + std::to_string(p.edge) +
+               ", color=" + py::repr(py::cast(p.color)).cast<std::string>() + ")";
+      });
+  py::class_<Span>(m, "Span", "The pixels filled on a row: [x_begin, x_end), clipped.")
+      .def_readonly("x_begin", &Span::x_begin)
+      .def_readonly("x_end", &Span::x_end)
+      .def("__len__", [](const Span& s) { return s.size(); })
+      .def("__contains__", [](const Span& s, std::int64_t x) { return s.contains(x); })
+      .def("__repr__", [](const Span& s) {
+        return "Span(x_begin=" + std::to_string(s.x_begin) + ", x_end=" + std::to_string(s.x_end) +
+               ")";
+      });
+  py::class_<SpanColors>(m, "SpanColors", "Gouraud: colours of the first and last pixel.")
+      .def_readonly("begin", &SpanColors::begin)
+      .def_readonly("end", &SpanColors::end);
+  py::class_<Scanline>(m, "Scanline", "One row of one triangle, as the fill saw it.")
+      .def_readonly("triangle", &Scanline::triangle)
+      .def_readonly("y", &Scanline::y)
+      .def_readonly("entered", &Scanline::entered)
+      .def_readonly("retired", &Scanline::retired)
+      .def_readonly("active_edges", &Scanline::active_edges)
+      .def_readonly("active_points", &Scanline::active_points)
+      .def_readonly("span", &Scanline::span)
+      .def_readonly("span_colors", &Scanline::span_colors);
+  py::class_<Pixel>(m, "Pixel", "A pixel event (level 'pixel').")
+      .def_readonly("triangle", &Pixel::triangle)
+      .def_readonly("x", &Pixel::x)
+      .def_readonly("y", &Pixel::y)
+      .def_readonly("color", &Pixel::color)
+      .def_readonly("t", &Pixel::t);
+  py::class_<TriangleEnd>(m, "TriangleEnd", "A finished triangle: rows and pixels written.")
+      .def_readonly("triangle", &TriangleEnd::triangle)
+      .def_readonly("rows", &TriangleEnd::rows)
+      .def_readonly("pixels", &TriangleEnd::pixels);
+  py::class_<TriangleSkipped>(m, "TriangleSkipped", "A triangle that filled nothing, and why.")
+      .def_readonly("triangle", &TriangleSkipped::triangle)
+      .def_readonly("reason", &TriangleSkipped::reason);
+  py::class_<Footer>(m, "Footer", "The last line of a complete trace.")
+      .def_readonly("events", &Footer::events)
+      .def_readonly("truncated", &Footer::truncated);
+  py::class_<PixelWrite>(m, "PixelWrite", "One write of a pixel: the triangle and the colour.")
+      .def_readonly("triangle", &PixelWrite::triangle)
+      .def_readonly("color", &PixelWrite::color)
+      .def_readonly("from_pixel_event", &PixelWrite::from_pixel_event)
+      .def("__repr__", [](const PixelWrite& w) {
+        return "PixelWrite(triangle=" + std::to_string(w.triangle) +
+               ", color=" + py::repr(py::cast(w.color)).cast<std::string>() + ")";
+      });
+  py::class_<PixelHistory>(m, "PixelHistory", "Who wrote a pixel, in drawing order.")
+      .def_readonly("writes", &PixelHistory::writes)
+      .def("__len__", [](const PixelHistory& h) { return h.writes.size(); })
+      .def("empty", &PixelHistory::empty)
+      .def("final", &PixelHistory::final, py::return_value_policy::reference_internal,
+           "The visible (last) write; IndexError when no triangle wrote the pixel.");
+}
+
+void bind_trace_class(py::module_& m) {
+  py::class_<PyTrace>(m, "Trace", R"(A trace of the fill: what it did, event by event, with queries.
+
+Made by trace_triangle(), trace_scene() or Trace.load(path) (a .jsonl file written by
+`scantrace trace`). Triangles are numbered by face index (0 for trace_triangle):
+
+    t.triangles()                         faces traced, in drawing order
+    t.edge_table(0).edges[1].dx_dy        the edge table (EdgeEntry: edge, y_min, y_max, ...)
+    t.scanline(0, 42).active_points[0].x  a row: entered, retired, active_edges, active_points,
+    t.scanline(0, 42).span.x_begin        span (None when empty), span_colors
+    t.pixel_history(x, y).final().triangle   who wrote pixel (x, y) last, and its colour
+    t.pixels(0)                           pixel events (level='pixel')
+    t.image                               the image the traced fill drew (None when loaded)
+
+A query about a triangle or row that is not in the trace raises IndexError.)")
+      .def_static(
+          "load",
+          [](const std::filesystem::path& path) {
+            PyTrace t{Trace::load(path), std::nullopt};
+            return t;
+          },
+          py::arg("path"), "Reads a .jsonl trace; a malformed file raises InputError (file:line).")
+      .def_property_readonly("header", [](const PyTrace& t) { return t.trace.header(); })
+      .def_property_readonly("footer", [](const PyTrace& t) { return t.trace.footer(); })
+      .def_property_readonly("complete", [](const PyTrace& t) { return t.trace.complete(); })
+      .def_property_readonly("truncated", [](const PyTrace& t) { return t.trace.truncated(); })
+      .def_property_readonly("image", &image_of)
+      .def("__len__", [](const PyTrace& t) { return t.trace.events().size(); })
+      .def("triangles", [](const PyTrace& t) { return t.trace.triangles(); })
+      .def("has_triangle", [](const PyTrace& t, int i) { return t.trace.has_triangle(i); })
+      .def("triangle_begin", [](const PyTrace& t, int i) { return t.trace.triangle_begin(i); })
+      .def(
+          "edge_table", [](const PyTrace& t, int i) { return t.trace.edge_table(i); },
+          py::arg("triangle"))
+      .def(
+          "scanline",
+          [](const PyTrace& t, int i, std::int64_t y) { return t.trace.scanline(i, y); },
+          py::arg("triangle"), py::arg("y"))
+      .def("has_scanline",
+           [](const PyTrace& t, int i, std::int64_t y) { return t.trace.has_scanline(i, y); })
+      .def("scanlines",
+           [](const PyTrace& t, int i) {
+             std::vector<Scanline> out;
+             for (const Scanline* s : t.trace.scanlines(i)) out.push_back(*s);
+             return out;
+           })
+      .def("pixels",
+           [](const PyTrace& t, int i) {
+             std::vector<Pixel> out;
+             for (const Pixel* p : t.trace.pixels(i)) out.push_back(*p);
+             return out;
+           })
+      .def("triangle_end", [](const PyTrace& t, int i) { return t.trace.triangle_end(i); })
+      .def("skipped", [](const PyTrace& t, int i) { return t.trace.skipped(i); })
+      .def(
+          "pixel_history",
+          [](const PyTrace& t, std::int64_t x, std::int64_t y) {
+            return t.trace.pixel_history(x, y);
+          },
+          py::arg("x"), py::arg("y"));
+}
+
+}  // namespace
+
+void bind_trace(py::module_& m) {
+  bind_events(m);
+  bind_trace_class(m);
+  m.def(
+      "trace_triangle",
+      [](py::handle vertices, py::handle vcolors, const std::string& shading,
+         const std::string& fill_rule, const std::string& level, py::handle size,
+         py::handle background) {
+        TriangleInput in;
+        in.vertices = triangle_vertices(vertices);
+        in.colors = triangle_colors(vcolors);
+        std::tie(in.width, in.height) = size_argument(size);
+        in.background = color_argument(background, "background");
+        FillOptions opt;
+        opt.shading = shading_argument(shading);
+        opt.fill_rule = fill_rule_argument(fill_rule);
+        const TraceFilter filter = filter_argument(level, py::none(), py::none(), py::none());
+        py::gil_scoped_release free;
+        RgbImage image;
+        Trace t = record_triangle(in, opt, filter, &image);
+        return PyTrace{std::move(t), std::move(image)};
+      },
+      py::arg("vertices"), py::arg("vcolors"), py::kw_only(), py::arg("shading"),
+      py::arg("fill_rule"), py::arg("level"), py::arg("size"), py::arg("background"));
+  m.def(
+      "trace_scene",
+      [](py::handle vertices, py::handle faces, py::handle vcolors, py::handle depth,
+         const std::string& shading, const std::string& fill_rule, const std::string& level,
+         py::handle triangles, py::handle rows, py::handle max_events, py::handle size,
+         py::handle background) {
+        FillOptions opt;
+        opt.shading = shading_argument(shading);
+        opt.fill_rule = fill_rule_argument(fill_rule);
+        const Scene scene = scene_from_arrays(vertices, faces, vcolors, depth, size_argument(size),
+                                              color_argument(background, "background"));
+        const TraceFilter filter = filter_argument(level, triangles, rows, max_events);
+        py::gil_scoped_release free;
+        RgbImage image;
+        Trace t = record_scene(scene, opt, filter, &image);
+        return PyTrace{std::move(t), std::move(image)};
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("vcolors"), py::arg("depth"), py::kw_only(),
+      py::arg("shading"), py::arg("fill_rule"), py::arg("level"), py::arg("triangles"),
+      py::arg("rows"), py::arg("max_events"), py::arg("size"), py::arg("background"));
+  m.def(
+      "replay",
+      [](const PyTrace& t, const std::filesystem::path& out, py::handle frame_size, double fps,
+         double hold, const std::string& source) {
+        viz::ReplayOptions o;
+        const auto [w, h] = size_argument(frame_size, "frame_size");
+        o.size = {w, h};
+        o.fps = fps;
+        o.hold = hold;
+        o.source = source;
+        try {
+          viz::validate(o);
+        } catch (const std::invalid_argument& e) {
+          throw_value_error(e.what());
+        }
+        viz::ReplayResult r;
+        {
+          py::gil_scoped_release free;
+          r = viz::replay(t.trace, out, o);
+        }
+        py::dict d;
+        d["path"] = out;
+        d["format"] = r.format;
+        d["steps"] = r.steps;
+        d["frames"] = r.frames;
+        d["seconds"] = r.seconds;
+        return d;
+      },
+      py::arg("trace"), py::arg("out"), py::arg("frame_size"), py::arg("fps"), py::arg("hold"),
+      py::arg("source"));
+}
+
+}  // namespace scantrace::python

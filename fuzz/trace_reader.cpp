@@ -1,11 +1,12 @@
-// Any bytes given to the trace reader either give a Trace whose queries work, or a TraceError
-// (an InputError); nothing else may escape.
+// Any bytes given to the trace reader either give a Trace whose queries and thorough consistency
+// check work, or a TraceError (an InputError); nothing else may escape.
 #include <cstddef>
 #include <cstdint>
 #include <sstream>
 #include <string>
 
 #include "trace/trace.hpp"
+#include "trace/trace_check.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
@@ -20,6 +21,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       (void)t.pixels(tri);
     }
     (void)t.header();
+    // The thorough checks of `scantrace check` (exact arithmetic on whatever the input holds).
+    scantrace::trace::check_consistency(t.events(), "fuzz.jsonl",
+                                        scantrace::trace::CheckDepth::thorough);
   } catch (const scantrace::InputError&) {
   }
   return 0;

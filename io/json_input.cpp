@@ -6,6 +6,8 @@
 #include <cstring>
 #include <memory>
 
+#include "io/memory_budget.hpp"
+
 namespace scantrace::json_input {
 
 std::string read_text_file(const std::filesystem::path& file) {
@@ -49,7 +51,67 @@ std::string explanation(const nlohmann::json::parse_error& e) {
 
 }  // namespace
 
-nlohmann::json parse(std::string_view text, const std::string& name_for_errors) {
+std::optional<std::size_t> find_excess_nesting(std::string_view text, int max_depth) {
+  int depth = 0;
+  bool in_string = false, escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      // Brackets inside strings do not nest; a backslash hides the next character (\" too).
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth) return i;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return std::nullopt;
+}
+
+std::string nesting_problem(int max_depth) {
+  return "JSON nested deeper than " + std::to_string(max_depth) + " levels";
+}
+
+std::uint64_t estimated_dom_bytes(std::string_view text) {
+  std::uint64_t values = 1, containers = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    if (in_string) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == ',') {
+      ++values;
+    } else if (c == '[' || c == '{') {
+      ++values, ++containers;
+    }
+  }
+  return 16 * values + 64 * containers;
+}
+
+nlohmann::json parse(std::string_view text, const std::string& name_for_errors, int max_depth) {
+  // A file of 10^7 faces is 350 MB of text and about 2.5 GB as a DOM: refused here, naming the
+  // file, when that is more than the memory there is, instead of being killed by the kernel.
+  check_memory(estimated_dom_bytes(text), "parsing its JSON (" + format_bytes(text.size()) + ")",
+               name_for_errors, "");
+  if (const auto at = find_excess_nesting(text, max_depth)) {
+    const TextPosition p = position_of(text, *at);
+    throw InputError(
+        name_for_errors + ":" + std::to_string(p.line) + ":" + std::to_string(p.column), "",
+        nesting_problem(max_depth));
+  }
   try {
     return nlohmann::json::parse(text.begin(), text.end());
   } catch (const nlohmann::json::parse_error& e) {

@@ -33,11 +33,15 @@ for t in "${targets[@]}"; do
   for d in "fuzz/corpus/$t" "fuzz/regressions/$t"; do [ -d "$d" ] && seeds="$seeds $d"; done
   dict=""
   [ -f "fuzz/$t.dict" ] && dict="-dict=fuzz/$t.dict"
+  # Inputs up to fuzz/NAME.max_len bytes (default 64 KiB): the JSON readers get megabytes, since
+  # what broke them (nesting a few hundred thousand levels deep) is far beyond the default.
+  max_len=65536
+  [ -f "fuzz/$t.max_len" ] && max_len="$(cat "fuzz/$t.max_len")"
   echo "== fuzz_$t: ${seconds} s"
   # -timeout: an input taking longer than 10 s is reported as a hang; -rss_limit_mb: one that
   # needs more than 2 GB as an out-of-memory failure. The last lines are the run's summary.
   "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-    -max_len=65536 -print_final_stats=1 $dict -artifact_prefix="$build/crashes/$t/" \
+    -max_len="$max_len" -print_final_stats=1 $dict -artifact_prefix="$build/crashes/$t/" \
     "$build/corpus/$t" $seeds 2>"$build/fuzz_$t.log" || {
     tail -n 60 "$build/fuzz_$t.log"
     echo "fuzz_$t FAILED: reproducer in $build/crashes/$t/" >&2

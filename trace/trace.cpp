@@ -5,9 +5,17 @@
 #include <nlohmann/json.hpp>
 
 #include "event_json.hpp"
+#include "io/json_input.hpp"
+#include "io/memory_budget.hpp"
+#include "trace_check.hpp"
 
 namespace scantrace::trace {
 namespace {
+
+// What a loaded trace costs in memory per byte of its file: the events, their index and the
+// vector's growth: 2.7 and 3.0 measured on the course scene's scanline- and pixel-level traces (see
+// docs/robustness.md). A file is refused when its size times this exceeds the memory available.
+constexpr std::uint64_t kMemoryPerTraceByte = 4;
 
 // Lines longer than this are not a trace line but damage (or another file). The longest real
 // lines are edge tables and scanlines of many-sided polygons, far below it.
@@ -72,23 +80,38 @@ const PixelWrite& PixelHistory::final() const {
   return writes.back();
 }
 
-Trace Trace::load(const std::filesystem::path& path) {
+Trace Trace::load(const std::filesystem::path& path, bool drop_unfinished_last_line) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw TraceError(path.string() + ": cannot open trace");
-  return parse(in, path.string());
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+  if (!ec)
+    check_memory(static_cast<std::uint64_t>(bytes) * kMemoryPerTraceByte,
+                 "loading this trace of " + format_bytes(bytes), path.string(), "");
+  return parse(in, path.string(), drop_unfinished_last_line);
 }
 
-Trace Trace::parse(std::istream& in, const std::string& name) {
+Trace Trace::parse(std::istream& in, const std::string& name, bool drop_unfinished_last_line) {
   std::vector<Event> events;
   std::string line;
   std::size_t number = 0;
+  bool dropped = false;
   for (LineRead r; (r = read_line(in, line)) != LineRead::end;) {
     ++number;
+    if (r == LineRead::last_line_unterminated && drop_unfinished_last_line) {
+      dropped = true;
+      break;
+    }
     const std::string where = name + ":" + std::to_string(number) + ": ";
     if (r == LineRead::too_long)
       throw TraceError(where + "line longer than " + std::to_string(kMaxLineBytes >> 20) +
                        " MiB: not a trace event (a damaged file, or not a trace)");
     if (line.empty()) throw TraceError(where + "empty line (one JSON object per line expected)");
+    // Nesting is bounded before nlohmann sees the line (its recursive parts overflow the stack on
+    // a few hundred thousand levels); the position is this line's and the bracket's column.
+    if (const auto at = json_input::find_excess_nesting(line))
+      throw TraceError(name + ":" + std::to_string(number) + ":" + std::to_string(*at + 1) + ": " +
+                       json_input::nesting_problem());
     nlohmann::json j;
     try {
       j = nlohmann::json::parse(line);
@@ -130,7 +153,9 @@ Trace Trace::parse(std::istream& in, const std::string& name) {
     }
   }
   if (events.empty()) throw TraceError(name + ": empty file, not a trace");
-  return from_events(std::move(events), name);
+  Trace t = from_events(std::move(events), name);
+  t.dropped_last_line_ = dropped;
+  return t;
 }
 
 Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
@@ -182,6 +207,10 @@ Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
       t.pixel_events_[pixel_key(p->x, p->y)].push_back(i);
     }
   }
+  // The cheap consistency checks run on every trace before anyone replays, steps or queries it:
+  // a record that contradicts itself must not be narrated (trace_check.hpp; the thorough ones
+  // are `scantrace check`).
+  check_consistency(events, name, CheckDepth::cheap);
   t.events_ = std::move(events);
   return t;
 }

@@ -47,8 +47,13 @@ struct PixelHistory {
 
 class Trace {
  public:
-  static Trace load(const std::filesystem::path& path);
-  static Trace parse(std::istream& in, const std::string& name);
+  // Refuses a file whose events would not fit in the memory available (its size times what an
+  // event costs in memory over its text, see kMemoryPerTraceByte), before reading it.
+  // drop_unfinished_last_line: a last line without its newline (a writer cut off mid-line) is
+  // dropped instead of being an error (--partial); dropped_last_line() then says so.
+  static Trace load(const std::filesystem::path& path, bool drop_unfinished_last_line = false);
+  static Trace parse(std::istream& in, const std::string& name,
+                     bool drop_unfinished_last_line = false);
   // Checks the structure (header first, version, footer last) and indexes the events.
   static Trace from_events(std::vector<Event> events, const std::string& name);
 
@@ -59,6 +64,7 @@ class Trace {
   // events, the last at triangle 17, row 212".
   std::string progress() const;
   bool truncated() const { return footer_ && footer_->truncated; }
+  bool dropped_last_line() const { return dropped_last_line_; }
   const std::optional<Footer>& footer() const { return footer_; }
 
   std::vector<int> triangles() const;  // traced (begun or skipped), in order of appearance
@@ -84,6 +90,7 @@ class Trace {
   std::string name_;
   std::vector<Event> events_;
   std::optional<Footer> footer_;
+  bool dropped_last_line_ = false;
   std::vector<int> order_;
   std::map<int, TriangleIndex> index_;
   std::map<i64, std::vector<std::size_t>> rows_;  // scanline events by row, in order

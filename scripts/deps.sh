@@ -8,6 +8,8 @@ set -euo pipefail
 packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 libcli11-dev
           libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev clang-14 libfuzzer-14-dev
           ccache)
+# python3-numpy runs docs/grading/student_render.py, the worked example of docs/grading.md.
+packages+=(python3-numpy)
 
 if ! command -v dpkg >/dev/null 2>&1; then
   echo "deps.sh: dpkg not found (not Debian/Ubuntu?); install these yourself: ${packages[*]}" >&2

@@ -24,5 +24,14 @@ Command add_explain_command(CLI::App& app);
 Command add_stress_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
+Command add_why_command(CLI::App& app);
+Command add_diff_command(CLI::App& app);
+
+// Thrown by a command that ran to the end but must exit with a status of its own (diff: the images
+// differ); main() returns `status` without printing anything more.
+struct ExitStatus {
+  int status = 0;
+};
+inline constexpr int kExitImagesDiffer = 3;
 
 }  // namespace scantrace::cli

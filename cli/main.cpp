@@ -48,14 +48,16 @@ int main(int argc, char** argv) {
       "Run 'scantrace SUBCOMMAND --help' for the options of a subcommand.\n"
       "Exit status: 0 success, 1 bad input data (one line on stderr naming the\n"
       "file, the element and the problem), a failed write, or a failure of the\n"
-      "exact method found by 'stress', 2 usage error, 130/143 interrupted by\n"
+      "exact method found by 'stress', 2 usage error, 3 'diff': the images differ,\n"
+      "130/143 interrupted by\n"
       "SIGINT/SIGTERM (no output is left under its final name).");
 
   const std::vector<scantrace::cli::Command> commands{
       scantrace::cli::add_demo_command(app),    scantrace::cli::add_render_command(app),
       scantrace::cli::add_trace_command(app),   scantrace::cli::add_replay_command(app),
       scantrace::cli::add_explain_command(app), scantrace::cli::add_stress_command(app),
-      scantrace::cli::add_bench_command(app),   scantrace::cli::add_check_command(app)};
+      scantrace::cli::add_bench_command(app),   scantrace::cli::add_check_command(app),
+      scantrace::cli::add_why_command(app),     scantrace::cli::add_diff_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -68,6 +70,8 @@ int main(int argc, char** argv) {
   try {
     for (const auto& command : commands)
       if (command.app->parsed()) command.run();
+  } catch (const scantrace::cli::ExitStatus& e) {
+    return e.status;
   } catch (const scantrace::Interrupted& e) {
     spdlog::error("error: {}", e.what());
     return e.exit_status();  // 130 (SIGINT) or 143 (SIGTERM), as the shell reports a signal

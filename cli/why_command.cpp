@@ -1,0 +1,106 @@
+// scantrace why SCENE X Y [fill options] [model options] [--json] [--explain OUT]
+// The history of one pixel in the algorithm's terms (grade/pixel_story.hpp).
+#include <cstdio>
+#include <ctime>
+#include <memory>
+#include <string>
+
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/grade_scene.hpp"
+#include "cli/replay_flags.hpp"
+#include "cli/stopwatch.hpp"
+#include "grade/pixel_story.hpp"
+#include "grade/scene_around.hpp"
+#include "trace/record.hpp"
+
+namespace scantrace::cli {
+namespace {
+
+struct WhyArgs {
+  std::string scene;
+  int x = 0, y = 0;
+  FillFlags fill;
+  ModelFlags model;
+  bool json = false;
+  std::string explain;
+};
+
+void run_why(const WhyArgs& args) {
+  const GradeScene g = load_grade_scene(args.scene, args.fill, args.model);
+  if (args.x >= g.scene.width || args.y >= g.scene.height)
+    throw InputError(args.scene, "X Y",
+                     "pixel (" + std::to_string(args.x) + ", " + std::to_string(args.y) +
+                         ") is outside the " + std::to_string(g.scene.width) + "x" +
+                         std::to_string(g.scene.height) + " canvas");
+  const Stopwatch clock;
+  const std::clock_t cpu = std::clock();
+  const grade::PixelStory story = grade::why(g.scene, g.options, args.x, args.y);
+  const double ms = clock.ms();
+  const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - cpu) / CLOCKS_PER_SEC;
+  const std::string out = args.json ? story.to_json().dump(2) + "\n" : story.to_text();
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  std::fflush(stdout);
+  spdlog::info(
+      "answered in {:.2f} ms, {:.2f} ms of CPU, after loading ({} faces around the pixel, "
+      "{} in the scene)",
+      ms, cpu_ms, story.faces.size(), g.scene.faces.size());
+  if (!args.explain.empty()) {
+    // Only the faces around the pixel, every row of them: the replay shows how each one was
+    // filled. (Their indices in the video are their order in this small scene; the text above
+    // names the scene's face numbers.)
+    std::vector<int> faces;
+    const Scene around = grade::scene_around(g.scene, args.x, args.y, 0.01, &faces);
+    trace::TraceFilter filter;
+    filter.level = TraceLevel::scanline;
+    const trace::Trace t = trace::record_scene(around, g.options, filter);
+    ReplayFlags replay;
+    replay.output = args.explain;
+    run_replay(t, replay,
+               "the faces around pixel (" + std::to_string(args.x) + ", " + std::to_string(args.y) +
+                   ") of " + args.scene);
+  }
+}
+
+}  // namespace
+
+Command add_why_command(CLI::App& app) {
+  auto args = std::make_shared<WhyArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "why",
+      "Explains why pixel (X, Y) has its colour, in the algorithm's terms: every\n"
+      "face whose bounding box holds the pixel centre, in drawing order, and what\n"
+      "the fill did about the pixel (skipped and why; row Y outside the face's\n"
+      "scanlines; X left or right of the row's span ceil(x_L) .. ceil(x_R) - 1, with\n"
+      "the active points; or written, with the colour, t along the span and the\n"
+      "depth test), what the fill rule does with a centre exactly on an edge or a\n"
+      "vertex, and the final colour. Only the faces around the pixel are traced.");
+  cmd->add_option("SCENE", args->scene, "scene file (JSON) or OBJ model, as for 'render'")
+      ->required();
+  cmd->add_option("X", args->x, "column of the pixel (0 = left)")
+      ->required()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("Y", args->y, "row of the pixel (0 = top)")
+      ->required()
+      ->check(CLI::NonNegativeNumber);
+  add_fill_flags(*cmd, args->fill);
+  add_model_flags(*cmd, args->model, false);
+  cmd->add_flag("--json", args->json,
+                "print one JSON document instead of text (schema:\n"
+                "trace/why_schema.json)");
+  cmd->add_option("--explain", args->explain,
+                  "also replay the faces around the pixel into OUT.mp4 or\n"
+                  "OUT_DIR/ (as 'replay' writes them)");
+  cmd->footer(
+      "Examples:\n"
+      "  scantrace why scene.json 100 200\n"
+      "  scantrace why scene.json 100 200 --json > pixel.json\n"
+      "  scantrace why scene.json 100 200 --fill-rule closed --explain pixel.mp4\n"
+      "Exit status: 0, 1 bad input (or the pixel is outside the canvas), 2 usage.");
+  return {cmd, [args] { run_why(*args); }};
+}
+
+}  // namespace scantrace::cli

@@ -1,0 +1,167 @@
+#include "grade/global_mistakes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <unordered_map>
+
+#include <spdlog/fmt/fmt.h>
+
+namespace scantrace::grade {
+namespace {
+
+double max_diff(Rgb32f a, Rgb32f b) {
+  return std::max({std::fabs(a.r - b.r), std::fabs(a.g - b.g), std::fabs(a.b - b.b)});
+}
+
+std::string rgb(Color c) {
+  return fmt::format("({:.3f}, {:.3f}, {:.3f})", c.r, c.g, c.b);
+}
+
+// A way the image may have been produced wrongly, as the pixel of the image that lands on the
+// scene's pixel (x, y) (false when the image has none there).
+struct Transform {
+  const char* kind;
+  const char* text;
+  std::function<bool(const RgbImage&, int, int, Rgb32f&)> sample;
+};
+
+}  // namespace
+
+std::vector<GlobalMistake> find_global_mistakes(const Scene& scene, const RgbImage& reference,
+                                                const FaceIdImage& ids, const SubmittedImage& in,
+                                                double tol, bool undo, RgbImage& image,
+                                                std::vector<unsigned char>& compared) {
+  std::vector<GlobalMistake> found;
+  const int W = scene.width, H = scene.height;
+  RgbImage src = in.pixels;
+  const int iw = src.width(), ih = src.height();
+
+  // Colours in [0, 255]: a float array whose values go beyond 1 by more than the tolerance.
+  if (in.format == "npy" && !in.eight_bit) {
+    float top = 0;
+    for (const Rgb32f p : src.pixels()) top = std::max({top, p.r, p.g, p.b});
+    if (top > 1 + tol && top <= 255 + tol) {
+      found.push_back({"scaled_255",
+                       fmt::format("colours are scaled to [0, 255] (the largest value is {:.4g}), "
+                                   "not [0, 1]",
+                                   top),
+                       undo});
+      if (undo)
+        for (int y = 0; y < ih; ++y)
+          for (int x = 0; x < iw; ++x) {
+            Rgb32f& p = src(x, y);
+            p = {p.r / 255.0f, p.g / 255.0f, p.b / 255.0f};
+          }
+    }
+  }
+
+  const auto inside = [](const RgbImage& m, int x, int y) {
+    return x >= 0 && y >= 0 && x < m.width() && y < m.height();
+  };
+  const std::vector<Transform> transforms{
+      {"identity", "",
+       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+         return inside(m, x, y) ? (out = m(x, y), true) : false;
+       }},
+      {"transposed", "the image is transposed (x and y swapped: img[x][y] instead of img[y][x])",
+       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+         return inside(m, y, x) ? (out = m(y, x), true) : false;
+       }},
+      {"flipped_vertically", "the image is flipped vertically (row 0 at the bottom)",
+       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+         return inside(m, x, m.height() - 1 - y) ? (out = m(x, m.height() - 1 - y), true) : false;
+       }},
+      {"flipped_horizontally", "the image is flipped horizontally",
+       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+         return inside(m, m.width() - 1 - x, y) ? (out = m(m.width() - 1 - x, y), true) : false;
+       }},
+      {"bgr", "red and blue are swapped (BGR instead of RGB)",
+       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+         if (!inside(m, x, y)) return false;
+         const Rgb32f p = m(x, y);
+         out = {p.b, p.g, p.r};
+         return true;
+       }},
+  };
+  // Score each transform on the pixels where the reference shows a face (a wrong background would
+  // otherwise weigh on all of them alike).
+  std::int64_t face_pixels = 0;
+  std::vector<std::int64_t> score(transforms.size(), 0);
+  for (std::size_t t = 0; t < transforms.size(); ++t) {
+    if (t == 1 && !(iw == H && ih == W)) continue;
+    if (t != 1 && !(iw == W && ih == H) && t != 0) continue;
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        if (ids.at(x, y) < 0) continue;
+        if (t == 0) ++face_pixels;
+        Rgb32f p;
+        if (transforms[t].sample(src, x, y, p) && max_diff(p, reference(x, y)) <= tol) ++score[t];
+      }
+  }
+  std::size_t best = 0;
+  for (std::size_t t = 1; t < transforms.size(); ++t)
+    if (score[t] > score[best]) best = t;
+  // A transform must explain clearly more than the image as it is, and most of the faces' pixels.
+  if (best != 0 && (score[best] < 2 * score[0] || 2 * score[best] < face_pixels)) best = 0;
+  const bool transposed_size = iw == H && ih == W && iw != ih;
+  if (best != 0) {
+    found.push_back({transforms[best].kind,
+                     fmt::format("{} ({} of {} face pixels match after undoing it, {} before)",
+                                 transforms[best].text, score[best], face_pixels, score[0]),
+                     undo});
+  }
+  if ((iw != W || ih != H) && !(best == 1)) {
+    found.push_back({"canvas_size",
+                     fmt::format("the image is {}x{}, the scene's canvas is {}x{}{}", iw, ih, W, H,
+                                 transposed_size ? " (width and height swapped)" : ""),
+                     false});
+  }
+  const std::size_t use = undo ? best : 0;
+  image = RgbImage(W, H, Rgb32f::from(scene.background));
+  compared.assign(static_cast<std::size_t>(W) * H, 0);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      Rgb32f p;
+      if (transforms[use].sample(src, x, y, p)) {
+        image(x, y) = p;
+        compared[static_cast<std::size_t>(y) * W + x] = 1;
+      }
+    }
+
+  // The background: the most common colour where the reference shows none of the faces.
+  std::unordered_map<std::uint32_t, std::int64_t> counts;
+  std::int64_t bg_pixels = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      if (ids.at(x, y) >= 0 || !compared[static_cast<std::size_t>(y) * W + x]) continue;
+      ++bg_pixels;
+      const Rgb32f p = image(x, y);
+      const Bgr8 b = Bgr8::from(p.color());
+      ++counts[static_cast<std::uint32_t>(b.r) << 16 | static_cast<std::uint32_t>(b.g) << 8 | b.b];
+    }
+  std::uint32_t mode = 0;
+  std::int64_t mode_count = 0;
+  for (const auto& [key, n] : counts)
+    if (n > mode_count || (n == mode_count && key < mode)) mode = key, mode_count = n;
+  if (bg_pixels > 0 && 2 * mode_count >= bg_pixels) {
+    const Color seen{(mode >> 16) / 255.0, ((mode >> 8) & 255) / 255.0, (mode & 255) / 255.0};
+    // The mode is 8-bit; compare with half a level of slack on top of the tolerance.
+    const Rgb32f expected = Rgb32f::from(scene.background);
+    const Rgb32f seen_px = Rgb32f::from(seen);
+    if (max_diff(seen_px, expected) > tol + 0.5 / 255) {
+      found.push_back({"background",
+                       fmt::format("the background is {} instead of {} ({} of {} background "
+                                   "pixels)",
+                                   rgb(seen), rgb(scene.background), mode_count, bg_pixels),
+                       undo});
+      if (undo)
+        for (int y = 0; y < H; ++y)
+          for (int x = 0; x < W; ++x)
+            if (max_diff(image(x, y), seen_px) <= 0.5 / 255 + 1e-4) image(x, y) = expected;
+    }
+  }
+  return found;
+}
+
+}  // namespace scantrace::grade

@@ -1,0 +1,33 @@
+#pragma once
+// The IMAGE of `scantrace diff`: what someone else's renderer produced. An 8-bit PNG, JPEG or BMP
+// (decoded with OpenCV), or a NumPy .npy array H×W×3 (io/npy_reader.hpp). The size an image file
+// declares in its header is checked against the memory available before anything is decoded, so a
+// PNG declaring 100000×100000 is refused with one line instead of exhausting the machine.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "src/image.hpp"
+
+namespace scantrace::grade {
+
+struct SubmittedImage {
+  RgbImage pixels;        // RGB as the file holds it: bytes / 255, or the .npy values unscaled
+  std::string format;     // "png", "jpeg", "bmp" or "npy"
+  bool eight_bit = true;  // channel values are multiples of 1/255 (image files, uint8 arrays)
+  std::string name;       // for messages
+};
+
+// The size declared by a PNG (IHDR), BMP or JPEG (SOF) header; false when `bytes` is none of
+// them or too short to say. Throws InputError for a header that is recognised but broken.
+bool declared_size(std::string_view bytes, const std::string& name, std::int64_t& width,
+                   std::int64_t& height, std::string& format);
+
+// Decodes an image file held in memory (the fuzz target's entry). Throws InputError.
+SubmittedImage decode_image(std::string_view bytes, const std::string& name);
+
+// Reads `file`: a .npy by its magic or extension, an image file otherwise. Throws InputError.
+SubmittedImage read_submitted_image(const std::filesystem::path& file);
+
+}  // namespace scantrace::grade

@@ -1,0 +1,214 @@
+#include "io/npy_reader.hpp"
+
+#include <bit>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "io/input_error.hpp"
+#include "io/json_input.hpp"
+#include "io/memory_budget.hpp"
+
+namespace scantrace {
+namespace {
+
+constexpr std::string_view kMagic = "\x93NUMPY";
+
+// The header is a Python dict literal, e.g. {'descr': '<f4', 'fortran_order': False, 'shape':
+// (512, 512, 3), }. Only that grammar is accepted: string keys, and values that are strings,
+// True/False or tuples of non-negative integers. (np.load would evaluate it as Python; a reader of
+// untrusted files must not.)
+class HeaderParser {
+ public:
+  HeaderParser(std::string_view text, const std::string& name) : s_(text), name_(name) {}
+
+  void parse(std::string& descr, bool& fortran, std::vector<std::uint64_t>& shape) {
+    bool have_descr = false, have_fortran = false, have_shape = false;
+    expect('{');
+    for (;;) {
+      skip();
+      if (peek() == '}') break;
+      const std::string key = string_literal("header key");
+      expect(':');
+      skip();
+      if (key == "descr") {
+        if (peek() != '\'' && peek() != '"')
+          fail("descr", "is not a plain dtype string (a structured or object dtype)");
+        descr = string_literal("descr"), have_descr = true;
+      } else if (key == "fortran_order") {
+        fortran = boolean(), have_fortran = true;
+      } else if (key == "shape") {
+        shape = tuple(), have_shape = true;
+      } else {
+        fail(key, "is not a key of the .npy header");
+      }
+      skip();
+      if (peek() == ',') ++i_;
+    }
+    if (!have_descr) fail("descr", "is missing from the header");
+    if (!have_fortran) fail("fortran_order", "is missing from the header");
+    if (!have_shape) fail("shape", "is missing from the header");
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& element, const std::string& problem) const {
+    throw InputError(name_, "header " + element, problem);
+  }
+  void skip() {
+    while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\n' || s_[i_] == '\t')) ++i_;
+  }
+  char peek() const { return i_ < s_.size() ? s_[i_] : '\0'; }
+  void expect(char c) {
+    skip();
+    if (peek() != c)
+      fail("",
+           std::string("expected '") + c + "' at byte " + std::to_string(i_) + " of the header");
+    ++i_;
+  }
+  std::string string_literal(const char* what) {
+    skip();
+    const char q = peek();
+    if (q != '\'' && q != '"') fail(what, "expected a quoted string");
+    const std::size_t end = s_.find(q, i_ + 1);
+    if (end == std::string_view::npos) fail(what, "unterminated string");
+    std::string out(s_.substr(i_ + 1, end - i_ - 1));
+    i_ = end + 1;
+    return out;
+  }
+  bool boolean() {
+    if (s_.substr(i_, 4) == "True") return i_ += 4, true;
+    if (s_.substr(i_, 5) == "False") return i_ += 5, false;
+    fail("fortran_order", "expected True or False");
+  }
+  std::vector<std::uint64_t> tuple() {
+    expect('(');
+    std::vector<std::uint64_t> out;
+    for (;;) {
+      skip();
+      if (peek() == ')') break;
+      if (!std::isdigit(static_cast<unsigned char>(peek()))) fail("shape", "expected an integer");
+      std::uint64_t v = 0;
+      while (std::isdigit(static_cast<unsigned char>(peek()))) {
+        if (v > (std::uint64_t{1} << 40)) fail("shape", "a dimension is absurdly large");
+        v = v * 10 + static_cast<std::uint64_t>(s_[i_++] - '0');
+      }
+      out.push_back(v);
+      skip();
+      if (peek() == ',') ++i_;
+      if (out.size() > 8) fail("shape", "too many dimensions");
+    }
+    ++i_;
+    return out;
+  }
+
+  std::string_view s_;
+  const std::string& name_;
+  std::size_t i_ = 0;
+};
+
+std::string shape_text(const std::vector<std::uint64_t>& shape) {
+  std::string s = "(";
+  for (std::size_t i = 0; i < shape.size(); ++i) s += (i ? ", " : "") + std::to_string(shape[i]);
+  return s + ")";
+}
+
+}  // namespace
+
+NpyImage parse_npy(std::string_view bytes, const std::string& name, std::uint64_t max_bytes) {
+  if (bytes.size() < 10 || bytes.substr(0, 6) != kMagic)
+    throw InputError(name, "", "not a NumPy .npy file (the magic \\x93NUMPY is missing)");
+  const auto major = static_cast<unsigned char>(bytes[6]);
+  std::size_t header_len = 0, offset = 0;
+  if (major == 1) {
+    header_len = static_cast<unsigned char>(bytes[8]) |
+                 static_cast<std::size_t>(static_cast<unsigned char>(bytes[9])) << 8;
+    offset = 10;
+  } else if (major == 2 || major == 3) {
+    if (bytes.size() < 12) throw InputError(name, "", "truncated .npy header");
+    for (int k = 3; k >= 0; --k)
+      header_len = header_len << 8 | static_cast<unsigned char>(bytes[8 + k]);
+    offset = 12;
+  } else {
+    throw InputError(name, "", "unsupported .npy format version " + std::to_string(major));
+  }
+  if (header_len > bytes.size() - offset)
+    throw InputError(name, "",
+                     "truncated .npy header (declares " + std::to_string(header_len) + " bytes)");
+  std::string descr;
+  bool fortran = false;
+  std::vector<std::uint64_t> shape;
+  HeaderParser(bytes.substr(offset, header_len), name).parse(descr, fortran, shape);
+
+  NpyImage out;
+  std::size_t item = 0;
+  if (descr == "<f4") {
+    item = 4;
+  } else if (descr == "<f8") {
+    item = 8;
+  } else if (descr == "|u1" || descr == "<u1" || descr == "u1") {
+    item = 1, out.integer = true;
+  } else if (descr == "|O" || descr == "O") {
+    throw InputError(name, "header descr",
+                     "object arrays (pickles) are refused; save the canvas as float or uint8");
+  } else {
+    throw InputError(
+        name, "header descr",
+        "dtype '" + descr + "' is not supported (little-endian float32, float64 or uint8 only)");
+  }
+  out.dtype = descr;
+  if (fortran)
+    throw InputError(name, "header fortran_order",
+                     "Fortran order is not supported (save with np.ascontiguousarray)");
+  if (shape.size() != 3 || shape[2] != 3)
+    throw InputError(name, "header shape",
+                     "shape " + shape_text(shape) + " is not H×W×3 (an RGB image)");
+  if (shape[0] == 0 || shape[1] == 0 || shape[0] > 1000000 || shape[1] > 1000000)
+    throw InputError(name, "header shape", "shape " + shape_text(shape) + " is out of range");
+  const std::uint64_t count = shape[0] * shape[1] * 3;
+  if (count * item > max_bytes)
+    throw InputError(name, "header shape",
+                     "shape " + shape_text(shape) + " declares " + format_bytes(count * item) +
+                         ", more than the " + format_bytes(max_bytes) + " allowed");
+  const std::size_t data = offset + header_len;
+  if (bytes.size() - data != count * item)
+    throw InputError(name, "data",
+                     "holds " + std::to_string(bytes.size() - data) + " bytes, the shape " +
+                         shape_text(shape) + " needs " + std::to_string(count * item));
+  out.height = static_cast<int>(shape[0]);
+  out.width = static_cast<int>(shape[1]);
+  out.values.resize(count);
+  const char* p = bytes.data() + data;
+  static_assert(std::endian::native == std::endian::little,
+                "the reader assumes a little-endian host");
+  for (std::size_t k = 0; k < count; ++k) {
+    double v;
+    if (item == 1) {
+      v = static_cast<unsigned char>(p[k]);
+    } else if (item == 4) {
+      float f;
+      std::memcpy(&f, p + 4 * k, 4);
+      v = f;
+    } else {
+      std::memcpy(&v, p + 8 * k, 8);
+    }
+    if (!std::isfinite(v)) {
+      const std::uint64_t pixel = k / 3;
+      throw InputError(name,
+                       "pixel [" + std::to_string(pixel / shape[1]) + "][" +
+                           std::to_string(pixel % shape[1]) + "]",
+                       std::isnan(v) ? "NaN" : "infinite value");
+    }
+    out.values[k] = static_cast<float>(v);
+  }
+  return out;
+}
+
+NpyImage read_npy(const std::filesystem::path& file) {
+  const std::string bytes = json_input::read_text_file(file);
+  // The whole file is in memory already; the decoded floats take at most 4 bytes per stored byte.
+  check_memory(4 * static_cast<std::uint64_t>(bytes.size()), "the .npy image", file.string(), "");
+  return parse_npy(bytes, file.string());
+}
+
+}  // namespace scantrace

@@ -1,0 +1,30 @@
+#pragma once
+// A small, strict reader of NumPy .npy files (format versions 1.0, 2.0, 3.0): the course's Python
+// renderers save their canvas with np.save as an H×W×3 array of float32/float64 in [0, 1] or of
+// uint8. Only that is accepted: little-endian (or byte-order free) float32, float64 or uint8, C
+// order, three dimensions with 3 channels last, no pickled objects. Anything else is an InputError
+// naming the file and the header field, never a crash or a guess.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace scantrace {
+
+struct NpyImage {
+  int height = 0, width = 0;
+  std::string dtype;          // "<f4", "<f8" or "|u1" (as written in the header)
+  bool integer = false;       // uint8: values are 0..255
+  std::vector<float> values;  // height·width·3, row-major, RGB as stored (not scaled)
+};
+
+// Parses the bytes of a .npy file; `name` is used in error messages. Throws InputError.
+// `max_bytes` caps the declared data size before anything is allocated.
+NpyImage parse_npy(std::string_view bytes, const std::string& name,
+                   std::uint64_t max_bytes = std::uint64_t{1} << 32);
+
+// Reads and parses `file`; the declared size is checked against the memory available.
+NpyImage read_npy(const std::filesystem::path& file);
+
+}  // namespace scantrace

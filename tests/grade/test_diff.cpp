@@ -1,0 +1,270 @@
+// `diff` against renderers broken on purpose in the test (wrong_renderers.hpp): each mistake's
+// differences land in the category the issue names, with the count the test makes on its own.
+#include <algorithm>
+#include <set>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "grade/diff_report.hpp"
+#include "src/painter.hpp"
+#include "wrong_renderers.hpp"
+
+using namespace gradetest;
+using scantrace::grade::diff;
+using scantrace::grade::DiffReport;
+
+namespace {
+
+FillOptions opts(Shading shading) {
+  FillOptions o;
+  o.shading = shading;
+  return o;
+}
+
+bool mentions(const std::vector<std::string>& lines, const std::string& words) {
+  return std::any_of(lines.begin(), lines.end(),
+                     [&](const std::string& l) { return l.find(words) != std::string::npos; });
+}
+
+bool has_global(const DiffReport& r, const std::string& kind) {
+  return std::any_of(r.global.begin(), r.global.end(),
+                     [&](const auto& g) { return g.kind == kind; });
+}
+
+// The faces the correct picture shows somewhere: per pixel the last face, in the test's own
+// painter's order, whose exact coverage holds the centre.
+std::set<int> visible_faces(const Scene& s) {
+  std::vector<int> top(static_cast<std::size_t>(s.width) * s.height, -1);
+  for (int f : order(s, false)) {
+    const reference::Polygon poly(points(s, f), 8);
+    if (poly.degenerate()) continue;
+    for (long long y = std::max<long long>(poly.min_py(), 0);
+         y <= std::min<long long>(poly.max_py(), s.height - 1); ++y)
+      for (long long x = std::max<long long>(poly.min_px(), 0);
+           x <= std::min<long long>(poly.max_px(), s.width - 1); ++x)
+        if (poly.covers(x, y, FillRule::top_left))
+          top[static_cast<std::size_t>(y) * s.width + x] = f;
+  }
+  return {top.begin(), top.end()};
+}
+
+}  // namespace
+
+TEST_CASE("the test's correct renderer agrees with the fill: the grader's baseline",
+          "[grade][diff]") {
+  const Scene s = generated_scene();
+  for (Shading sh : {Shading::flat, Shading::gouraud}) {
+    const RgbImage mine = render_wrong(s, sh, Mistake::none);
+    REQUIRE(count_differing(mine, render<Rgb32f>(s, opts(sh))) == 0);
+    const DiffReport r = diff(s, opts(sh), as_8bit(mine));
+    CHECK(r.agrees());
+    CHECK(r.differing_pixels == 0);
+    CHECK(r.global.empty());
+    CHECK(r.compared_pixels == 200 * 160);
+    CHECK(r.examples.empty());
+  }
+}
+
+TEST_CASE("the closed rule's extra edge pixels are boundary", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::closed_rule);
+  const long long expected = count_differing(good, bad);
+  REQUIRE(expected > 100);
+  const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
+  CHECK(r.differing_pixels == expected);
+  CHECK(r.categories.at("boundary") == expected);
+  CHECK_FALSE(r.agrees());
+}
+
+TEST_CASE("dropping every face's last row is near_boundary, missing, bottom row", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::drop_last_row);
+  const long long expected = count_differing(good, bad);
+  REQUIRE(expected > 50);
+  const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
+  INFO(r.to_json()["categories"].dump() << " " << r.to_json()["examples"].dump());
+  CHECK(r.differing_pixels == expected);
+  // A dropped row that is the whole overlap of a face with the one below it reads as that face
+  // painted over (`order`): a few pixels, no more.
+  CHECK(r.categories.at("near_boundary") + r.categories.at("order") == expected);
+  CHECK(r.categories.at("near_boundary") >= expected * 98 / 100);
+  CHECK(r.near_boundary_missing == r.categories.at("near_boundary"));
+  CHECK(r.near_boundary_extra == 0);
+  CHECK(mentions(r.patterns, "bottom row"));
+}
+
+TEST_CASE("a span one pixel too wide is near_boundary, extra, right of the span", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
+  std::vector<int> painted;
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::span_one_too_wide, 8, &painted);
+  const long long expected = count_differing(good, bad);
+  REQUIRE(expected > 50);
+  // The extra pixel is exactly on the face's outline where the span ends on a pixel centre (the
+  // integer tiles): that is the closed rule's pixel, `boundary`; elsewhere `near_boundary`.
+  long long on_outline = 0;
+  for (int y = 0; y < s.height; ++y)
+    for (int x = 0; x < s.width; ++x) {
+      const Rgb32f p = good(x, y), q = bad(x, y);
+      if (std::max({std::fabs(p.r - q.r), std::fabs(p.g - q.g), std::fabs(p.b - q.b)}) <= 1.0 / 255)
+        continue;
+      const int f = painted[static_cast<std::size_t>(y) * s.width + x];
+      REQUIRE(f >= 0);
+      on_outline += reference::Polygon(points(s, f), 8).covers(x, y, FillRule::closed);
+    }
+  REQUIRE(on_outline > 0);
+  REQUIRE(on_outline < expected);
+  const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
+  INFO(r.to_json()["categories"].dump() << " " << r.to_json()["examples"].dump());
+  CHECK(r.differing_pixels == expected);
+  CHECK(r.categories.at("boundary") == on_outline);
+  // A tile's lower triangle loses its left-end pixels to its neighbour and gains one on the right:
+  // in the image it is the face translated by one pixel, `shifted` by definition.
+  CHECK(r.categories.at("near_boundary") + r.categories.at("shifted") == expected - on_outline);
+  CHECK(r.categories.at("near_boundary") > 0);
+  CHECK(r.near_boundary_extra == r.categories.at("near_boundary"));
+  CHECK(mentions(r.patterns, "right of the span"));
+}
+
+TEST_CASE("nearest-first painting is order", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);
+  const RgbImage bad = render_wrong(s, Shading::gouraud, Mistake::nearest_first);
+  const long long expected = count_differing(good, bad);
+  REQUIRE(expected > 1000);
+  const DiffReport r = diff(s, opts(Shading::gouraud), as_8bit(bad));
+  CHECK(r.differing_pixels == expected);
+  CHECK(r.categories.at("order") == expected);
+}
+
+TEST_CASE("faces with a horizontal edge skipped are missing_face, each listed", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::skip_horizontal);
+  const long long expected = count_differing(good, bad);
+  const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
+  CHECK(r.differing_pixels == expected);
+  CHECK(r.categories.at("missing_face") == expected);
+  std::set<int> want;
+  for (int f : visible_faces(s))
+    if (f >= 0 && has_horizontal_edge(s, f, 8)) want.insert(f);
+  std::set<int> got;
+  for (const auto& m : r.missing_faces) {
+    got.insert(m.face);
+    CHECK(m.shape.find("horizontal edge") != std::string::npos);
+  }
+  CHECK(got == want);
+}
+
+TEST_CASE("zero-area faces painted are degenerate_drawn", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::paint_degenerate);
+  const long long expected = count_differing(good, bad);
+  REQUIRE(expected > 20);
+  const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
+  CHECK(r.differing_pixels == expected);
+  CHECK(r.categories.at("degenerate_drawn") == expected);
+}
+
+TEST_CASE("flat colour = the first vertex's colour is colour, diagnosed", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::flat_first_vertex);
+  const long long expected = count_differing(good, bad);
+  REQUIRE(expected > 1000);
+  const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
+  CHECK(r.differing_pixels == expected);
+  CHECK(r.categories.at("colour") == expected);
+  REQUIRE_FALSE(r.colour_diagnosis.empty());
+  CHECK(r.colour_diagnosis.front().find("first vertex") != std::string::npos);
+  CHECK(r.max_colour_error > 1.0 / 255);
+}
+
+TEST_CASE("Gouraud with two vertex colours swapped is colour, permutation named", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);
+  const RgbImage bad = render_wrong(s, Shading::gouraud, Mistake::swap_colours_01);
+  // Counted on the 8-bit image the grader reads: near the tolerance, rounding decides.
+  const long long expected = count_differing(good, as_8bit(bad).pixels);
+  REQUIRE(expected > 1000);
+  const DiffReport r = diff(s, opts(Shading::gouraud), as_8bit(bad));
+  CHECK(r.differing_pixels == expected);
+  CHECK(r.categories.at("colour") == expected);
+  REQUIRE_FALSE(r.colour_diagnosis.empty());
+  CHECK(r.colour_diagnosis.front().find("colours of 1, 0, 2") != std::string::npos);
+}
+
+TEST_CASE("8-bit truncation stays inside the tolerance and is noted", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);
+  const DiffReport r = diff(s, opts(Shading::gouraud), as_8bit(good, true));
+  CHECK(r.differing_pixels == 0);
+  CHECK(r.agrees());
+  CHECK(mentions(r.notes, "truncation"));
+  const DiffReport rounded = diff(s, opts(Shading::gouraud), as_8bit(good, false));
+  CHECK_FALSE(mentions(rounded.notes, "truncation"));
+}
+
+TEST_CASE("global mistakes are one line each, undone, and the rest agrees", "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);
+  const int W = good.width(), H = good.height();
+  SECTION("transposed") {
+    RgbImage t(H, W);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) t(y, x) = good(x, y);
+    const DiffReport r = diff(s, opts(Shading::gouraud), as_8bit(t));
+    CHECK(has_global(r, "transposed"));
+    CHECK_FALSE(has_global(r, "canvas_size"));
+    CHECK(r.differing_pixels == 0);
+    CHECK_FALSE(r.agrees());
+    const DiffReport raw = diff(s, opts(Shading::gouraud), as_8bit(t), {.undo = false});
+    CHECK(has_global(raw, "transposed"));
+    CHECK(raw.compared_pixels < W * H);
+  }
+  SECTION("BGR") {
+    RgbImage t(W, H);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) t(x, y) = {good(x, y).b, good(x, y).g, good(x, y).r};
+    const DiffReport r = diff(s, opts(Shading::gouraud), as_8bit(t));
+    CHECK(has_global(r, "bgr"));
+    CHECK(r.global.size() == 1);
+    CHECK(r.differing_pixels == 0);
+  }
+  SECTION("flipped vertically") {
+    RgbImage t(W, H);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) t(x, H - 1 - y) = good(x, y);
+    const DiffReport r = diff(s, opts(Shading::gouraud), as_8bit(t));
+    CHECK(has_global(r, "flipped_vertically"));
+    CHECK(r.differing_pixels == 0);
+  }
+  SECTION("[0, 255] floats in a .npy") {
+    RgbImage t(W, H);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        t(x, y) = {255 * good(x, y).r, 255 * good(x, y).g, 255 * good(x, y).b};
+    const DiffReport r = diff(s, opts(Shading::gouraud), as_npy(t));
+    CHECK(has_global(r, "scaled_255"));
+    CHECK(r.differing_pixels == 0);
+  }
+  SECTION("a 0.99 grey background") {
+    Scene grey = s;
+    grey.background = {0.99, 0.99, 0.99};
+    const RgbImage t = render_wrong(grey, Shading::gouraud, Mistake::none);
+    const DiffReport r = diff(s, opts(Shading::gouraud), as_npy(t));
+    CHECK(has_global(r, "background"));
+    CHECK(r.differing_pixels == 0);
+    const DiffReport raw = diff(s, opts(Shading::gouraud), as_npy(t), {.undo = false});
+    CHECK(raw.differing_pixels > 1000);
+  }
+  SECTION("another canvas size") {
+    RgbImage t(W + 10, H);
+    const DiffReport r = diff(s, opts(Shading::gouraud), as_8bit(t));
+    CHECK(has_global(r, "canvas_size"));
+  }
+}

@@ -1,0 +1,121 @@
+// `scantrace why` and `scantrace diff` as a user runs them: exit statuses, outputs under -o, and
+// bad inputs (one line on stderr, exit 1, nothing half-written).
+#include <cstring>
+#include <limits>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "../cli/cli_test_support.hpp"
+#include "io/scene_json.hpp"
+#include "viz/image_file.hpp"
+#include "wrong_renderers.hpp"
+
+using namespace gradetest;
+using scantrace::test::run_scantrace;
+using scantrace::test::TempDir;
+
+namespace {
+
+int lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
+
+}  // namespace
+
+TEST_CASE("diff: an identical image exits 0, a wrong one 3 with diff.png and report.json",
+          "[grade][cli]") {
+  TempDir dir;
+  const Scene s = generated_scene();
+  scantrace::save_scene(s, dir / "scene.json");
+  scantrace::write_png(render_wrong(s, Shading::gouraud, Mistake::none), dir / "good.png");
+  const auto same = run_scantrace(dir.path(), {"diff", "scene.json", "good.png", "-o", "same"});
+  CHECK(same.exit_code == 0);
+  CHECK(same.out.find("agrees") != std::string::npos);
+  const auto report = nlohmann::json::parse(scantrace::test::read_text(dir / "same/report.json"));
+  CHECK(report["differing_pixels"] == 0);
+  CHECK(report["global"].empty());
+
+  const RgbImage bad = render_wrong(s, Shading::gouraud, Mistake::closed_rule);
+  scantrace::write_png(bad, dir / "closed.png");
+  const auto differ = run_scantrace(dir.path(), {"diff", "scene.json", "closed.png", "-o", "out"});
+  CHECK(differ.exit_code == 3);
+  CHECK(differ.out.find("`boundary`") != std::string::npos);
+  const auto j = nlohmann::json::parse(scantrace::test::read_text(dir / "out/report.json"));
+  const long long expected = count_differing(render_wrong(s, Shading::gouraud, Mistake::none), bad);
+  CHECK(j["differing_pixels"] == expected);
+  CHECK(j["categories"]["boundary"] == expected);
+  CHECK(j["examples"].size() == 3);
+  const RgbImage png = scantrace::read_png(dir / "out/diff.png");
+  CHECK(png.width() > s.width);
+  CHECK(scantrace::test::file_names(dir / "out") ==
+        std::vector<std::string>{"diff.png", "report.json"});
+
+  const auto json = run_scantrace(dir.path(), {"-q", "diff", "scene.json", "closed.png", "--json"});
+  CHECK(json.exit_code == 3);
+  CHECK(nlohmann::json::parse(json.out)["categories"]["boundary"] == expected);
+}
+
+TEST_CASE("diff: bad inputs are one line and exit 1, usage errors exit 2", "[grade][cli]") {
+  TempDir dir;
+  const Scene s = generated_scene();
+  scantrace::save_scene(s, dir / "scene.json");
+  scantrace::write_png(render_wrong(s, Shading::gouraud, Mistake::none), dir / "good.png");
+  const std::string png = scantrace::test::read_text(dir / "good.png");
+  scantrace::test::write_text(dir / "cut.png", png.substr(0, png.size() / 2));
+  const auto npy_file = [](const std::string& descr, const std::string& shape,
+                           const std::string& data) {
+    std::string header =
+        "{'descr': '" + descr + "', 'fortran_order': False, 'shape': " + shape + ", }";
+    while ((10 + header.size() + 1) % 64) header += ' ';
+    header += '\n';
+    return std::string("\x93NUMPY\x01\x00", 8) + static_cast<char>(header.size()) + '\0' + header +
+           data;
+  };
+  scantrace::test::write_text(dir / "pickle.npy", npy_file("|O", "(160, 200, 3)", "\x80\x04"));
+  scantrace::test::write_text(dir / "int.npy", npy_file("<i8", "(160, 200, 3)", ""));
+  scantrace::test::write_text(dir / "shape.npy",
+                              npy_file("<f4", "(160, 200)", std::string(160 * 200 * 4, '\0')));
+  std::string nan(160 * 200 * 3 * 4, '\0');
+  const float q = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(&nan[4 * 3 * (200 * 7 + 9)], &q, 4);
+  scantrace::test::write_text(dir / "nan.npy", npy_file("<f4", "(160, 200, 3)", nan));
+  for (const auto& [file, words] :
+       std::vector<std::pair<std::string, std::string>>{{"cut.png", "truncated"},
+                                                        {"pickle.npy", "pickles"},
+                                                        {"int.npy", "dtype '<i8'"},
+                                                        {"shape.npy", "shape (160, 200)"},
+                                                        {"nan.npy", "pixel [7][9]: NaN"},
+                                                        {"missing.png", "cannot read file"}}) {
+    INFO(file);
+    const auto r = run_scantrace(dir.path(), {"diff", "scene.json", file, "-o", "out-" + file});
+    CHECK(r.exit_code == 1);
+    CHECK(lines(r.err) == 1);
+    CHECK(r.err.find(file) != std::string::npos);
+    CHECK(r.err.find(words) != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / ("out-" + file)));
+  }
+  CHECK(run_scantrace(dir.path(), {"diff", "scene.json"}).exit_code == 2);
+  CHECK(
+      run_scantrace(dir.path(), {"diff", "scene.json", "good.png", "--tolerance", "2"}).exit_code ==
+      2);
+}
+
+TEST_CASE("why: text, JSON, a pixel outside the canvas", "[grade][cli]") {
+  TempDir dir;
+  const Scene s = generated_scene();
+  scantrace::save_scene(s, dir / "scene.json");
+  const auto text = run_scantrace(dir.path(), {"why", "scene.json", "40", "40"});
+  CHECK(text.exit_code == 0);
+  CHECK(text.out.find("pixel (40, 40)") != std::string::npos);
+  CHECK(text.out.find("final colour") != std::string::npos);
+  const auto json = run_scantrace(dir.path(), {"-q", "why", "scene.json", "40", "40", "--json"});
+  CHECK(json.exit_code == 0);
+  const auto j = nlohmann::json::parse(json.out);
+  CHECK(j["pixel"] == nlohmann::json::array({40, 40}));
+  CHECK(j["format"] == "scantrace-why");
+  const auto outside = run_scantrace(dir.path(), {"why", "scene.json", "200", "5"});
+  CHECK(outside.exit_code == 1);
+  CHECK(lines(outside.err) == 1);
+  CHECK(run_scantrace(dir.path(), {"why", "scene.json", "5"}).exit_code == 2);
+}

@@ -35,7 +35,7 @@ const std::string kModel =
 
 }  // namespace
 
-TEST_CASE("--size is the canvas in render, trace and explain, also for scene files",
+TEST_CASE("option --size is the canvas in render, trace and explain, also for scene files",
           "[command][options]") {
   TempDir dir;
   write_small_scene(dir / "s.json");
@@ -62,8 +62,10 @@ TEST_CASE("--size is the canvas in render, trace and explain, also for scene fil
   CHECK(trace::Trace::load(dir / "m2.jsonl").header().canvas.width == 42);
 }
 
-TEST_CASE("--model-colors everywhere, and render --colors and replay --size are deprecated aliases",
-          "[command][options]") {
+TEST_CASE(
+    "option --model-colors everywhere, and render --colors and replay --size are deprecated "
+    "aliases",
+    "[command][options]") {
   TempDir dir;
   auto r = run_scantrace(
       dir.path(), {"render", kModel, "--model-colors", "random", "--size", "32x32", "-o", "a.png"});

@@ -12,6 +12,7 @@
 #include "cli/fill_flags.hpp"
 #include "cli/model_flags.hpp"
 #include "cli/replay_flags.hpp"
+#include "cli/selection_check.hpp"
 #include "cli/trace_flags.hpp"
 #include "io/obj_loader.hpp"
 #include "trace/record.hpp"
@@ -33,6 +34,7 @@ void run(const ExplainArgs& args) {
   options.winding_rule = args.what.winding_rule();
   const auto input = trace_input(args.what, args.model, options.shading, args.fill.clamp_colors);
   trace::TraceFilter filter = args.what.filter();
+  check_selection(input, filter, args.what.input_name());
   // The trace stays in memory: unless --max-events says otherwise, a budget keeps a pixel-level
   // trace of a large scene from exhausting it (a video could not show that many steps anyway).
   if (!filter.max_events) filter.max_events = kDefaultMaxEvents;
@@ -63,7 +65,8 @@ Command add_explain_command(CLI::App& app) {
       "Traces a scene or one triangle and replays the trace into an explanatory\n"
       "video (or PNG frames) in one go: 'scantrace trace' and 'scantrace replay'\n"
       "without the file in between. Takes the inputs of 'trace' and the outputs of\n"
-      "'replay'; the video size is --video-size (--size is the triangle's canvas).");
+      "'replay'; --size is the canvas (as in render and trace), --video-size the\n"
+      "frame size of the video.");
   add_trace_flags(*cmd, args->what);
   add_fill_flags(*cmd, args->fill);
   add_model_flags(*cmd, args->model, true);

@@ -9,6 +9,8 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include "cli/canvas_size.hpp"
+#include "cli/deprecated_option.hpp"
 #include "cli/trace_flags.hpp"
 #include "cli/validators.hpp"
 #include "io/obj_loader.hpp"
@@ -51,7 +53,8 @@ Scene ModelFlags::load_model(const std::string& file, Shading shading) const {
   o.light.ambient = ambient;
   o.shading = shading;
   o.gamma = gamma;
-  std::tie(o.camera.width, o.camera.height) = parse_size(size);
+  std::tie(o.camera.width, o.camera.height) =
+      canvas_size_or(size, kDefaultCanvasSize, kDefaultCanvasSize);
   const Vec3 bg = parse_vec3(background, "--background");
   o.background = {bg.x, bg.y, bg.z};
   if (!eye.empty()) {
@@ -75,14 +78,18 @@ Scene ModelFlags::load_model(const std::string& file, Shading shading) const {
 
 std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> trace_input(
     const TraceFlags& what, const ModelFlags& model, Shading shading, bool clamp_colors) {
-  if (!what.scene.empty() && is_obj_file(what.scene)) return model.load_model(what.scene, shading);
+  if (!what.scene.empty() && is_obj_file(what.scene)) {
+    // One canvas option: trace's --size (the deprecated --model-size when --size is absent).
+    ModelFlags m = model;
+    if (!what.size.empty()) m.size = what.size;
+    return m.load_model(what.scene, shading);
+  }
   return what.input(clamp_colors);
 }
 
 void add_model_flags(CLI::App& cmd, ModelFlags& f, bool beside_triangle_flags) {
-  // trace and explain already have --colors and --size for --triangle.
-  const std::string colors_option = beside_triangle_flags ? "--model-colors" : "--colors";
-  const std::string size_option = beside_triangle_flags ? "--model-size" : "--size";
+  // One name per meaning on every command: --model-colors is the model's base colour (--colors
+  // are the vertex colours of --triangle/--polygon), --size the canvas (cli/canvas_size.hpp).
   const auto vec3 = [](const char* what) {
     return parsed_by([what](const std::string& v) { parse_vec3(v, what); });
   };
@@ -105,13 +112,15 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool beside_triangle_flags) {
       ->check(CLI::Range(0.1, 10.0))
       ->capture_default_str()
       ->group(g);
-  cmd.add_option(colors_option, f.colors,
+  cmd.add_option("--model-colors", f.colors,
                  "base colour: file (the model's vertex colours, white\n"
                  "without), random (one per face, from --seed), white")
       ->check(CLI::IsMember({"file", "random", "white"}))
       ->capture_default_str()
       ->group(g);
-  cmd.add_option("--seed", f.seed, "seed of --colors random")->capture_default_str()->group(g);
+  cmd.add_option("--seed", f.seed, "seed of --model-colors random")
+      ->capture_default_str()
+      ->group(g);
   auto* eye = cmd.add_option("--eye", f.eye,
                              "perspective camera at X,Y,Z (default: orthographic,\n"
                              "looking down -z, the model fitted to the canvas)")
@@ -126,10 +135,15 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool beside_triangle_flags) {
       ->needs(eye)
       ->capture_default_str()
       ->group(g);
-  cmd.add_option(size_option, f.size, "canvas of a model, WIDTHxHEIGHT")
-      ->check(parsed_by(parse_size))
-      ->capture_default_str()
-      ->group(g);
+  if (beside_triangle_flags) {
+    // trace and explain own --size (add_trace_flags); this was the model's name for it there.
+    add_deprecated_alias(cmd, "--model-size", "--size", f.size)->check(parsed_by(parse_size));
+  } else {
+    add_canvas_size_option(cmd, f.size);
+    // render spelled the model's colours --colors before they had one name everywhere.
+    add_deprecated_alias(cmd, "--colors", "--model-colors", f.colors)
+        ->check(CLI::IsMember({"file", "random", "white"}));
+  }
   cmd.add_option("--background", f.background, "canvas colour of a model, R,G,B in [0, 1]")
       ->check(parsed_by([](const std::string& v) {
         const Vec3 c = parse_vec3(v, "--background");

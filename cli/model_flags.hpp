@@ -1,7 +1,7 @@
 #pragma once
 // The options of an OBJ model (render, trace and explain take a .obj wherever they take a scene
 // file), and the two visibility options that apply to scenes too:
-//   --light X,Y,Z  --unlit  --ambient A  --gamma G  --colors file|random|white  --seed N
+//   --light X,Y,Z  --unlit  --ambient A  --gamma G  --model-colors file|random|white  --seed N
 //   --eye X,Y,Z [--target X,Y,Z] [--fov DEG] (perspective; orthographic fit otherwise)
 //   --size WxH  --cull none|back|front  --depth painter|zbuffer
 // Defaults differ by input: a model is culled (back) and z-buffered, a course scene keeps the
@@ -30,7 +30,7 @@ struct ModelFlags {
   unsigned long long seed = 1;
   std::string eye, target;
   double fov = 45;
-  std::string size = "512x512";
+  std::string size;  // the canvas (cli/canvas_size.hpp); empty: 512x512
   std::string background = "1,1,1";
   std::string cull;   // empty: by input
   std::string depth;  // empty: by input
@@ -42,8 +42,9 @@ struct ModelFlags {
   Scene load_model(const std::string& file, Shading shading) const;
 };
 
-// `beside_triangle_flags`: the command also has trace's --colors and --size (of --triangle), so
-// the model's are spelled --model-colors and --model-size there (trace, explain).
+// `beside_triangle_flags`: the command also has trace's flags, which own --size (trace, explain;
+// --model-size stays as a deprecated alias there); otherwise --size is added here (render), and
+// render's old --colors is a deprecated alias of --model-colors.
 void add_model_flags(CLI::App& command, ModelFlags& flags, bool beside_triangle_flags);
 
 // What trace and explain fill: a model shaded into a scene, a scene file, or one triangle.

@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include "cli/canvas_size.hpp"
 #include "cli/commands.hpp"
 #include "cli/fill_flags.hpp"
 #include "cli/model_flags.hpp"
@@ -39,8 +40,9 @@ void run_render(const RenderArgs& args) {
   const Stopwatch load_clock;
   const bool model = is_obj_file(args.scene);
   const FillOptions options = args.model.apply(args.fill.options(), model);
-  const Scene scene = model ? args.model.load_model(args.scene, options.shading)
-                            : load_scene_file(args.scene, args.fill.clamp_colors);
+  Scene scene = model ? args.model.load_model(args.scene, options.shading)
+                      : load_scene_file(args.scene, args.fill.clamp_colors);
+  if (!model) apply_canvas_size(scene, args.model.size);  // --size overrides the file's canvas
   const double load_ms = load_clock.ms();
 
   RenderStats stats;
@@ -57,12 +59,17 @@ void run_render(const RenderArgs& args) {
     spdlog::warn("warning: {}: the name does not end in .png; writing PNG data anyway",
                  out.string());
   spdlog::info(
-      "rendered {} ({}x{}, {}, {}, {}, {}, cull {}): {} faces drawn, {} culled, {} skipped, {} "
+      "rendered {} ({}x{}, {}, {}, {}, {}, cull {}): {} faces drawn, {} culled, {} skipped{}, {} "
       "pixels in {:.2f} ms (load {:.1f} ms) -> {}",
       args.scene, scene.width, scene.height, to_string(options.shading),
       to_string(options.fill_rule), to_string(options.method), to_string(options.visibility),
       to_string(options.cull), stats.triangles_filled, stats.triangles_culled,
-      stats.triangles_skipped, stats.pixels, render_ms, load_ms, out.string());
+      stats.triangles_skipped,
+      // Why a face draws nothing (SkipReason): said whenever some did.
+      stats.triangles_skipped > 0
+          ? " (zero area after snapping, no pixel centre inside, or off the canvas)"
+          : "",
+      stats.pixels, render_ms, load_ms, out.string());
 }
 
 }  // namespace

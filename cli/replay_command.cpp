@@ -38,7 +38,8 @@ Command add_replay_command(CLI::App& app) {
       "Turns a trace (from 'scantrace trace') into an explanatory video or PNG frames:\n"
       "for one triangle its set-up, the edge table being built, every scanline with\n"
       "its active edges, active points, span and colours, and the result; for a scene\n"
-      "the painter's algorithm drawing the triangles far to near.");
+      "the triangles drawn under the render's visibility rule: the painter's algorithm\n"
+      "(far to near) or the z-buffer (a depth test per pixel).");
   // A missing trace is bad input (exit status 1, "cannot open trace"), as a missing scene is for
   // render, not a usage error.
   cmd->add_option("TRACE", args->trace, "trace file (.jsonl, trace format v1)")->required();
@@ -49,7 +50,7 @@ Command add_replay_command(CLI::App& app) {
   cmd->footer(
       "Examples:\n"
       "  scantrace replay triangle.jsonl -o triangle.mp4\n"
-      "  scantrace replay triangle.jsonl -o frames/ --steps 5:12 --size 1920x1080\n"
+      "  scantrace replay triangle.jsonl -o frames/ --steps 5:12 --video-size 1920x1080\n"
       "  scantrace replay scene.jsonl -o painter.mp4 --hold 0.5");
   return {cmd, [args] { run(*args); }};
 }

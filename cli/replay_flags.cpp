@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include "cli/deprecated_option.hpp"
 #include "cli/validators.hpp"
 
 #include "cli/stopwatch.hpp"
@@ -62,10 +63,15 @@ void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) 
       ->check(CLI::Range(0.01, 60.0))
       ->capture_default_str();
   command
-      .add_option(size_is_free ? "--size,--video-size" : "--video-size", flags.size,
-                  "frame size WIDTHxHEIGHT, even (e.g. 1920x1080)")
+      .add_option("--video-size", flags.size,
+                  "frame size WIDTHxHEIGHT of the video or PNG frames,\n"
+                  "even (e.g. 1920x1080)")
       ->check(parsed_by(parse_video_size))
       ->capture_default_str();
+  // --size is the canvas on every command that takes a scene; replay once used it for the frame.
+  if (size_is_free)
+    add_deprecated_alias(command, "--size", "--video-size", flags.size)
+        ->check(parsed_by(parse_video_size));
   command
       .add_option("--steps", flags.steps, "render only steps A..B (from 1; \"5:\", \":20\", \"7\")")
       ->check(parsed_by([](const std::string& v) { viz::StepRange::parse(v); }));
@@ -78,7 +84,8 @@ void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) 
   command
       .add_option("--mode", flags.mode,
                   "triangles: each triangle step by step\n"
-                  "scene: the painter's algorithm, triangles in batches\n"
+                  "scene: the triangles in batches, under the trace's\n"
+                  "visibility rule (painter's order or z-buffer)\n"
                   "auto: triangles for one triangle, scene for more")
       ->check(CLI::IsMember({"auto", "triangles", "scene"}))
       ->capture_default_str();

@@ -11,6 +11,7 @@
 #include "cli/commands.hpp"
 #include "cli/fill_flags.hpp"
 #include "cli/model_flags.hpp"
+#include "cli/selection_check.hpp"
 #include "cli/stopwatch.hpp"
 #include "cli/trace_flags.hpp"
 #include "io/obj_loader.hpp"
@@ -33,6 +34,7 @@ void run_trace(const TraceArgs& args) {
   options.winding_rule = args.what.winding_rule();
   const auto input = trace_input(args.what, args.model, options.shading, args.fill.clamp_colors);
   trace::TraceFilter filter = args.what.filter();
+  check_selection(input, filter, args.what.input_name());
   filter.max_bytes = args.max_bytes;
   const Stopwatch clock;
   const trace::Footer footer = std::visit(
@@ -48,11 +50,16 @@ void run_trace(const TraceArgs& args) {
   spdlog::info("traced {} ({} level, {} shading): {} events in {:.1f} ms -> {}",
                args.what.input_name(), args.what.level, to_string(options.shading), footer.events,
                clock.ms(), args.output);
-  if (footer.truncated)
+  if (footer.truncated) {
+    // Name the budget that cut it: the event count reached --max-events, or else the bytes.
+    const bool by_events = filter.max_events && footer.events >= *filter.max_events;
+    const std::string budget = by_events ? "--max-events " + std::to_string(*filter.max_events)
+                                         : "--max-bytes " + std::to_string(args.max_bytes);
     spdlog::warn(
-        "warning: {}: the trace was truncated after {} events (budget --max-events or "
-        "--max-bytes {}); its footer says \"truncated\": true",
-        args.output, footer.events, args.max_bytes);
+        "warning: {}: the trace was truncated after {} events by its budget {}; its footer says "
+        "\"truncated\": true",
+        args.output, footer.events, budget);
+  }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/canvas_size.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/validators.hpp"
 
@@ -145,7 +146,11 @@ void TraceFlags::check(const std::string& fill_rule) const {
 
 std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> TraceFlags::input(
     bool clamp_colors) const {
-  if (!scene.empty()) return load_scene_file(scene, clamp_colors);
+  if (!scene.empty()) {
+    Scene s = load_scene_file(scene, clamp_colors);
+    apply_canvas_size(s, size);
+    return s;
+  }
   if (!polygon.empty()) {
     trace::GeneralPolygonInput p;
     p.contours = parse_polygon(polygon);
@@ -154,13 +159,14 @@ std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> TraceFlags
     for (const auto& c : p.contours)
       for (std::size_t i = 0; i < c.size(); ++i)
         p.colors.push_back(given[p.colors.size() % given.size()]);
-    std::tie(p.width, p.height) = parse_size(size);
+    std::tie(p.width, p.height) = canvas_size_or(size, kDefaultCanvasSize, kDefaultCanvasSize);
+    check_canvas_memory(p.width, p.height, "--size", size);
     return p;
   }
   trace::TriangleInput t;
   t.vertices = parse_triangle(triangle);
   t.colors = parse_colors(colors);
-  std::tie(t.width, t.height) = parse_size(size);
+  std::tie(t.width, t.height) = canvas_size_or(size, kDefaultCanvasSize, kDefaultCanvasSize);
   check_canvas_memory(t.width, t.height, "--size", size);
   return t;
 }
@@ -202,14 +208,18 @@ void add_trace_flags(CLI::App& command, TraceFlags& flags) {
           .add_option("--colors", flags.colors,
                       "vertex colours, \"r,g,b r,g,b r,g,b\": three for --triangle; for\n"
                       "--polygon one per vertex, or fewer, repeated in turn")
-          ->check(parsed_by(parse_color_list))
+          ->check(parsed_by([](const std::string& v) {
+            // The one mix-up worth a hint: a model's base colour given to the vertex colours.
+            if (v == "file" || v == "random" || v == "white")
+              throw std::invalid_argument("\"" + v +
+                                          "\" is a model's base colour: use --model-colors " + v +
+                                          " (--colors are the vertex colours of --triangle or "
+                                          "--polygon, \"r,g,b r,g,b r,g,b\")");
+            parse_color_list(v);
+          }))
           ->capture_default_str();
-  auto* size =
-      command.add_option("--size", flags.size, "canvas of --triangle or --polygon, WIDTHxHEIGHT")
-          ->check(parsed_by(parse_size))
-          ->capture_default_str();
+  add_canvas_size_option(command, flags.size);
   colors->excludes(scene);
-  size->excludes(scene);
   command
       .add_option("--winding", flags.winding,
                   "which pixels of --polygon are inside: even-odd (an odd\n"

@@ -25,7 +25,7 @@ struct TraceFlags {
   std::string polygon;
   std::string winding = "even-odd";
   std::string colors = "1,0,0 0,1,0 0,0,1";
-  std::string size = "512x512";
+  std::string size;  // --size, the canvas (cli/canvas_size.hpp); empty: by input
   std::string level = "scanline";
   std::string triangles;
   std::string rows;

@@ -1,5 +1,9 @@
 #include "cli/trace_input.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
 #include <spdlog/spdlog.h>
 
 namespace scantrace::cli {
@@ -7,6 +11,11 @@ namespace scantrace::cli {
 // By default an incomplete trace is an error — a video of half a fill that looks complete would
 // mislead; with --partial the complete lines are used and a warning says so.
 trace::Trace load_trace(const std::string& file, bool partial) {
+  {
+    // The reader says only that it cannot open the file; the system says why.
+    std::ifstream probe(file, std::ios::binary);
+    if (!probe) throw trace::TraceError(file + ": cannot open trace: " + std::strerror(errno));
+  }
   if (!partial) {
     trace::Trace t = trace::Trace::load(file);
     if (!t.complete())

@@ -8,6 +8,17 @@
 
 namespace scantrace::cli {
 
+// CLI11 already prefixes the message with the option's name; the parsers name it too (they are
+// also used outside option parsing), so a leading "--name: " or "--name " is dropped here rather
+// than printed twice ("--colors: --colors: ...").
+inline std::string without_option_prefix(std::string message) {
+  if (message.rfind("--", 0) != 0) return message;
+  const std::size_t end = message.find_first_of(": ");
+  if (end == std::string::npos) return message;
+  const std::size_t skip = message.compare(end, 2, ": ") == 0 ? end + 2 : end + 1;
+  return message.substr(skip);
+}
+
 template <class Parse>
 CLI::Validator parsed_by(Parse parse) {
   return CLI::Validator(
@@ -16,7 +27,7 @@ CLI::Validator parsed_by(Parse parse) {
           parse(value);
           return {};
         } catch (const std::exception& e) {
-          return e.what();
+          return without_option_prefix(e.what());
         }
       },
       "");

@@ -24,10 +24,19 @@ code_of() {
     sed -n '/^[0-9a-f]* <.*>:$/,$p' | tail -n +2 | cut -f2- |
     sed -E 's/0x[0-9a-f]+//g; s/[0-9a-f]{4,}//g; s/<[^>]*>//g'
 }
-if diff <(code_of "$with") <(code_of "$without") >/dev/null; then
-  echo "machine code of the untraced render: identical in both builds ($(code_of "$with" | wc -l) instructions)"
+# Into variables first: a failure inside a process substitution would not stop the script, and
+# two empty listings would compare "identical" (it once printed "identical ... (0 instructions)").
+code_with=$(code_of "$with")
+code_without=$(code_of "$without")
+if [ -z "$code_with" ] || [ -z "$code_without" ]; then
+  echo "machine code of the untraced render: not found in a build; nothing compared" >&2
+  exit 1
+fi
+if [ "$code_with" = "$code_without" ]; then
+  echo "machine code of the untraced render: identical in both builds ($(wc -l <<<"$code_with") instructions)"
 else
-  echo "machine code of the untraced render: DIFFERS between the builds"
+  echo "machine code of the untraced render: DIFFERS between the builds" >&2
+  exit 1
 fi
 
 results=$(mktemp)

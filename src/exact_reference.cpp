@@ -9,8 +9,10 @@ namespace scantrace::reference {
 i64 snap(double v, int bits) {
   const double scaled = std::ldexp(v, bits);  // exact: a power-of-two scaling
   const double f = std::floor(scaled);
-  // f + 0.5 is exact for |f| < 2^52, so this comparison decides floor(scaled + 1/2) exactly.
-  return static_cast<i64>(f) + (scaled >= f + 0.5 ? 1 : 0);
+  // scaled − f is exact (f is scaled with its fractional bits cleared) and 0 for |scaled| ≥ 2^52,
+  // where every double is an integer. f + 0.5 is NOT exact there: at 2^52 and above it rounds
+  // (ties to even) to f or f + 1, which moved such points one grid unit.
+  return static_cast<i64>(f) + (scaled - f >= 0.5 ? 1 : 0);
 }
 
 GridPt snap(scantrace::Vec2 p, int bits) {

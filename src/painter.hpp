@@ -63,7 +63,7 @@ RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
                                  scene.vcolors[face[2]]};
     const std::array<double, 3> d{scene.depth[face[0]], scene.depth[face[1]], scene.depth[face[2]]};
     if (grid.valid()) canvas.begin_triangle(v, d, grid);
-    stats.count(fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, tracer));
+    stats.count(fill_polygon(canvas, PolygonInput{v, c, f, depth[f], d}, opt, scratch, tracer));
   }
   return stats;
 }

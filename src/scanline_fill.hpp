@@ -50,6 +50,9 @@ struct PolygonInput {
   std::span<const Color> colors;
   int triangle = 0;
   std::optional<double> depth;
+  // Z-buffer renders: the depth of each vertex, which the trace records so that a replay can
+  // redo every pixel's depth test (src/depth_plane.hpp). Empty otherwise.
+  std::span<const double> vertex_depths = {};
 };
 
 // Working storage of the fill, reusable across polygons: a renderer keeps one and allocates
@@ -503,8 +506,15 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
                          : Color{};
   if constexpr (kTriangleLevel)
     if (traced)
-      tracer.triangle_begin(
-          PolygonSetup{in.triangle, in.points, pts, in.colors, in.depth, flat, &opt, grid});
+      tracer.triangle_begin(PolygonSetup{.triangle = in.triangle,
+                                         .vertices = in.points,
+                                         .snapped = pts,
+                                         .colors = in.colors,
+                                         .depth = in.depth,
+                                         .flat_color = flat,
+                                         .options = &opt,
+                                         .grid = grid,
+                                         .vertex_depths = in.vertex_depths});
 
   FillResult result;
   if (opt.method == Method::halfspace) {

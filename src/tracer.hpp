@@ -42,6 +42,7 @@ struct PolygonSetup {
   // General polygons (winding_fill.hpp): the vertex count of each contour, whose vertices follow
   // one another in `vertices`. Empty for a single contour (triangles, convex polygons).
   std::span<const int> contour_sizes = {};
+  std::span<const double> vertex_depths = {};  // z-buffer renders: PolygonInput::vertex_depths
 };
 
 struct EdgeTableView {

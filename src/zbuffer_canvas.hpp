@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "canvas.hpp"
+#include "depth_plane.hpp"
 #include "depth_test.hpp"
 #include "fixed_point.hpp"
 #include "vec2.hpp"
@@ -40,26 +41,17 @@ class ZBufferCanvas {
   // as the fill will snap them) and their depths.
   void begin_triangle(std::span<const Vec2> v, std::span<const double> d,
                       const SubpixelGrid& grid) {
-    x0_ = y0_ = a_ = b_ = 0, d0_ = d[0];
+    plane_ = DepthPlane{};
+    plane_.d0 = d[0];
     // The fill skips such a triangle before writing anything (SkipReason::out_of_range).
     for (int i = 0; i < 3; ++i)
       if (!SubpixelGrid::representable(v[i])) return;
-    const Vec2 p0 = grid.to_pixels(grid.snap(v[0])), p1 = grid.to_pixels(grid.snap(v[1])),
-               p2 = grid.to_pixels(grid.snap(v[2]));
-    const double ux = p1.x - p0.x, uy = p1.y - p0.y, wx = p2.x - p0.x, wy = p2.y - p0.y;
-    const double det = ux * wy - wx * uy;
-    x0_ = p0.x, y0_ = p0.y, d0_ = d[0];
-    if (det == 0) {
-      // The fill skips a zero-area triangle before writing anything; keep the plane flat.
-      a_ = b_ = 0;
-      return;
-    }
-    const double e1 = d[1] - d[0], e2 = d[2] - d[0];
-    a_ = (e1 * wy - e2 * uy) / det;
-    b_ = (ux * e2 - wx * e1) / det;
+    const std::array<Vec2, 3> p{grid.to_pixels(grid.snap(v[0])), grid.to_pixels(grid.snap(v[1])),
+                                grid.to_pixels(grid.snap(v[2]))};
+    plane_ = DepthPlane::through(p, d);
   }
 
-  double depth_at(int x, int y) const { return d0_ + a_ * (x - x0_) + b_ * (y - y0_); }
+  double depth_at(int x, int y) const { return plane_.at(x, y); }
   double stored(int x, int y) const {
     return depth_[static_cast<std::size_t>(y) * image_.width() + x];
   }
@@ -87,7 +79,7 @@ class ZBufferCanvas {
   Image<P>& image_;
   std::vector<double> depth_;
   std::vector<DepthTest> log_;
-  double x0_ = 0, y0_ = 0, d0_ = 0, a_ = 0, b_ = 0;
+  DepthPlane plane_;
 };
 
 }  // namespace scantrace

@@ -73,6 +73,7 @@ ojson encode(const Header& h) {
   if (h.winding_rule) j["winding_rule"] = *h.winding_rule;
   if (h.visibility != "painter") j["visibility"] = h.visibility;
   if (h.cull != "none") j["cull"] = h.cull;
+  if (!(h.background == Color{1, 1, 1})) j["background"] = h.background;
   return j;
 }
 
@@ -85,6 +86,7 @@ ojson encode(const TriangleBegin& e) {
   if (e.depth) j["depth"] = *e.depth;
   if (e.flat_color) j["flat_color"] = *e.flat_color;
   if (!e.contours.empty()) j["contours"] = e.contours;
+  if (!e.vertex_depths.empty()) j["vertex_depths"] = e.vertex_depths;
   return j;
 }
 
@@ -179,6 +181,7 @@ Header decode_header(const json& j) {
   if (j.contains("winding_rule")) h.winding_rule = j["winding_rule"].get<std::string>();
   h.visibility = j.value("visibility", "painter");
   h.cull = j.value("cull", "none");
+  if (j.contains("background")) h.background = j["background"].get<Color>();
   return h;
 }
 
@@ -191,6 +194,7 @@ TriangleBegin decode_begin(const json& j) {
   if (j.contains("depth")) e.depth = j["depth"].get<double>();
   if (j.contains("flat_color")) e.flat_color = j["flat_color"].get<Color>();
   if (j.contains("contours")) e.contours = j["contours"].get<std::vector<std::vector<int>>>();
+  if (j.contains("vertex_depths")) e.vertex_depths = j["vertex_depths"].get<std::vector<double>>();
   return e;
 }
 

@@ -22,6 +22,7 @@ TriangleBegin to_event(const PolygonSetup& s) {
   for (const FixedPoint& p : s.snapped) e.snapped.push_back(s.grid.to_pixels(p));
   e.colors.assign(s.colors.begin(), s.colors.end());
   e.depth = s.depth;
+  e.vertex_depths.assign(s.vertex_depths.begin(), s.vertex_depths.end());
   if (s.options->shading == Shading::flat) e.flat_color = s.flat_color;
   int next = 0;
   for (const int size : s.contour_sizes) {

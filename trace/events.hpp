@@ -37,6 +37,9 @@ struct Header {
   // that traces of course scenes keep their bytes.
   std::string visibility = "painter";  // "painter" | "zbuffer"
   std::string cull = "none";           // "none" | "back" | "front"
+  // The canvas colour the fill started from; written only when it is not white (the course's),
+  // so that a replay can show the finished image as it was rendered.
+  Color background{1, 1, 1};
 };
 
 struct TriangleBegin {
@@ -49,6 +52,9 @@ struct TriangleBegin {
   // General polygons: the vertex indices of each contour, in order (`vertices` holds all the
   // contours' vertices one after another). Empty for a single contour.
   std::vector<std::vector<int>> contours = {};
+  // Z-buffer traces: the depth of each vertex, from which the depth at every pixel centre follows
+  // (src/depth_plane.hpp) — what a replay needs to redo the depth test. Empty otherwise.
+  std::vector<double> vertex_depths = {};
 };
 
 struct EdgeEntry {

@@ -44,32 +44,18 @@ Header header_of(int width, int height, const FillOptions& options, TraceLevel l
   return h;
 }
 
-int width_of(const GeneralPolygonInput& p) {
-  return p.width;
-}
-int height_of(const GeneralPolygonInput& p) {
-  return p.height;
-}
-int width_of(const TriangleInput& t) {
-  return t.width;
-}
-int height_of(const TriangleInput& t) {
-  return t.height;
-}
-int width_of(const Scene& s) {
-  return s.width;
-}
-int height_of(const Scene& s) {
-  return s.height;
+template <class Input>
+Header header_for(const Input& input, const FillOptions& options, TraceLevel level) {
+  Header h = header_of(input.width, input.height, options, level,
+                       std::is_same_v<Input, GeneralPolygonInput>);
+  h.background = input.background;
+  return h;
 }
 
 template <class Input>
 Trace record(const Input& input, const FillOptions& options, const TraceFilter& filter,
              RgbImage* image) {
-  EventTracer<Recorder> tracer(
-      Recorder(header_of(width_of(input), height_of(input), options, filter.level,
-                         std::is_same_v<Input, GeneralPolygonInput>)),
-      filter);
+  EventTracer<Recorder> tracer(Recorder(header_for(input, options, filter.level)), filter);
   fill_traced(tracer, input, options, image);
   return tracer.finish();
 }
@@ -78,9 +64,7 @@ template <class Input>
 Footer write(const std::filesystem::path& path, const Input& input, const FillOptions& options,
              const TraceFilter& filter, RgbImage* image) {
   EventTracer<JsonlFileWriter> tracer(
-      JsonlFileWriter(path, header_of(width_of(input), height_of(input), options, filter.level,
-                                      std::is_same_v<Input, GeneralPolygonInput>)),
-      filter);
+      JsonlFileWriter(path, header_for(input, options, filter.level)), filter);
   fill_traced(tracer, input, options, image);
   tracer.finish();
   return tracer.footer();

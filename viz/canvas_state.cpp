@@ -1,20 +1,70 @@
 #include "viz/canvas_state.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <span>
 
+#include "src/depth_plane.hpp"
+#include "src/scanline_fill.hpp"
+#include "src/winding_fill.hpp"
 #include "viz/opencv_image.hpp"
 
 namespace scantrace::viz {
+namespace {
 
-CanvasState::CanvasState(cv::Rect window)
+// The depth plane of `triangle` when the trace records its vertex depths (z-buffer traces).
+// (A bool and an out-parameter rather than an optional: GCC's -Wmaybe-uninitialized misreads
+// an optional of this aggregate.)
+bool plane_of(const trace::Trace& trace, int triangle, DepthPlane& plane) {
+  try {
+    const trace::TriangleBegin& b = trace.triangle_begin(triangle);
+    if (b.vertex_depths.size() != 3 || b.snapped.size() != 3) return false;
+    plane = DepthPlane::through(b.snapped, b.vertex_depths);
+    return true;
+  } catch (const std::out_of_range&) {
+    return false;
+  }
+}
+
+// What the fill writes to when a triangle-level trace is filled again: the replay's own canvas.
+struct StateCanvas {
+  CanvasState& state;
+  int w, h;
+  bool tested = false;
+  DepthPlane plane{};
+
+  int width() const { return w; }
+  int height() const { return h; }
+  void fill_span(int y, int x_begin, int x_end, Color c) {
+    for (int x = x_begin; x < x_end; ++x) set(x, y, c);
+  }
+  void set(int x, int y, Color c) {
+    state.put(x, y, c, tested ? std::optional(plane.at(x, y)) : std::nullopt);
+  }
+};
+
+}  // namespace
+
+CanvasState::CanvasState(cv::Rect window, bool depth_test)
     : window_(window),
+      depth_test_(depth_test),
       image_(std::max(window.height, 1), std::max(window.width, 1), CV_8UC3, cv::Scalar::all(0)),
-      mask_(std::max(window.height, 1), std::max(window.width, 1), CV_8UC1, cv::Scalar::all(0)) {}
+      mask_(std::max(window.height, 1), std::max(window.width, 1), CV_8UC1, cv::Scalar::all(0)) {
+  if (depth_test_)
+    depth_ = cv::Mat(mask_.rows, mask_.cols, CV_64FC1,
+                     cv::Scalar::all(std::numeric_limits<double>::infinity()));
+}
+
+CanvasState::CanvasState(cv::Rect window, const trace::Trace& trace)
+    : CanvasState(window, trace.header().visibility == "zbuffer") {}
+
+bool CanvasState::inside(std::int64_t x, std::int64_t y) const {
+  return x >= window_.x && y >= window_.y && x < window_.x + window_.width &&
+         y < window_.y + window_.height;
+}
 
 bool CanvasState::written(std::int64_t x, std::int64_t y) const {
-  if (x < window_.x || y < window_.y || x >= window_.x + window_.width ||
-      y >= window_.y + window_.height)
-    return false;
+  if (!inside(x, y)) return false;
   return mask_.at<std::uint8_t>(static_cast<int>(y - window_.y), static_cast<int>(x - window_.x)) !=
          0;
 }
@@ -24,11 +74,9 @@ cv::Vec3b CanvasState::bgr(std::int64_t x, std::int64_t y) const {
   return image_.at<cv::Vec3b>(static_cast<int>(y - window_.y), static_cast<int>(x - window_.x));
 }
 
-void CanvasState::put(std::int64_t x, std::int64_t y, const Color& c) {
+void CanvasState::store(std::int64_t x, std::int64_t y, const Color& c) {
   ++writes_;
-  if (x < window_.x || y < window_.y || x >= window_.x + window_.width ||
-      y >= window_.y + window_.height)
-    return;
+  if (!inside(x, y)) return;
   const int row = static_cast<int>(y - window_.y), col = static_cast<int>(x - window_.x);
   std::uint8_t& m = mask_.at<std::uint8_t>(row, col);
   if (m) ++overwrites_;
@@ -36,6 +84,24 @@ void CanvasState::put(std::int64_t x, std::int64_t y, const Color& c) {
   image_.at<cv::Vec3b>(row, col) =
       cv::Vec3b(to_byte(static_cast<float>(c.b)), to_byte(static_cast<float>(c.g)),
                 to_byte(static_cast<float>(c.r)));
+}
+
+void CanvasState::reject(std::int64_t x, std::int64_t y) {
+  ++rejected_;
+  if (inside(x, y)) recent_rejections_.emplace_back(static_cast<int>(x), static_cast<int>(y));
+}
+
+void CanvasState::put(std::int64_t x, std::int64_t y, const Color& c, std::optional<double> depth) {
+  if (depth_test_ && depth && inside(x, y)) {
+    double& z = depth_.at<double>(static_cast<int>(y - window_.y), static_cast<int>(x - window_.x));
+    // The render's rule (src/zbuffer_canvas.hpp): strictly nearer wins, a tie keeps the first.
+    if (!(*depth < z)) {
+      reject(x, y);
+      return;
+    }
+    z = *depth;
+  }
+  store(x, y, c);
 }
 
 Color span_pixel_colour(const trace::Scanline& s, const std::optional<Color>& flat,
@@ -53,6 +119,12 @@ void CanvasState::paint_scanline(const trace::Trace& trace, const trace::Scanlin
     flat = trace.triangle_begin(s.triangle).flat_color;
   } catch (const std::out_of_range&) {
   }
+  DepthPlane plane{};
+  const bool tested = depth_test_ && plane_of(trace, s.triangle, plane);
+  const auto depth = [&](std::int64_t x) {
+    return tested ? std::optional(plane.at(static_cast<int>(x), static_cast<int>(s.y)))
+                  : std::nullopt;
+  };
   if (s.intervals) {
     // A general polygon's row: each inside interval is a span of its own.
     for (const trace::Interval& iv : *s.intervals) {
@@ -60,12 +132,12 @@ void CanvasState::paint_scanline(const trace::Trace& trace, const trace::Scanlin
       one.span = iv.pixels;
       one.span_colors = iv.colors;
       for (std::int64_t x = iv.pixels.x_begin; x < iv.pixels.x_end; ++x)
-        put(x, s.y, span_pixel_colour(one, flat, x));
+        put(x, s.y, span_pixel_colour(one, flat, x), depth(x));
     }
     return;
   }
   for (std::int64_t x = s.span->x_begin; x < s.span->x_end; ++x)
-    put(x, s.y, span_pixel_colour(s, flat, x));
+    put(x, s.y, span_pixel_colour(s, flat, x), depth(x));
 }
 
 void CanvasState::paint_rows(const trace::Trace& trace, int triangle, std::int64_t first_row,
@@ -76,8 +148,17 @@ void CanvasState::paint_rows(const trace::Trace& trace, int triangle, std::int64
   std::vector<std::int64_t> rows_with_pixels;
   for (const trace::Pixel* p : trace.pixels(triangle))
     if (p->y >= first_row && p->y <= last_row) {
-      // A pixel the z-buffer rejected is narrated but was not written.
-      if (!p->depth_test || p->depth_test->passed) put(p->x, p->y, p->color);
+      if (!p->depth_test) {
+        put(p->x, p->y, p->color);
+      } else if (p->depth_test->passed) {
+        // The recorded outcome is the truth; the stored depth follows it.
+        if (depth_test_ && inside(p->x, p->y))
+          depth_.at<double>(static_cast<int>(p->y - window_.y),
+                            static_cast<int>(p->x - window_.x)) = p->depth_test->depth;
+        store(p->x, p->y, p->color);
+      } else {
+        reject(p->x, p->y);  // narrated, but not written
+      }
       if (rows_with_pixels.empty() || rows_with_pixels.back() != p->y)
         rows_with_pixels.push_back(p->y);
     }
@@ -87,8 +168,52 @@ void CanvasState::paint_rows(const trace::Trace& trace, int triangle, std::int64
       paint_scanline(trace, *s);
 }
 
+void CanvasState::refill(const trace::Trace& trace, int triangle) {
+  if (trace.skipped(triangle)) return;
+  const trace::TriangleBegin* b = nullptr;
+  try {
+    b = &trace.triangle_begin(triangle);
+  } catch (const std::out_of_range&) {
+    return;
+  }
+  const trace::Header& h = trace.header();
+  FillOptions o;
+  o.shading = h.shading == "flat" ? Shading::flat : Shading::gouraud;
+  o.fill_rule = h.fill_rule == "closed" ? FillRule::closed : FillRule::top_left;
+  o.subpixel_bits = h.subpixel_bits;
+  // The triangle has a set-up in the trace, so it was not culled: no culling here.
+  StateCanvas canvas{*this, h.canvas.width, h.canvas.height};
+  canvas.tested = depth_test_ && plane_of(trace, triangle, canvas.plane);
+  if (!b->contours.empty()) {
+    o.winding_rule = h.winding_rule && *h.winding_rule == "non-zero" ? WindingRule::non_zero
+                                                                     : WindingRule::even_odd;
+    std::vector<std::vector<Vec2>> contours;
+    for (const std::vector<int>& c : b->contours) {
+      std::vector<Vec2>& out = contours.emplace_back();
+      for (int i : c) out.push_back(b->vertices.at(static_cast<std::size_t>(i)));
+    }
+    WindingScratch scratch;
+    fill_polygon_contours(canvas, std::span<const std::vector<Vec2>>(contours),
+                          std::span<const Color>(b->colors), o, scratch);
+    return;
+  }
+  if (h.winding_rule) {
+    o.winding_rule = *h.winding_rule == "non-zero" ? WindingRule::non_zero : WindingRule::even_odd;
+    const std::vector<std::vector<Vec2>> contours{b->vertices};
+    WindingScratch scratch;
+    fill_polygon_contours(canvas, std::span<const std::vector<Vec2>>(contours),
+                          std::span<const Color>(b->colors), o, scratch);
+    return;
+  }
+  FillScratch scratch;
+  fill_polygon(canvas, PolygonInput{b->vertices, b->colors, triangle, b->depth}, o, scratch);
+}
+
 void CanvasState::paint_triangle(const trace::Trace& trace, int triangle) {
-  paint_rows(trace, triangle, INT64_MIN, INT64_MAX);
+  if (trace.header().level == "triangle")
+    refill(trace, triangle);
+  else
+    paint_rows(trace, triangle, INT64_MIN, INT64_MAX);
 }
 
 }  // namespace scantrace::viz

@@ -20,11 +20,11 @@ cv::Rect column(const cv::Mat& frame, const Typography& type) {
 }
 
 std::string shading_text(const trace::Header& h) {
-  return fmt::format("{} shading, {} fill rule, {} x {} canvas",
+  return fmt::format("{} shading, {} fill rule, {} x {} canvas, {}",
                      h.shading == "flat"      ? "Flat"
                      : h.shading == "gouraud" ? "Gouraud"
                                               : h.shading,
-                     h.fill_rule, h.canvas.width, h.canvas.height);
+                     h.fill_rule, h.canvas.width, h.canvas.height, visibility_rule(h));
 }
 
 std::string triangle_text(const trace::Trace& t, int triangle) {
@@ -63,6 +63,48 @@ void trace_warnings(PanelWriter& w, const trace::Trace& t) {
 
 }  // namespace
 
+bool uses_zbuffer(const trace::Header& header) {
+  return header.visibility == "zbuffer";
+}
+
+std::string visibility_rule(const trace::Header& header) {
+  return uses_zbuffer(header) ? "z-buffer (a depth test per pixel)"
+                              : "painter's algorithm (far to near)";
+}
+
+std::vector<std::string> recap_lines(const trace::Trace& trace, const StepPlan& plan) {
+  std::vector<std::string> lines;
+  const bool zbuffer = uses_zbuffer(trace.header());
+  if (plan.mode == ReplayMode::scene) {
+    if (zbuffer)
+      return {"-   Z-buffer: the triangles are drawn in scene order, without sorting.",
+              "-   Each triangle is filled with the edge-table scanline fill; at every pixel its "
+              "depth is interpolated from the vertex depths (the plane through the snapped "
+              "vertices).",
+              "-   The pixel is written only if that depth is nearer (smaller) than the depth "
+              "stored there, which it then replaces; otherwise it is rejected. Where triangles "
+              "pass through each other, the seam is where their depths are equal."};
+    return {
+        "-   Painter's algorithm: depth(T) = mean of its vertex depths; draw the largest "
+        "depth first.",
+        "-   Each triangle is filled with the edge-table scanline fill.",
+        "-   What is nearer is drawn later, so it ends up on top (whole triangles: where "
+        "triangles pass through each other, the later one covers the other entirely)."};
+  }
+  lines = {
+      "-   Edge table: each non-horizontal edge with y_min, y_max, its x at y_min and "
+      "dx/dy, sorted by y_min.",
+      "-   Each row: add the edges that start, drop those that ended; the active "
+      "points are where the active edges cross the row.",
+      "-   Fill from ceil(x_L) to ceil(x_R) - 1, then x += dx/dy for the next row.",
+      "-   Gouraud: colours interpolated along the edges, then along the row."};
+  if (plan.order.size() > 1)
+    lines.push_back(zbuffer ? "-   Z-buffer: a pixel is written only where the triangle is "
+                              "nearer than the depth stored there."
+                            : "-   Painter's algorithm: later triangles paint over earlier ones.");
+  return lines;
+}
+
 cv::Rect card_picture_area(cv::Size frame, const Typography& type) {
   const int left = frame.width * 60 / 100, top = type.px(70);
   return {left, top, std::max(1, frame.width - type.px(60) - left),
@@ -73,7 +115,28 @@ void draw_title_card(cv::Mat& frame, const Typography& type, const trace::Trace&
                      const StepPlan& plan, const CardInfo& info) {
   PanelWriter w(frame, column(frame, type), type);
   const trace::Header& h = trace.header();
-  if (plan.mode == ReplayMode::scene) {
+  if (plan.mode == ReplayMode::scene && uses_zbuffer(h)) {
+    w.line("The z-buffer", TextStyle::huge);
+    w.gap(8);
+    w.line(fmt::format("{} triangles, in scene order, a depth test per pixel",
+                       integer(static_cast<std::int64_t>(plan.order.size()))),
+           TextStyle::title);
+    w.line(shading_text(h), TextStyle::body, palette::kMutedText);
+    w.gap(24);
+    w.line("What you will see", TextStyle::heading);
+    w.gap(4);
+    w.paragraph(
+        "1   The triangles in the order of the scene (no sorting), in batches, each filled "
+        "with the edge-table scanline fill; the last one drawn is outlined.");
+    w.gap(4);
+    w.paragraph(
+        "2   At every pixel: the triangle's depth there, compared with the depth stored so "
+        "far. Nearer (smaller) is written and stored; otherwise the pixel is rejected "
+        "(marked x on the frame of its step).");
+    w.gap(4);
+    w.paragraph(
+        "3   The finished image: where triangles cross, the nearer one wins pixel by pixel.");
+  } else if (plan.mode == ReplayMode::scene) {
     w.line("The painter's algorithm", TextStyle::huge);
     w.gap(8);
     w.line(fmt::format("{} triangles, drawn far to near",
@@ -145,17 +208,14 @@ void draw_end_card(cv::Mat& frame, const Typography& type, const trace::Trace& t
                        integer(static_cast<std::int64_t>(plan.order.size() - skipped)),
                        integer(static_cast<std::int64_t>(skipped))),
            TextStyle::title);
-    w.line(fmt::format("{} pixel writes, {} of them over a farther triangle", integer(info.pixels),
-                       integer(info.overwrites)),
-           TextStyle::body, palette::kMutedText);
-    w.gap(24);
-    w.line("Recap", TextStyle::heading);
-    w.gap(4);
-    w.paragraph("-   depth(T) = mean of its vertex depths; draw the largest depth first.");
-    w.gap(4);
-    w.paragraph("-   Each triangle is filled with the edge-table scanline fill.");
-    w.gap(4);
-    w.paragraph("-   What is nearer is drawn later, so it ends up on top.");
+    if (uses_zbuffer(trace.header()))
+      w.line(fmt::format("{} pixels passed the depth test and were written, {} were rejected",
+                         integer(info.pixels), integer(info.rejected)),
+             TextStyle::body, palette::kMutedText);
+    else
+      w.line(fmt::format("{} pixel writes, {} of them over a farther triangle",
+                         integer(info.pixels), integer(info.overwrites)),
+             TextStyle::body, palette::kMutedText);
   } else {
     for (int t : plan.order) {
       if (const auto end = trace.triangle_end(t))
@@ -164,20 +224,12 @@ void draw_end_card(cv::Mat& frame, const Typography& type, const trace::Trace& t
                TextStyle::body);
       if (w.y() > w.bottom() / 2) break;
     }
-    w.gap(24);
-    w.line("Recap", TextStyle::heading);
+  }
+  w.gap(24);
+  w.line("Recap", TextStyle::heading);
+  for (const std::string& line : recap_lines(trace, plan)) {
     w.gap(4);
-    w.paragraph(
-        "-   Edge table: each non-horizontal edge with y_min, y_max, its x at y_min and "
-        "dx/dy, sorted by y_min.");
-    w.gap(4);
-    w.paragraph(
-        "-   Each row: add the edges that start, drop those that ended; the active "
-        "points are where the active edges cross the row.");
-    w.gap(4);
-    w.paragraph("-   Fill from ceil(x_L) to ceil(x_R) - 1, then x += dx/dy for the next row.");
-    w.gap(4);
-    w.paragraph("-   Gouraud: colours interpolated along the edges, then along the row.");
+    w.paragraph(line);
   }
   w.gap(12);
   trace_warnings(w, trace);

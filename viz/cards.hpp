@@ -1,6 +1,7 @@
 #pragma once
 // The title and end cards: what the video shows, and a recap once it has shown it.
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -15,7 +16,16 @@ struct CardInfo {
   int rows_per_step = 1;    // scanline grouping, mentioned when > 1
   std::int64_t pixels = 0;  // written in all (end card)
   std::int64_t overwrites = 0;
+  std::int64_t rejected = 0;  // z-buffer: pixels the depth test rejected
 };
+
+// The visibility rule the trace's render used, as the cards and frames name it:
+// "z-buffer (a depth test per pixel)" or "painter's algorithm (far to near)".
+std::string visibility_rule(const trace::Header& header);
+bool uses_zbuffer(const trace::Header& header);
+
+// The lines of the end card's recap (what the video has shown), for the trace's visibility rule.
+std::vector<std::string> recap_lines(const trace::Trace& trace, const StepPlan& plan);
 
 // Where a card shows its picture (the triangle or the scene), right of its text.
 cv::Rect card_picture_area(cv::Size frame, const Typography& type);

@@ -72,8 +72,14 @@ std::optional<ViewGeometry> FrameComposer::geometry(const Step& step) const {
   const double max_cell = layout_.view.height / 8.0;
   switch (step.kind) {
     case StepKind::title:
-    case StepKind::end:
-      return std::nullopt;
+    case StepKind::end: {
+      // The cards' picture: the one triangle of a single-triangle replay, else the canvas.
+      const cv::Rect area = card_picture_area(size_, type_);
+      const bool one = plan_.mode == ReplayMode::triangles && plan_.order.size() == 1;
+      return ViewGeometry(area,
+                          one ? triangle_region(trace_, plan_.order.front()) : whole_canvas(trace_),
+                          area.height / 8.0);
+    }
     case StepKind::painter_batch:
     case StepKind::scene_done:
       return ViewGeometry(layout_.view, whole_canvas(trace_), max_cell);
@@ -91,7 +97,8 @@ void FrameComposer::title_bar(cv::Mat& frame, const Step& step, std::size_t inde
   const trace::Header& h = trace_.header();
   const std::string context =
       plan_.mode == ReplayMode::scene
-          ? fmt::format("painter's algorithm, {} triangles   |   {} shading, {} rule",
+          ? fmt::format("{}, {} triangles   |   {} shading, {} rule",
+                        uses_zbuffer(h) ? "z-buffer" : "painter's algorithm",
                         integer(static_cast<std::int64_t>(plan_.order.size())), h.shading,
                         h.fill_rule)
       : h.winding_rule ? fmt::format("polygon {}   |   {} shading, {} rule, {} winding",
@@ -161,11 +168,13 @@ void FrameComposer::scene_frame(cv::Mat& frame, const Step& step, const CanvasSt
 void FrameComposer::card_picture(cv::Mat& frame, const Step& step, const CanvasState& state) const {
   const cv::Rect area = card_picture_area(size_, type_);
   const bool one = plan_.mode == ReplayMode::triangles && plan_.order.size() == 1;
-  const ViewGeometry g(area,
-                       one ? triangle_region(trace_, plan_.order.front()) : whole_canvas(trace_),
-                       area.height / 8.0);
+  const ViewGeometry g = *geometry(step);
   GridView view(frame, g, type_, canvas_);
-  view.cells(state);
+  // The end card shows the finished image as rendered: unwritten pixels in the background colour.
+  if (step.kind == StepKind::end)
+    view.cells(state, trace_.header().background);
+  else
+    view.cells(state);
   view.grid();
   // Outlines on the title card say what is coming; the end card shows the result as it is. Past
   // a few thousand triangles outlines are only noise.
@@ -182,7 +191,7 @@ void FrameComposer::card_picture(cv::Mat& frame, const Step& step, const CanvasS
 cv::Mat FrameComposer::compose(const Step& step, std::size_t index,
                                const CanvasState& state) const {
   cv::Mat frame(size_, CV_8UC3, palette::kFrame);
-  CardInfo info{source_, plan_.rows_per_step, state.writes(), state.overwrites()};
+  CardInfo info{source_, plan_.rows_per_step, state.writes(), state.overwrites(), state.rejected()};
   switch (step.kind) {
     case StepKind::title:
       draw_title_card(frame, type_, trace_, plan_, info);

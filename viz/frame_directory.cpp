@@ -43,8 +43,8 @@ std::string FrameDirectory::file_name(std::size_t number) {
   return buf;
 }
 
-FrameDirectory::FrameDirectory(std::filesystem::path dir, cv::Size size)
-    : dir_(std::move(dir)), size_(size) {
+FrameDirectory::FrameDirectory(std::filesystem::path dir, cv::Size size, std::size_t first_number)
+    : dir_(std::move(dir)), size_(size), first_number_(first_number) {
   // "out/" names the directory "out".
   if (!dir_.has_filename()) dir_ = dir_.parent_path();
   if (dir_.empty()) throw std::runtime_error("frame directory: empty path");
@@ -68,7 +68,7 @@ void FrameDirectory::write(const cv::Mat& frame, int /*repeat*/) {
   if (!cv::imencode(".png", frame, png))
     throw std::runtime_error(dir_.string() + ": cannot encode frame " +
                              std::to_string(frames_ + 1) + " as PNG");
-  const std::filesystem::path file = temp_ / file_name(frames_ + 1);
+  const std::filesystem::path file = temp_ / file_name(first_number_ + frames_);
   std::ofstream out(file, std::ios::binary);
   out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
   out.close();

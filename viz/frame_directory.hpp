@@ -11,7 +11,9 @@ class FrameDirectory : public FrameSink {
  public:
   // Writes into a temporary sibling directory of `dir`. Throws std::runtime_error naming `dir`
   // when it exists and holds anything but frames of an earlier replay (which it replaces).
-  FrameDirectory(std::filesystem::path dir, cv::Size size);
+  // Frames are numbered from `first_number`: the step number, so that `--steps 5:12` writes
+  // frame_00005.png … frame_00012.png, as the steps are numbered on the frames themselves.
+  FrameDirectory(std::filesystem::path dir, cv::Size size, std::size_t first_number = 1);
   ~FrameDirectory() override;
 
   void write(const cv::Mat& frame, int repeat) override;
@@ -25,6 +27,7 @@ class FrameDirectory : public FrameSink {
  private:
   std::filesystem::path dir_, temp_;
   cv::Size size_;
+  std::size_t first_number_ = 1;
   std::size_t frames_ = 0;
   bool committed_ = false;
 };

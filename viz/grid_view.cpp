@@ -42,11 +42,16 @@ cv::Point GridView::inside(cv::Point p, cv::Size s) const {
   return p;
 }
 
-void GridView::cells(const CanvasState& state) {
+void GridView::cells(const CanvasState& state, std::optional<Color> background) {
   const cv::Rect& v = geometry_.view();
   std::vector<std::int64_t> columns(v.width);
   for (int u = 0; u < v.width; ++u) columns[u] = geometry_.pixel_x(v.x + u);
-  const cv::Vec3b empty(palette::kEmptyCell[0], palette::kEmptyCell[1], palette::kEmptyCell[2]);
+  const cv::Scalar bg = background ? to_scalar(*background) : cv::Scalar{};
+  const cv::Vec3b empty =
+      background
+          ? cv::Vec3b(static_cast<std::uint8_t>(bg[0]), static_cast<std::uint8_t>(bg[1]),
+                      static_cast<std::uint8_t>(bg[2]))
+          : cv::Vec3b(palette::kEmptyCell[0], palette::kEmptyCell[1], palette::kEmptyCell[2]);
   const cv::Vec3b outside(palette::kOutsideCanvas[0], palette::kOutsideCanvas[1],
                           palette::kOutsideCanvas[2]);
   for (int r = 0; r < v.height; ++r) {

@@ -24,7 +24,9 @@ class GridView {
 
   bool grid_visible() const { return geometry_.cell() >= kMinGridCell; }
 
-  void cells(const CanvasState& state);
+  // The written pixels in their colours; unwritten ones as empty cells, or in `background` (the
+  // finished image as rendered).
+  void cells(const CanvasState& state, std::optional<Color> background = std::nullopt);
   void grid();
   void outline(std::span<const Vec2> polygon, const cv::Scalar& colour, double design_thickness);
   // Every closed contour of the polygon (one for a triangle).

@@ -28,6 +28,8 @@ inline const cv::Scalar kScanline{0, 215, 255};  // amber
 inline const cv::Scalar kSpan{255, 255, 255};    // drawn on a black halo
 inline const cv::Scalar kCurrentTriangle{0, 215, 255};
 inline const cv::Scalar kBatchOutline{60, 60, 60};
+// A pixel the z-buffer's depth test rejected (crossed out in the cell).
+inline const cv::Scalar kRejected{0, 0, 200};
 inline const cv::Scalar kLabelBox{255, 255, 255};
 
 // Edge ids keep their colour in every view and table: 0 orange, 1 magenta, 2 azure, then more for

@@ -105,7 +105,7 @@ ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
   if (result.kind == OutputKind::video)
     sink = std::make_unique<VideoFile>(out, options.size, options.fps);
   else
-    sink = std::make_unique<FrameDirectory>(out, options.size);
+    sink = std::make_unique<FrameDirectory>(out, options.size, first + 1);
   for (std::size_t i = first; i <= last; ++i) {
     check_interrupt();  // a long video: Ctrl-C stops here and the sink removes its temporary
     const int repeat = frames_for(replayer.steps()[i], options.fps, options.hold);

@@ -48,14 +48,20 @@ Replayer::Replayer(const trace::Trace& trace, const StepOptions& options, cv::Si
       plan_(plan_steps(trace, options)),
       size_(checked(frame)),
       composer_(trace, plan_, size_, std::move(source)),
-      state_(state_window(trace, plan_, composer_)) {}
+      state_(state_window(trace, plan_, composer_), trace) {}
 
 std::optional<ViewGeometry> Replayer::geometry(std::size_t index) const {
   return composer_.geometry(plan_.steps.at(index));
 }
 
 void Replayer::apply(const Step& step) {
+  state_.forget_recent();  // the rejections a frame marks are those of its own step
   switch (step.kind) {
+    case StepKind::triangle_done:
+      // A triangle-level trace has no scanline steps: the finished triangle is its first
+      // picture (filled again from the trace, CanvasState).
+      if (trace_.header().level == "triangle") state_.paint_triangle(trace_, step.triangle);
+      break;
     case StepKind::scanlines:
       state_.paint_rows(trace_, step.triangle, step.first_row, step.last_row);
       break;

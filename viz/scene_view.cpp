@@ -1,11 +1,13 @@
 #include "viz/scene_view.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <spdlog/fmt/fmt.h>
 #include <opencv2/imgproc.hpp>
 
+#include "viz/cards.hpp"
 #include "viz/grid_view.hpp"
 #include "viz/palette.hpp"
 #include "viz/panel_writer.hpp"
@@ -72,13 +74,18 @@ void draw_scene_view(cv::Mat& frame, const ViewGeometry& geometry, const Typogra
   GridView view(frame, geometry, type, canvas);
   view.cells(state);
   view.grid();
-  // A triangle-level trace holds no pixels: the triangles drawn so far are shown by their
-  // outlines instead, so the picture still builds up far to near.
-  const std::size_t drawn = step.kind == StepKind::painter_batch ? step.first : plan.order.size();
-  if (trace.header().level == "triangle")
-    for (std::size_t i = 0; i < drawn; ++i)
-      if (const trace::TriangleBegin* b = find_begin(trace, plan.order[i]))
-        view.outline(polygon_of(*b), palette::kMutedText, 1);
+  // Z-buffer: the pixels this step's triangles did not write because something nearer was already
+  // there, crossed out (when cells are big enough to hold a mark).
+  if (state.depth_test() && geometry.cell() >= 5) {
+    const int r = std::max(1, static_cast<int>(geometry.cell() * 0.3));
+    for (const cv::Point& p : state.recent_rejections()) {
+      const cv::Point2d c = geometry.to_frame(p.x, p.y);
+      const cv::Point q(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)));
+      if (!geometry.view().contains(q)) continue;
+      cv::line(frame, q + cv::Point(-r, -r), q + cv::Point(r, r), palette::kRejected, 1);
+      cv::line(frame, q + cv::Point(-r, r), q + cv::Point(r, -r), palette::kRejected, 1);
+    }
+  }
   if (step.kind != StepKind::painter_batch) return;
   for (std::size_t i = step.first; i <= step.last && i < plan.order.size(); ++i)
     if (const trace::TriangleBegin* b = find_begin(trace, plan.order[i]);
@@ -100,31 +107,42 @@ void draw_scene_panel(cv::Mat& frame, const cv::Rect& area, const Typography& ty
                       const Step& step, const CanvasState& state) {
   PanelWriter w(frame, area, type);
   const std::size_t n = plan.order.size();
+  const bool zbuffer = uses_zbuffer(trace.header());
+  const char* order = zbuffer ? "scene order" : "drawing order";
   if (step.kind == StepKind::scene_done) {
     w.heading("The finished image");
     w.paragraph(fmt::format("{} triangles drawn, {} skipped.",
                             integer(static_cast<std::int64_t>(n - scene.skipped)),
                             integer(static_cast<std::int64_t>(scene.skipped))));
   } else {
-    w.heading("Painter's algorithm: far to near");
+    w.heading(zbuffer ? "Z-buffer: a depth test per pixel" : "Painter's algorithm: far to near");
     const auto count = [](std::size_t v) { return integer(static_cast<std::int64_t>(v)); };
+    // Positions in the order drawn, 1-based; the table below lists the faces by their index.
     w.line(step.first == step.last
-               ? fmt::format("Triangle {} of {} in drawing order", count(step.first + 1), count(n))
-               : fmt::format("Triangles {} .. {} of {} in drawing order", count(step.first + 1),
-                             count(step.last + 1), count(n)),
+               ? fmt::format("Drawn: number {} of {} in {}", count(step.first + 1), count(n), order)
+               : fmt::format("Drawn: numbers {} .. {} of {} in {}", count(step.first + 1),
+                             count(step.last + 1), count(n), order),
            TextStyle::strong);
   }
   w.gap(6);
-  w.paragraph(
-      "A triangle's depth is the mean of its three vertex depths. The largest depth (farthest) "
-      "is drawn first; nearer triangles come later and paint over what lies behind them. Equal "
-      "depths keep the order of the faces.");
-  w.gap(8);
-  const std::optional<double> current =
-      step.kind == StepKind::painter_batch && step.last < scene.depth.size()
-          ? scene.depth[step.last]
-          : scene.min_depth;
-  depth_bar(w, type, scene, current);
+  if (zbuffer) {
+    w.paragraph(
+        "The triangles are drawn in the order of the scene. At every pixel a triangle covers, "
+        "its depth there (the plane through its snapped vertices and their depths) is compared "
+        "with the depth stored for that pixel: if nearer (smaller), the pixel is written and its "
+        "depth stored; otherwise it is rejected (x). Equal depths keep the first triangle.");
+  } else {
+    w.paragraph(
+        "A triangle's depth is the mean of its three vertex depths. The largest depth (farthest) "
+        "is drawn first; nearer triangles come later and paint over what lies behind them. Equal "
+        "depths keep the order of the faces.");
+    w.gap(8);
+    const std::optional<double> current =
+        step.kind == StepKind::painter_batch && step.last < scene.depth.size()
+            ? scene.depth[step.last]
+            : scene.min_depth;
+    depth_bar(w, type, scene, current);
+  }
   w.gap(8);
 
   if (step.kind == StepKind::painter_batch) {
@@ -167,19 +185,28 @@ void draw_scene_panel(cv::Mat& frame, const cv::Rect& area, const Typography& ty
     w.table({{"face"}, {"depth"}, {"rows"}, {"pixels"}}, rows);
     w.gap(8);
   }
-  if (trace.header().level == "triangle") {
+  if (trace.header().level == "triangle")
     w.paragraph(
-        "This trace holds no scanlines (level triangle), so the triangles are shown by "
-        "their outlines; trace at level scanline to see their pixels.",
-        TextStyle::body, palette::kMutedText);
+        "This trace holds no scanlines (level triangle): the pixels shown are filled again "
+        "from each triangle's recorded vertices and colours by the same fill.",
+        TextStyle::small, palette::kMutedText);
+  if (zbuffer) {
+    w.line(fmt::format("Pixels written (depth test passed): {}", integer(state.writes())),
+           TextStyle::body);
+    w.line(fmt::format("Pixels rejected (something nearer there): {}", integer(state.rejected())),
+           TextStyle::body);
+    w.gap(8);
+    w.formula({"depth(x, y) = d0 + a (x - x0) + b (y - y0)",
+               "write if depth(x, y) < stored(x, y), then stored(x, y) = depth(x, y)",
+               "triangles in scene order, no sort"});
   } else {
     w.line(fmt::format("Pixels written so far: {}", integer(state.writes())), TextStyle::body);
     w.line(fmt::format("of them over a farther triangle's pixel: {}", integer(state.overwrites())),
            TextStyle::body);
+    w.gap(8);
+    w.formula({"depth(T) = (z0 + z1 + z2) / 3", "draw in order of decreasing depth (stable sort)",
+               "each triangle: the edge-table scanline fill"});
   }
-  w.gap(8);
-  w.formula({"depth(T) = (z0 + z1 + z2) / 3", "draw in order of decreasing depth (stable sort)",
-             "each triangle: the edge-table scanline fill"});
 }
 
 }  // namespace scantrace::viz

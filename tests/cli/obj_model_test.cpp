@@ -209,10 +209,13 @@ TEST_CASE("model flags: seeds, perspective, gamma and their errors", "[obj]") {
     args.insert(args.begin(), {"render", "cube.obj"});
     return run_scantrace(dir.path(), args);
   };
-  // --colors random: a seed names the picture.
-  REQUIRE(render({"--colors", "random", "--unlit", "--seed", "3", "-o", "a.png"}).exit_code == 0);
-  REQUIRE(render({"--colors", "random", "--unlit", "--seed", "3", "-o", "b.png"}).exit_code == 0);
-  REQUIRE(render({"--colors", "random", "--unlit", "--seed", "4", "-o", "c.png"}).exit_code == 0);
+  // --model-colors random: a seed names the picture.
+  REQUIRE(render({"--model-colors", "random", "--unlit", "--seed", "3", "-o", "a.png"}).exit_code ==
+          0);
+  REQUIRE(render({"--model-colors", "random", "--unlit", "--seed", "3", "-o", "b.png"}).exit_code ==
+          0);
+  REQUIRE(render({"--model-colors", "random", "--unlit", "--seed", "4", "-o", "c.png"}).exit_code ==
+          0);
   CHECK(test::read_text(dir / "a.png") == test::read_text(dir / "b.png"));
   CHECK(test::read_text(dir / "a.png") != test::read_text(dir / "c.png"));
 

@@ -32,8 +32,13 @@ inline std::string format_color(scantrace::Color c) {
   return buf;
 }
 
+// The canvas stores float32: a colour in [0, 1] is rounded by at most 2^-24 when stored, on top of
+// whatever error the fill made. `tol` is the fill's error allowed beyond that rounding.
+inline constexpr double kFloatStorage = 0x1p-24;
+
 inline bool near(scantrace::Rgb32f p, scantrace::Color c, double tol) {
-  return std::fabs(p.r - c.r) <= tol && std::fabs(p.g - c.g) <= tol && std::fabs(p.b - c.b) <= tol;
+  const double t = tol + kFloatStorage;
+  return std::fabs(p.r - c.r) <= t && std::fabs(p.g - c.g) <= t && std::fabs(p.b - c.b) <= t;
 }
 
 // "" when `img` is written exactly where `ref` covers and every written pixel is within `tol` of

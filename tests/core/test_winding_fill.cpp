@@ -74,7 +74,7 @@ std::string describe(const Contours& c) {
   return s;
 }
 
-// Fills and compares with the reference: coverage exactly, colours within 1e-4 (Gouraud) or the
+// Fills and compares with the reference: coverage exactly, colours within 1e-9 (Gouraud) or the
 // mean (flat), and the pixel count reported.
 std::string compare(const Contours& contours, const std::vector<Color>& colors, WindingRule rule,
                     Shading shading, int bits = 8) {
@@ -90,7 +90,7 @@ std::string compare(const Contours& contours, const std::vector<Color>& colors, 
   const bool gouraud = shading == Shading::gouraud;
   std::string diff = sttest::first_difference(
       img, ref, [&](int x, int y) { return gouraud ? ref.color_at(x, y) : flat; },
-      gouraud ? 1e-4 : 1e-6);
+      1e-9);  // exact method: ~1e-12 before the float store
   if (diff.empty() && res.pixels != ref.count) {
     // Built by appending: GCC 12 raises a false -Wrestrict alarm on "literal" + std::string&&.
     diff = "fill reports ";

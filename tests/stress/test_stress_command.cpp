@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -104,8 +105,23 @@ TEST_CASE("the method flag selects the fill method of trace and render", "[stres
   const std::string out = (std::filesystem::temp_directory_path() /
                            ("scantrace-stress-method-" + std::to_string(::getpid()) + ".jsonl"))
                               .string();
-  CHECK(scantrace("trace --triangle \"0,0 40,3 7,30\" --size 48x48 --method float -o " + out)
-            .status == 0);
+  const auto slurp = [](const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+  };
+  // Not only accepted: the float method's x += dx/dy in float32 gives other active-edge x values
+  // than the exact method, so its trace differs — while two exact traces are byte-identical.
+  const std::string tri = "trace --triangle \"0,0 40,3 7,30\" --size 48x48 ";
+  REQUIRE(scantrace(tri + "--method float -o " + out).status == 0);
+  const std::string float_trace = slurp(out);
+  REQUIRE(scantrace(tri + "--method exact -o " + out).status == 0);
+  const std::string exact_trace = slurp(out);
+  REQUIRE(scantrace(tri + "-o " + out).status == 0);
+  CHECK(slurp(out) == exact_trace);
+  CHECK(!float_trace.empty());
+  CHECK(float_trace != exact_trace);
   std::remove(out.c_str());
   CHECK(scantrace("trace --triangle \"0,0 40,3 7,30\" --method fast -o " + out).status == 2);
   CHECK(scantrace("render --help").out.find("--method") != std::string::npos);

@@ -91,8 +91,9 @@ TEST_CASE("a step range writes only those steps", "[viz][video]") {
   CHECK(r.kind == viz::OutputKind::frames);
   CHECK(r.steps == 4);
   const auto names = test::file_names(dir / "frames");
-  CHECK(names == std::vector<std::string>{"frame_00001.png", "frame_00002.png", "frame_00003.png",
-                                          "frame_00004.png"});
+  // Numbered as the steps are (the frames say "step 6 of 17"), not from 1 (issue 20).
+  CHECK(names == std::vector<std::string>{"frame_00006.png", "frame_00007.png", "frame_00008.png",
+                                          "frame_00009.png"});
   o.steps = viz::StepRange::parse("90:");
   CHECK_THROWS_WITH(viz::replay(t, dir / "more/", o), Catch::Contains("has 17 steps"));
 }

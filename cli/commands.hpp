@@ -23,5 +23,6 @@ Command add_replay_command(CLI::App& app);
 Command add_explain_command(CLI::App& app);
 Command add_stress_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
+Command add_step_command(CLI::App& app);
 
 }  // namespace scantrace::cli

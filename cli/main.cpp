@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
       scantrace::cli::add_demo_command(app),    scantrace::cli::add_render_command(app),
       scantrace::cli::add_trace_command(app),   scantrace::cli::add_replay_command(app),
       scantrace::cli::add_explain_command(app), scantrace::cli::add_stress_command(app),
-      scantrace::cli::add_bench_command(app)};
+      scantrace::cli::add_bench_command(app),   scantrace::cli::add_step_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,7 +1,5 @@
 // scantrace replay TRACE.jsonl -o OUT.mp4|OUT_DIR/ [replay options] [--partial]
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include <spdlog/spdlog.h>
@@ -9,6 +7,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/replay_flags.hpp"
+#include "cli/trace_file.hpp"
 #include "trace/trace.hpp"
 
 namespace scantrace::cli {
@@ -19,37 +18,6 @@ struct ReplayArgs {
   bool partial = false;
   ReplayFlags replay;
 };
-
-// A trace without its footer was cut short. By default that is an error — a video of half a fill
-// that looks complete would mislead; with --partial the complete lines are replayed (an unfinished
-// last line is dropped) and a warning says so.
-trace::Trace load_trace(const std::string& file, bool partial) {
-  if (!partial) {
-    trace::Trace t = trace::Trace::load(file);
-    if (!t.complete())
-      throw trace::TraceError(file +
-                              ": the trace has no footer, so it is incomplete (an interrupted "
-                              "writer or a truncated file): " +
-                              t.progress() + "; --partial replays them");
-    return t;
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw trace::TraceError(file + ": cannot open trace");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  std::string text = bytes.str();
-  if (!text.empty() && text.back() != '\n') {
-    const std::size_t last = text.rfind('\n');
-    text.erase(last == std::string::npos ? 0 : last + 1);
-    spdlog::warn("warning: {}: dropped an unfinished last line", file);
-  }
-  std::istringstream lines(text);
-  trace::Trace t = trace::Trace::parse(lines, file);
-  if (!t.complete())
-    spdlog::warn("warning: {}: the trace has no footer (cut short): {}; replaying them", file,
-                 t.progress());
-  return t;
-}
 
 void run(const ReplayArgs& args) {
   const trace::Trace t = load_trace(args.trace, args.partial);

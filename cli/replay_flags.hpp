@@ -1,7 +1,7 @@
 #pragma once
 // The options of a replay, shared by `replay` and `explain` so they are spelled and explained the
 // same in both:
-//   -o OUT.mp4|OUT_DIR/ [--fps N] [--hold SECONDS] [--size WxH] [--steps A:B]
+//   -o OUT.mp4|OUT_DIR/|OUT.html [--fps N] [--hold SECONDS] [--size WxH] [--steps A:B]
 //   [--rows-per-step N] [--mode auto|triangles|scene]
 // `explain` already has --size (the canvas of --triangle), so there the video size is only
 // --video-size; `replay` accepts both spellings.

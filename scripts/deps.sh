@@ -7,7 +7,10 @@ set -euo pipefail
 # clang-14 and libfuzzer-14-dev build the fuzz targets (scripts/fuzz.sh, run by .ci/run).
 packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 libcli11-dev
           libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev clang-14 libfuzzer-14-dev
-          ccache)
+          ccache
+          # Stepping through replays (issue 14): Qt's headers for the window's focus fix, and for
+          # the tests a virtual display, xdotool, headless chromium and numpy.
+          qtbase5-dev xvfb xdotool chromium python3-numpy)
 
 if ! command -v dpkg >/dev/null 2>&1; then
   echo "deps.sh: dpkg not found (not Debian/Ubuntu?); install these yourself: ${packages[*]}" >&2

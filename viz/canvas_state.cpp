@@ -11,6 +11,13 @@ CanvasState::CanvasState(cv::Rect window)
       image_(std::max(window.height, 1), std::max(window.width, 1), CV_8UC3, cv::Scalar::all(0)),
       mask_(std::max(window.height, 1), std::max(window.width, 1), CV_8UC1, cv::Scalar::all(0)) {}
 
+CanvasState CanvasState::clone() const {
+  CanvasState c = *this;
+  c.image_ = image_.clone();
+  c.mask_ = mask_.clone();
+  return c;
+}
+
 bool CanvasState::written(std::int64_t x, std::int64_t y) const {
   if (x < window_.x || y < window_.y || x >= window_.x + window_.width ||
       y >= window_.y + window_.height)

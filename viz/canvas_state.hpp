@@ -15,6 +15,8 @@ class CanvasState {
  public:
   // Keeps the canvas pixels inside `window` (canvas coordinates, already clipped to the canvas).
   explicit CanvasState(cv::Rect window);
+  // A deep copy (copying a CanvasState shares its pixels, as cv::Mat does).
+  CanvasState clone() const;
 
   // Writes the rows first_row..last_row of `triangle` (those the trace holds).
   void paint_rows(const trace::Trace& trace, int triangle, std::int64_t first_row,

@@ -44,13 +44,13 @@ std::string_view html_player_page() {
   <div id="main">
     <img id="frame" alt="the frame of the current step">
     <div id="controls">
-      <button id="first" title="first step (Home)">&#x23EE;</button>
+      <button id="first" title="first step (Home)">|&#x25C0;</button>
       <button id="back10" title="10 steps back (PgUp)">&#x2212;10</button>
       <button id="prev" title="previous step (&#x2190;, p)">&#x25C0;</button>
       <button id="play" title="play / pause (a)">play</button>
       <button id="next" title="next step (&#x2192;, space, n)">&#x25B6;</button>
       <button id="fwd10" title="10 steps on (PgDn)">+10</button>
-      <button id="last" title="last step (End)">&#x23ED;</button>
+      <button id="last" title="last step (End)">&#x25B6;|</button>
       <input id="slider" type="range" min="1" max="1" value="1" aria-label="step">
       <span id="counter"></span>
     </div>

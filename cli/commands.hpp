@@ -33,5 +33,6 @@ struct ExitStatus {
   int status = 0;
 };
 inline constexpr int kExitImagesDiffer = 3;
+Command add_step_command(CLI::App& app);
 
 }  // namespace scantrace::cli

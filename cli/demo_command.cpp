@@ -108,6 +108,22 @@ void explain_demo_triangle(const std::filesystem::path& trace_file,
       options.size.width, options.size.height, r.frames, clock.ms() / 1000);
 }
 
+// The same trace as a page to step through in any browser, next to the video.
+void page_demo_triangle(const std::filesystem::path& trace_file,
+                        const std::filesystem::path& page) {
+  const trace::Trace t = trace::Trace::load(trace_file);
+  viz::ReplayOptions options;
+  options.source = trace_file.string();
+  std::unique_ptr<viz::Progress> progress;
+  if (spdlog::should_log(spdlog::level::info))
+    progress = std::make_unique<viz::StderrProgress>(page.string(), "frames");
+  const viz::ReplayResult r = viz::replay(t, page, options, progress.get());
+  spdlog::info(
+      "wrote {}: the same steps as a self-contained page ({} steps, {:.1f} MB): open it in a "
+      "browser and step with the arrow keys",
+      page.string(), r.steps, r.bytes / 1e6);
+}
+
 void run_demo(const DemoArgs& args) {
   const std::filesystem::path dir = args.dir;
   make_output_directory(dir);
@@ -117,6 +133,7 @@ void run_demo(const DemoArgs& args) {
   render_model(dir / "demo_model.png");
   trace_demo_triangle(dir / "triangle_gouraud.png", dir / "triangle.jsonl");
   explain_demo_triangle(dir / "triangle.jsonl", dir / "triangle.mp4");
+  page_demo_triangle(dir / "triangle.jsonl", dir / "triangle.html");
   const std::filesystem::path scene_file = dir / "demo_scene.json";
   save_scene(scene, scene_file);
   spdlog::info(
@@ -135,14 +152,16 @@ Command add_demo_command(CLI::App& app) {
                                      "a sun of thin triangles, three overlapping triangles at\n"
                                      "different depths) flat and Gouraud, fills the course's\n"
                                      "example triangle, traces it and turns the trace into an\n"
-                                     "explanatory video, and saves the scene as a scene file.");
+                                     "explanatory video and page, and saves the scene as a\n"
+                                     "scene file.");
   cmd->add_option("-o,--output", args->dir, "directory to write into (created if missing)")
       ->capture_default_str();
   cmd->footer(
       "Writes DIR/demo_flat.png, DIR/demo_gouraud.png, DIR/demo_model.png (a lit,\n"
       "Gouraud-shaded torus), DIR/triangle_gouraud.png\n"
       "(512x512 each), DIR/triangle.jsonl (its trace), DIR/triangle.mp4 (the video\n"
-      "of that trace, 1280x720, under a minute) and DIR/demo_scene.json.");
+      "of that trace, 1280x720, under a minute), DIR/triangle.html (the same\n"
+      "steps as a page to step through in a browser) and DIR/demo_scene.json.");
   return {cmd, [args] { run_demo(*args); }};
 }
 

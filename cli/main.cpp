@@ -57,7 +57,8 @@ int main(int argc, char** argv) {
       scantrace::cli::add_trace_command(app),   scantrace::cli::add_replay_command(app),
       scantrace::cli::add_explain_command(app), scantrace::cli::add_stress_command(app),
       scantrace::cli::add_bench_command(app),   scantrace::cli::add_check_command(app),
-      scantrace::cli::add_why_command(app),     scantrace::cli::add_diff_command(app)};
+      scantrace::cli::add_why_command(app),     scantrace::cli::add_diff_command(app),
+      scantrace::cli::add_step_command(app)};
   // --quiet belongs to the main command but works after any subcommand: say so in their help.
   for (const auto& command : commands)
     command.app->footer(command.app->get_footer() +

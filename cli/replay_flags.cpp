@@ -50,10 +50,14 @@ void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) 
   command
       .add_option("-o,--output", flags.output,
                   "OUT.mp4: an H.264 video (MPEG-4 where H.264 is missing)\n"
-                  "OUT_DIR/: numbered PNG frames, one per step")
+                  "OUT_DIR/: numbered PNG frames, one per step\n"
+                  "OUT.html: one self-contained page to step through\n"
+                  "(slider, keys, play; OUT.html#step=N links to step N)")
       ->required()
       ->check(parsed_by([](const std::string& v) { viz::output_kind(v); }));
-  command.add_option("--fps", flags.fps, "video frames per second")
+  command
+      .add_option("--fps", flags.fps,
+                  "video frames per second (an HTML page plays\nsteps at this rate)")
       ->check(CLI::Range(0.1, 240.0))
       ->capture_default_str();
   command
@@ -106,7 +110,13 @@ void run_replay(const trace::Trace& trace, const ReplayFlags& flags, const std::
   const std::string steps = r.steps == r.steps_total ? std::to_string(r.steps) + " steps"
                                                      : std::to_string(r.steps) + " of " +
                                                            std::to_string(r.steps_total) + " steps";
-  if (r.kind == viz::OutputKind::video)
+  if (r.kind == viz::OutputKind::html)
+    spdlog::info(
+        "wrote {}: {} ({}), a self-contained page of {}x{} lossless {} frames, {:.1f} MB, in "
+        "{:.1f} s; open it in a browser (#step=N links to step N)",
+        flags.output, steps, viz::to_string(r.mode), options.size.width, options.size.height,
+        r.format == "webp" ? "WebP" : r.format, r.bytes / 1e6, clock.ms() / 1000);
+  else if (r.kind == viz::OutputKind::video)
     spdlog::info("wrote {}: {} ({}), {} {}x{}, {} frames at {} fps = {:.1f} s, in {:.1f} s",
                  flags.output, steps, viz::to_string(r.mode),
                  r.format == "h264" ? "H.264" : "MPEG-4", options.size.width, options.size.height,

@@ -1,7 +1,7 @@
 #pragma once
 // The options of a replay, shared by `replay` and `explain` so they are spelled and explained the
 // same in both:
-//   -o OUT.mp4|OUT_DIR/ [--fps N] [--hold SECONDS] [--video-size WxH] [--steps A:B]
+//   -o OUT.mp4|OUT_DIR/|OUT.html [--fps N] [--hold SECONDS] [--video-size WxH] [--steps A:B]
 //   [--rows-per-step N] [--mode auto|triangles|scene]
 // --size means the canvas everywhere (cli/canvas_size.hpp); `replay`, which has no canvas,
 // still accepts its old --size for the frame as a deprecated alias (`size_is_free`).

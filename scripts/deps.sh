@@ -19,6 +19,9 @@ packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 l
           ccache
           pybind11-dev python3-dev python3-numpy python3-pytest)
 packages+=(pkg-config libmatio-dev)
+# Stepping through replays: Qt's headers for the window's focus fix (cli/highgui_focus.hpp), and
+# for the tests a virtual display, xdotool and headless chromium.
+packages+=(qtbase5-dev xvfb xdotool chromium)
 
 if [ "${1:-}" = "--demo" ]; then
   packages=("${demo_packages[@]}")

@@ -63,6 +63,14 @@ bool CanvasState::inside(std::int64_t x, std::int64_t y) const {
          y < window_.y + window_.height;
 }
 
+CanvasState CanvasState::clone() const {
+  CanvasState c = *this;
+  c.image_ = image_.clone();
+  c.mask_ = mask_.clone();
+  c.depth_ = depth_.clone();
+  return c;
+}
+
 bool CanvasState::written(std::int64_t x, std::int64_t y) const {
   if (!inside(x, y)) return false;
   return mask_.at<std::uint8_t>(static_cast<int>(y - window_.y), static_cast<int>(x - window_.x)) !=

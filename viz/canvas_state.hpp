@@ -28,6 +28,8 @@ class CanvasState {
   explicit CanvasState(cv::Rect window, bool depth_test = false);
   // The window, and the visibility of `trace`'s header.
   CanvasState(cv::Rect window, const trace::Trace& trace);
+  // A deep copy (copying a CanvasState shares its pixels, as cv::Mat does).
+  CanvasState clone() const;
 
   // Writes the rows first_row..last_row of `triangle` (those the trace holds).
   void paint_rows(const trace::Trace& trace, int triangle, std::int64_t first_row,

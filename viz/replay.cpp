@@ -9,6 +9,7 @@
 
 #include "io/interrupt.hpp"
 #include "viz/frame_directory.hpp"
+#include "viz/html_player.hpp"
 #include "viz/replayer.hpp"
 #include "viz/video_writer.hpp"
 
@@ -66,9 +67,10 @@ OutputKind output_kind(const std::filesystem::path& out) {
   if (std::filesystem::is_directory(out, ec)) return OutputKind::frames;
   const std::string ext = out.extension().string();
   if (ext == ".mp4" || ext == ".MP4") return OutputKind::video;
+  if (ext == ".html" || ext == ".htm" || ext == ".HTML") return OutputKind::html;
   if (ext.empty()) return OutputKind::frames;
   throw std::invalid_argument(
-      fmt::format("{}: the output must be an .mp4 file or a directory (DIR/)", s));
+      fmt::format("{}: the output must be an .mp4 file, an .html page or a directory (DIR/)", s));
 }
 
 ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
@@ -101,6 +103,16 @@ ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
         "{}: the replay needs {} frames ({} steps), more than the budget of {} (--max-frames); "
         "choose fewer steps (--steps A:B, --rows-per-step N, fewer triangles) or raise the budget",
         out.string(), work, result.steps, options.max_frames));
+  if (result.kind == OutputKind::html) {
+    HtmlPlayerOptions page;
+    page.source = options.source.empty() ? "the trace" : options.source;
+    page.fps = options.fps;
+    const HtmlPlayerResult h = write_html_player(replayer, first, last, out, page, progress);
+    result.format = h.format;
+    result.frames = h.steps;
+    result.bytes = h.bytes;
+    return result;
+  }
   std::unique_ptr<FrameSink> sink;
   if (result.kind == OutputKind::video)
     sink = std::make_unique<VideoFile>(out, options.size, options.fps);

@@ -42,18 +42,20 @@ struct ReplayOptions {
 // Throws std::invalid_argument naming the option that is out of range.
 void validate(const ReplayOptions& options);
 
-enum class OutputKind { video, frames };
-// ".mp4" is a video; a path ending in '/', an existing directory or a name without extension is
-// a frame directory; anything else throws std::invalid_argument.
+enum class OutputKind { video, frames, html };
+// ".mp4" is a video; ".html" (".htm") a self-contained interactive page (viz/html_player.hpp); a
+// path ending in '/', an existing directory or a name without extension is a frame directory;
+// anything else throws std::invalid_argument.
 OutputKind output_kind(const std::filesystem::path& out);
 
 struct ReplayResult {
   OutputKind kind = OutputKind::video;
-  std::string format;           // "h264", "mpeg4" or "png"
+  std::string format;           // "h264", "mpeg4", "png" or (html) the frames' "webp"
   std::size_t steps_total = 0;  // steps in the plan
   std::size_t steps = 0;        // rendered (the selected range)
   std::size_t frames = 0;       // written (video: steps times their hold; frames: = steps)
   double seconds = 0;           // video duration
+  std::size_t bytes = 0;        // html: the page's size
   ReplayMode mode = ReplayMode::triangles;
   int rows_per_step = 1;
 };

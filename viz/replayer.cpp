@@ -48,7 +48,13 @@ Replayer::Replayer(const trace::Trace& trace, const StepOptions& options, cv::Si
       plan_(plan_steps(trace, options)),
       size_(checked(frame)),
       composer_(trace, plan_, size_, std::move(source)),
-      state_(state_window(trace, plan_, composer_), trace) {}
+      state_(state_window(trace, plan_, composer_), trace) {
+  // Checkpoints cost a copy of the state each (4 bytes a pixel): their spacing keeps them under
+  // ~256 MB in all, and a step back then replays at most checkpoint_every_ steps.
+  const std::size_t bytes = static_cast<std::size_t>(state_.window().area()) * 4 + 1;
+  const std::size_t affordable = std::max<std::size_t>(1, (std::size_t{256} << 20) / bytes);
+  checkpoint_every_ = std::max<std::size_t>(8, plan_.steps.size() / affordable + 1);
+}
 
 std::optional<ViewGeometry> Replayer::geometry(std::size_t index) const {
   return composer_.geometry(plan_.steps.at(index));
@@ -74,13 +80,25 @@ void Replayer::apply(const Step& step) {
   }
 }
 
+void Replayer::rewind(std::size_t index) {
+  // The latest checkpoint at or before the state of step `index` (the one of 0 steps always is).
+  auto it = checkpoints_.upper_bound(index);
+  --it;
+  state_ = it->second.clone();
+  applied_ = it->first;
+}
+
 cv::Mat Replayer::frame(std::size_t index) {
   if (index >= plan_.steps.size())
     throw std::out_of_range(
         fmt::format("step {} is beyond the replay's {} steps", index + 1, plan_.steps.size()));
-  if (index + 1 < applied_)
-    throw std::logic_error("Replayer::frame: steps must be rendered in increasing order");
-  for (; applied_ <= index; ++applied_) apply(plan_.steps[applied_]);
+  if (checkpoints_.empty()) checkpoints_.emplace(0, state_.clone());
+  if (index + 1 < applied_) rewind(index);
+  for (; applied_ <= index; ++applied_) {
+    if (applied_ % checkpoint_every_ == 0 && !checkpoints_.count(applied_))
+      checkpoints_.emplace(applied_, state_.clone());
+    apply(plan_.steps[applied_]);
+  }
   return composer_.compose(plan_.steps[index], index, state_);
 }
 

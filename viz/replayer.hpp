@@ -4,9 +4,11 @@
 //   Replayer r(trace, {}, {1280, 720}, "triangle.jsonl");
 //   for (std::size_t i = 0; i < r.steps().size(); ++i) use(r.frame(i));
 //
-// Each step adds the pixels it fills to the replay's canvas state as it is passed, so frames are
-// asked for in increasing step order (skipping ahead is fine: the skipped steps' pixels are
-// still added).
+// Each step adds the pixels it fills to the replay's canvas state as it is passed. Frames are
+// cheapest in increasing step order (skipping ahead is fine: the skipped steps' pixels are still
+// added); going back — the interactive player — restores the nearest earlier checkpoint of the
+// canvas state and replays the steps from there.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,8 +33,7 @@ class Replayer {
   const std::vector<Step>& steps() const { return plan_.steps; }
   cv::Size frame_size() const { return size_; }
 
-  // The frame of step `index` (CV_8UC3, BGR, frame_size()); `index` must not be below the last
-  // one asked for.
+  // The frame of step `index` (CV_8UC3, BGR, frame_size()), in any order.
   cv::Mat frame(std::size_t index);
   // Where canvas pixels appear on the frames of step `index` (nullopt on a card).
   std::optional<ViewGeometry> geometry(std::size_t index) const;
@@ -40,6 +41,7 @@ class Replayer {
 
  private:
   void apply(const Step& step);
+  void rewind(std::size_t index);
   static cv::Rect state_window(const trace::Trace& trace, const StepPlan& plan,
                                const FrameComposer& composer);
 
@@ -49,6 +51,9 @@ class Replayer {
   FrameComposer composer_;
   CanvasState state_;
   std::size_t applied_ = 0;  // steps whose pixels are in state_
+  // Copies of state_ taken when `applied_` reached a multiple of checkpoint_every_ (key: applied_).
+  std::map<std::size_t, CanvasState> checkpoints_;
+  std::size_t checkpoint_every_ = 8;
 };
 
 // The smallest frame the layout is designed for.

@@ -1,0 +1,286 @@
+#include "cli/step_player.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <stdexcept>
+#include <vector>
+
+#include <spdlog/fmt/fmt.h>
+#include <opencv2/imgcodecs.hpp>
+
+#include "io/atomic_write.hpp"
+#include "viz/frame_layout.hpp"
+#include "viz/step_label.hpp"
+#include "viz/typography.hpp"
+
+namespace scantrace::cli {
+
+PlayerKey decode_key(int code) {
+  if (code < 0) return PlayerKey::none;
+  switch (code) {
+    // Qt (OpenCV's Qt backend passes Qt::Key for keys without text), GTK/X11 keysyms, Windows.
+    case 0x01000014:
+    case 0xff53:
+    case 0x270000:
+      return PlayerKey::next;
+    case 0x01000012:
+    case 0xff51:
+    case 0x250000:
+      return PlayerKey::previous;
+    case 0x01000017:
+    case 0xff56:
+    case 0x220000:
+      return PlayerKey::forward10;
+    case 0x01000016:
+    case 0xff55:
+    case 0x210000:
+      return PlayerKey::back10;
+    case 0x01000010:
+    case 0xff50:
+    case 0x240000:
+      return PlayerKey::first;
+    case 0x01000011:
+    case 0xff57:
+    case 0x230000:
+      return PlayerKey::last;
+    case 0x01000004:
+    case 0x01000005:
+    case 0xff0d:
+    case 0xff8d:
+    case '\r':
+    case '\n':
+      return PlayerKey::enter;
+    case 0x01000003:
+    case 0xff08:
+    case 8:
+      return PlayerKey::backspace;
+    case 0x01000000:
+    case 0xff1b:
+    case 27:
+      return PlayerKey::quit;
+    default:
+      break;
+  }
+  switch (code & 0xff) {  // GTK adds modifier bits above the character
+    case ' ':
+    case 'n':
+      return PlayerKey::next;
+    case 'p':
+      return PlayerKey::previous;
+    case 'g':
+      return PlayerKey::go_to_row;
+    case 'a':
+      return PlayerKey::play;
+    case 'r':
+      return PlayerKey::toggle_rows;
+    case 's':
+      return PlayerKey::save;
+    case '?':
+      return PlayerKey::help;
+    case 'q':
+      return PlayerKey::quit;
+    case '-':
+      return PlayerKey::minus;
+    default:
+      if ((code & 0xff) >= '0' && (code & 0xff) <= '9' && code < 0x10000) return PlayerKey::digit;
+      return PlayerKey::none;
+  }
+}
+
+int status_strip_height(int height) {
+  return std::max(2, 2 * ((height * 16 + 360) / 720));
+}
+
+StepPlayer::StepPlayer(const trace::Trace& trace, const viz::StepOptions& options, cv::Size window,
+                       std::string source, std::filesystem::path save_dir)
+    : trace_(trace),
+      options_(options),
+      window_(window),
+      strip_height_(status_strip_height(window.height)),
+      source_(std::move(source)),
+      save_dir_(std::move(save_dir)) {
+  rebuild(options.rows_per_step == 1);
+}
+
+void StepPlayer::rebuild(bool per_row) {
+  viz::StepOptions o = options_;
+  if (per_row) o.rows_per_step = 1;
+  // Why per_row lifts the scanline-step limit: "one step per scanline" means every row, however
+  // many (rows_per_step 1 is never regrouped).
+  replayer_ = std::make_unique<viz::Replayer>(
+      trace_, o, cv::Size(window_.width, window_.height - strip_height_), source_);
+  per_row_ = per_row;
+}
+
+void StepPlayer::show(std::size_t index) {
+  index_ = std::min(index, steps() - 1);
+}
+
+bool StepPlayer::key(int code) {
+  const PlayerKey k = decode_key(code);
+  if (row_entry_) {  // g was pressed: a row number, then Enter (Esc cancels)
+    switch (k) {
+      case PlayerKey::digit:
+        row_entry_->push_back(static_cast<char>(code & 0xff));
+        break;
+      case PlayerKey::minus:
+        if (row_entry_->empty()) row_entry_->push_back('-');
+        break;
+      case PlayerKey::backspace:
+        if (!row_entry_->empty()) row_entry_->pop_back();
+        break;
+      case PlayerKey::enter: {
+        const std::string text = *row_entry_;
+        row_entry_.reset();
+        std::int64_t row = 0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), row);
+        if (text.empty() || ec != std::errc() || end != text.data() + text.size()) {
+          message_.clear();
+          break;
+        }
+        const std::size_t at = viz::step_of_row(replayer_->plan(), row);
+        if (at == steps()) {
+          message_ = fmt::format("no step shows scanline {}", row);
+        } else {
+          show(at);
+          message_ = fmt::format("scanline {}", row);
+        }
+        break;
+      }
+      case PlayerKey::quit:
+        row_entry_.reset();
+        message_.clear();
+        break;  // Esc cancels
+      default:
+        break;
+    }
+    return true;
+  }
+  switch (k) {
+    case PlayerKey::next:
+      show(index_ + 1);
+      break;
+    case PlayerKey::previous:
+      show(index_ == 0 ? 0 : index_ - 1);
+      break;
+    case PlayerKey::forward10:
+      show(index_ + 10);
+      break;
+    case PlayerKey::back10:
+      show(index_ < 10 ? 0 : index_ - 10);
+      break;
+    case PlayerKey::first:
+      show(0);
+      break;
+    case PlayerKey::last:
+      show(steps() - 1);
+      break;
+    case PlayerKey::go_to_row:
+      row_entry_ = "";
+      playing_ = false;
+      break;
+    case PlayerKey::play:
+      playing_ = !playing_;
+      if (playing_ && index_ + 1 == steps()) show(0);
+      break;
+    case PlayerKey::toggle_rows: {
+      // Keep the place: the same scanline when there is one, else the same kind of step of the
+      // same triangle, else the same position.
+      const viz::Step was = replayer_->steps()[index_];
+      rebuild(!per_row_);
+      std::size_t at = std::min(index_, steps() - 1);
+      if (was.kind == viz::StepKind::scanlines) {
+        at = viz::step_of_row(replayer_->plan(), was.last_row);
+      } else {
+        const auto& s = replayer_->steps();
+        for (std::size_t i = 0; i < s.size(); ++i)
+          if (s[i].kind == was.kind && s[i].triangle == was.triangle && s[i].entry == was.entry) {
+            at = i;
+            break;
+          }
+      }
+      show(at);
+      message_ = per_row_ ? "one step per scanline" : "grouped steps";
+      break;
+    }
+    case PlayerKey::save:
+      message_ = "saved " + save().string();
+      break;
+    case PlayerKey::help:
+      help_ = !help_;
+      break;
+    case PlayerKey::quit:
+      if (help_) {  // Esc closes the help first
+        help_ = false;
+        break;
+      }
+      return false;
+    default:
+      break;
+  }
+  return true;
+}
+
+void StepPlayer::click(cv::Point p) {
+  const auto g = replayer_->geometry(index_);
+  if (!g) return;
+  const trace::Canvas& c = trace_.header().canvas;
+  if (const auto px = viz::pixel_at(*g, p, {c.width, c.height})) {
+    selected_ = *px;
+    message_ = fmt::format("selected pixel ({}, {})", px->x, px->y);
+  }
+}
+
+void StepPlayer::tick() {
+  if (!playing_) return;
+  if (index_ + 1 >= steps()) {
+    playing_ = false;
+    return;
+  }
+  show(index_ + 1);
+}
+
+cv::Mat StepPlayer::frame() {
+  cv::Mat f = replayer_->frame(index_);
+  if (selected_)
+    if (const auto g = replayer_->geometry(index_)) viz::mark_pixel(f, *g, *selected_);
+  return f;
+}
+
+cv::Mat StepPlayer::image() {
+  cv::Mat f = frame();
+  const viz::Typography type(f.size());
+  if (selected_ && replayer_->geometry(index_)) {
+    const viz::FrameLayout layout = viz::FrameLayout::for_frame(f.size(), type);
+    viz::draw_history_box(f, layout.panel, type,
+                          viz::pixel_history_lines(trace_, replayer_->plan(), index_, *selected_));
+  }
+  if (help_) viz::draw_key_help(f, type);
+  std::string left =
+      fmt::format("step {} / {}{}", index_ + 1, steps(), playing_ ? "   playing" : "");
+  if (row_entry_)
+    left += "   go to scanline: " + *row_entry_ + "_";
+  else if (!message_.empty())
+    left += "   " + message_;
+  const cv::Mat strip = viz::status_strip(
+      f.cols, strip_height_, type, left,
+      fmt::format("<- -> step   PgUp PgDn 10   Home End   g row Enter   a play   r {}   "
+                  "click pixel   s save   ? keys   q quit",
+                  per_row_ ? "grouped" : "per scanline"));
+  cv::Mat out;
+  cv::vconcat(f, strip, out);
+  return out;
+}
+
+std::filesystem::path StepPlayer::save() {
+  std::vector<unsigned char> png;
+  if (!cv::imencode(".png", frame(), png))
+    throw std::runtime_error(fmt::format("cannot encode step {} as PNG", index_ + 1));
+  const std::filesystem::path file =
+      (save_dir_ / fmt::format("step_{:05d}.png", index_ + 1)).lexically_normal();
+  write_file_atomically(file,
+                        std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  return file;
+}
+
+}  // namespace scantrace::cli

@@ -1,0 +1,279 @@
+"""`scantrace step` in a real window under a virtual display (Debian's xvfb; xdotool sends the
+keys and clicks, ffmpeg's x11grab takes the screenshots): after each key the window shows the
+replayer's frame for the step expected, a click selects a pixel that stays marked, s saves the
+frame, q quits with status 0. Also: no display is one line and exit status 1; a one-step trace,
+a trace cut short (--partial) and a scene trace open and step. Conditions are polled, never
+waited for with fixed sleeps. Usage: test_step_window.py SCANTRACE WORKDIR. Exit 77: skipped."""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+import images
+
+SKIP = 77
+WIDTH, HEIGHT = 640, 360
+FRAME_HEIGHT = 344  # the status line takes 16 of the 360 rows (16 per 720)
+TIMEOUT = 30
+
+
+def run(scantrace, *args, cwd, env=None, check=True):
+    r = subprocess.run([scantrace, *args], cwd=cwd, capture_output=True, text=True, env=env)
+    if check and r.returncode != 0:
+        sys.exit(f"scantrace {' '.join(args)} failed ({r.returncode}): {r.stderr}")
+    return r
+
+
+def poll(condition, what, timeout=TIMEOUT):
+    deadline = time.monotonic() + timeout
+    while True:
+        value = condition()
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            raise TimeoutError("timed out waiting for " + what)
+        time.sleep(0.05)
+
+
+class Display:
+    def __init__(self):
+        r, w = os.pipe()
+        self.process = subprocess.Popen(
+            ["Xvfb", "-displayfd", str(w), "-screen", "0", "1024x768x24", "-nolisten", "tcp"],
+            pass_fds=(w,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        os.close(w)
+        number = b""
+        while not number.endswith(b"\n"):
+            chunk = os.read(r, 16)
+            if not chunk:
+                raise RuntimeError("Xvfb did not start")
+            number += chunk
+        os.close(r)
+        self.name = ":" + number.decode().strip()
+        self.env = dict(os.environ, DISPLAY=self.name)
+        self.env.pop("WAYLAND_DISPLAY", None)
+
+    def close(self):
+        self.process.terminate()
+        self.process.wait(timeout=10)
+
+    def xdotool(self, *args):
+        return subprocess.run(["xdotool", *args], env=self.env, capture_output=True,
+                              text=True).stdout.strip()
+
+    def screenshot(self, x, y, w, h):
+        png = subprocess.run(
+            ["ffmpeg", "-v", "error", "-f", "x11grab", "-video_size", f"{w}x{h}", "-i",
+             f"{self.name}+{x},{y}", "-frames:v", "1", "-f", "image2", "-c:v", "png", "pipe:1"],
+            env=self.env, capture_output=True, check=True).stdout
+        return images.decode(png)
+
+
+class Window:
+    """A running `scantrace step` and its window."""
+
+    def __init__(self, display, scantrace, args, cwd):
+        self.display = display
+        self.err_path = os.path.join(cwd, "step.err")
+        self.err = open(self.err_path, "w")
+        self.process = subprocess.Popen([scantrace, "step", *args], cwd=cwd, env=display.env,
+                                        stdout=subprocess.DEVNULL, stderr=self.err)
+        self.id = poll(lambda: display.xdotool("search", "--name", "^scantrace step$"),
+                       "the window").split()[0]
+        # The window is mapped before it gets the image's size.
+        def geometry():
+            text = display.xdotool("getwindowgeometry", "--shell", self.id)
+            g = dict(line.split("=") for line in text.splitlines() if "=" in line)
+            return g if (int(g.get("WIDTH", 0)), int(g.get("HEIGHT", 0))) == (WIDTH, HEIGHT) \
+                else None
+        g = poll(geometry, f"a {WIDTH}x{HEIGHT} window")
+        self.x, self.y = int(g["X"]), int(g["Y"])
+        # The pointer away from the window, so that it is not in the screenshots.
+        display.xdotool("mousemove", "1000", "750")
+
+    def log(self):
+        return open(self.err_path).read()
+
+    def step(self):
+        found = re.findall(r"step (\d+) / (\d+):", self.log())
+        return int(found[-1][0]) if found else None
+
+    def keys(self, *keys):
+        self.display.xdotool("key", "--window", self.id, *keys)
+
+    def strip(self):
+        return self.display.screenshot(self.x, self.y + FRAME_HEIGHT, WIDTH, HEIGHT - FRAME_HEIGHT)
+
+    def press(self, key, step=None):
+        """One key, then waits for its effect: the log reaching `step`, or (keys that only
+        change the status line, like the digits after g) the status line changing. HighGUI
+        keeps only the last key pressed between two polls of the window, so keys are sent one at
+        a time, as a person types."""
+        if step is not None:
+            self.keys(key)
+            self.wait_step(step)
+            return
+        before = self.strip()
+        self.keys(key)
+        poll(lambda: images.difference(self.strip(), before) > 0, f"the status line after {key}")
+
+    def wait_step(self, n):
+        poll(lambda: self.step() == n, f"step {n} (the log says {self.step()})")
+
+    def frame(self):
+        return self.display.screenshot(self.x, self.y, WIDTH, FRAME_HEIGHT)
+
+    def wait_frame(self, reference, what):
+        """Polls until the window shows `reference` (the window paints after the log line)."""
+        last = [None]
+
+        def same():
+            last[0] = images.difference(self.frame(), reference)
+            return last[0] < 0.05
+        try:
+            poll(same, what, timeout=10)
+        except TimeoutError:
+            raise AssertionError(f"{what}: the window differs from the replayer's frame "
+                                 f"(mean difference {last[0]:.2f})")
+
+    def quit(self):
+        self.keys("q")
+        try:
+            return self.process.wait(timeout=TIMEOUT)
+        finally:
+            self.err.close()
+
+    def kill(self):
+        if self.process.poll() is None:
+            self.process.kill()
+            self.process.wait()
+        if not self.err.closed:
+            self.err.close()
+
+
+def main():
+    scantrace, work = sys.argv[1], sys.argv[2]
+    for tool in ("Xvfb", "xdotool", "ffmpeg"):
+        if not shutil.which(tool):
+            print(f"SKIPPED: {tool} is not installed (scripts/deps.sh installs it)")
+            return SKIP
+    os.makedirs(work, exist_ok=True)
+    run(scantrace, "-q", "trace", "--triangle", "2.3,1.2 29,9.5 8,27.6", "--size", "32x30",
+        "-o", "t.jsonl", cwd=work)
+
+    # Without a display: one line, exit status 1, and the way out.
+    no_display = dict(os.environ)
+    no_display.pop("DISPLAY", None)
+    no_display.pop("WAYLAND_DISPLAY", None)
+    r = run(scantrace, "step", "t.jsonl", cwd=work, env=no_display, check=False)
+    assert r.returncode == 1, f"no display: exit status {r.returncode}"
+    assert r.stderr.count("\n") == 1 and "DISPLAY" in r.stderr and "-o OUT.html" in r.stderr, \
+        r.stderr
+
+    # The replayer's frames for the window's frame size, one step per scanline: the steps are
+    # title, set-up, three edge-table entries, rows 2..27, done, end.
+    run(scantrace, "-q", "replay", "t.jsonl", "-o", "frames/", "--video-size",
+        f"{WIDTH}x{FRAME_HEIGHT}", "--rows-per-step", "1", cwd=work)
+    total = len(os.listdir(os.path.join(work, "frames")))
+    assert total == 33, total
+    frames = images.decode_sequence(os.path.join(work, "frames", "frame_%05d.png"), total,
+                                    WIDTH, FRAME_HEIGHT)
+
+    display = Display()
+    checks = 0
+    try:
+        w = Window(display, scantrace, ["t.jsonl", "--video-size", f"{WIDTH}x{HEIGHT}",
+                                        "--rows-per-step", "1", "--save-dir", "saved"], work)
+        os.makedirs(os.path.join(work, "saved"), exist_ok=True)
+        try:
+            w.wait_step(1)
+            w.wait_frame(frames[0], "at start")
+            for keys, expected, what in (((("Right", 2), ("Right", 3), ("Left", 2)), 2,
+                                          "Right Right Left"),
+                                         ((("End", total),), total, "End"),
+                                         ((("Home", 1),), 1, "Home"),
+                                         ((("Next", 11),), 11, "PgDn"),
+                                         ((("Prior", 1),), 1, "PgUp"),
+                                         ((("space", 2), ("n", 3)), 3, "space n"),
+                                         ((("p", 2),), 2, "p"),
+                                         ((("g", None), ("1", None), ("5", None),
+                                           ("Return", 6 + 15 - 2)), 6 + 15 - 2, "g 15 Enter")):
+                for key, step in keys:
+                    w.press(key, step)
+                w.wait_frame(frames[expected - 1], what)
+                checks += 1
+            # A click on a cell inside the triangle: it is marked (magenta ring) and s saves the
+            # frame with the mark, differing from the plain frame only around the click.
+            click = (150, 150)
+            display.xdotool("mousemove", "--window", w.id, str(click[0]), str(click[1]),
+                            "click", "1")
+            display.xdotool("mousemove", "1000", "750")
+            poll(lambda: "selected pixel" in w.log() or images.difference(
+                w.frame(), frames[18]) > 0.05, "the selection")
+            w.press("s")
+            saved = os.path.join(work, "saved", "step_00019.png")
+            poll(lambda: os.path.exists(saved), saved)
+            marked = images.decode(saved)
+            plain = frames[18]
+            changed = np.argwhere(np.any(marked != plain, axis=2))
+            assert len(changed) > 0, "the saved frame has no mark"
+            (y0, x0), (y1, x1) = changed.min(axis=0), changed.max(axis=0)
+            assert x0 <= click[0] <= x1 and y0 <= click[1] <= y1 and x1 - x0 < 60 and \
+                y1 - y0 < 60, f"the mark spans x {x0}..{x1}, y {y0}..{y1}"
+            magenta = np.all(marked[changed[:, 0], changed[:, 1]] == (255, 0, 255), axis=1)
+            assert magenta.any(), "the mark is not magenta"
+            checks += 1
+            # The selection stays on the next step, and the side panel shows the history.
+            w.press("Right", 20)
+            shown = poll(lambda: (lambda f: [f] if images.difference(f, frames[19]) > 0.05
+                                  else None)(w.frame()), "the mark on step 20")[0]
+            diff = np.any(shown != frames[19], axis=2)
+            assert diff[y0:y1 + 1, x0:x1 + 1].any(), "the mark is gone on step 20"
+            assert diff[:, WIDTH // 2:].any(), "no history box on the side panel"
+            checks += 1
+            status = w.quit()
+            assert status == 0, f"q: exit status {status}"
+            assert "median" in w.log(), w.log()
+            checks += 1
+        finally:
+            w.kill()
+
+        # A trace with one step (--steps of a triangle that is skipped: title, skipped, end are
+        # three; a degenerate triangle), a trace cut short, a scene: all open and step.
+        run(scantrace, "-q", "trace", "--triangle", "1,1 5,5 9,9", "--size", "16x16", "-o",
+            "skipped.jsonl", cwd=work)
+        text = open(os.path.join(work, "t.jsonl")).read()
+        open(os.path.join(work, "cut.jsonl"), "w").write(text[: len(text) // 2])
+        run(scantrace, "-q", "trace", "--triangle", "2.3,1.2 29,9.5 8,27.6", "--size", "32x30",
+            "--rows", "5:5", "-o", "one_row.jsonl", cwd=work)
+        scene = os.path.join(work, "scene.json")
+        open(scene, "w").write(
+            '{"width": 32, "height": 30, "vertices": [[2,2],[28,4],[10,26],[5,20],[30,22],[20,2]],'
+            ' "vcolors": [[1,0,0],[0,1,0],[0,0,1],[1,1,0],[0,1,1],[1,0,1]],'
+            ' "faces": [[0,1,2],[3,4,5]], "depth": [2,2,2,1,1,1]}')
+        for args in (["skipped.jsonl"], ["cut.jsonl", "--partial"], ["one_row.jsonl"],
+                     ["scene.json"]):
+            w = Window(display, scantrace, [*args, "--video-size", f"{WIDTH}x{HEIGHT}"], work)
+            try:
+                w.wait_step(1)
+                w.keys("End")
+                poll(lambda: w.step() and w.step() > 1, f"{args}: a step on")
+                last = w.step()
+                w.press("Left", last - 1)
+                status = w.quit()
+                assert status == 0, f"{args}: exit status {status}: {w.log()}"
+                checks += 1
+            finally:
+                w.kill()
+    finally:
+        display.close()
+    print(f"the window under Xvfb: {checks} checks passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -11,16 +11,14 @@
 #include "cli/commands.hpp"
 #include "cli/fill_flags.hpp"
 #include "cli/model_flags.hpp"
+#include "cli/record_in_memory.hpp"
 #include "cli/replay_flags.hpp"
-#include "cli/selection_check.hpp"
 #include "cli/trace_flags.hpp"
 #include "io/obj_loader.hpp"
 #include "trace/record.hpp"
 
 namespace scantrace::cli {
 namespace {
-
-constexpr long long kDefaultMaxEvents = 2'000'000;
 
 struct ExplainArgs {
   TraceFlags what;
@@ -30,24 +28,7 @@ struct ExplainArgs {
 };
 
 void run(const ExplainArgs& args) {
-  FillOptions options = args.model.apply(args.fill.options(), is_obj_file(args.what.scene));
-  options.winding_rule = args.what.winding_rule();
-  const auto input = trace_input(args.what, args.model, options.shading, args.fill.clamp_colors);
-  trace::TraceFilter filter = args.what.filter();
-  check_selection(input, filter, args.what.input_name());
-  // The trace stays in memory: unless --max-events says otherwise, a budget keeps a pixel-level
-  // trace of a large scene from exhausting it (a video could not show that many steps anyway).
-  if (!filter.max_events) filter.max_events = kDefaultMaxEvents;
-  const trace::Trace t = std::visit(
-      [&](const auto& in) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(in)>, Scene>)
-          return trace::record_scene(in, options, filter);
-        else if constexpr (std::is_same_v<std::decay_t<decltype(in)>, trace::GeneralPolygonInput>)
-          return trace::record_polygon(in, options, filter);
-        else
-          return trace::record_triangle(in, options, filter);
-      },
-      input);
+  const trace::Trace t = record_in_memory(args.what, args.fill, args.model);
   if (t.truncated())
     spdlog::warn(
         "warning: the trace was truncated after {} events (--max-events, default 2000000 "

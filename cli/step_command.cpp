@@ -21,11 +21,12 @@
 #include "cli/fill_flags.hpp"
 #include "cli/highgui_focus.hpp"
 #include "cli/model_flags.hpp"
+#include "cli/record_in_memory.hpp"
 #include "cli/replay_flags.hpp"
 #include "cli/step_player.hpp"
 #include "cli/stopwatch.hpp"
-#include "cli/trace_input.hpp"
 #include "cli/trace_flags.hpp"
+#include "cli/trace_input.hpp"
 #include "cli/validators.hpp"
 #include "io/interrupt.hpp"
 #include "io/obj_loader.hpp"
@@ -35,7 +36,6 @@
 namespace scantrace::cli {
 namespace {
 
-constexpr long long kDefaultMaxEvents = 2'000'000;
 constexpr const char* kWindow = "scantrace step";
 
 struct StepArgs {
@@ -101,21 +101,7 @@ trace::Trace input_trace(const StepArgs& args) {
                    args.what.scene);
     return t;
   }
-  FillOptions options = args.model.apply(args.fill.options(), is_obj_file(args.what.scene));
-  options.winding_rule = args.what.winding_rule();
-  const auto input = trace_input(args.what, args.model, options.shading, args.fill.clamp_colors);
-  trace::TraceFilter filter = args.what.filter();
-  if (!filter.max_events) filter.max_events = kDefaultMaxEvents;
-  return std::visit(
-      [&](const auto& in) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(in)>, Scene>)
-          return trace::record_scene(in, options, filter);
-        else if constexpr (std::is_same_v<std::decay_t<decltype(in)>, trace::GeneralPolygonInput>)
-          return trace::record_polygon(in, options, filter);
-        else
-          return trace::record_triangle(in, options, filter);
-      },
-      input);
+  return record_in_memory(args.what, args.fill, args.model);
 }
 
 struct Clicks {

@@ -35,8 +35,9 @@ const std::string kModel =
 
 }  // namespace
 
-TEST_CASE("option --size is the canvas in render, trace and explain, also for scene files",
-          "[command][options]") {
+TEST_CASE(
+    "option --size is the canvas in render, trace, explain, why and diff, also for scene files",
+    "[command][options]") {
   TempDir dir;
   write_small_scene(dir / "s.json");
   auto r = run_scantrace(dir.path(), {"render", "s.json", "-o", "own.png"});
@@ -46,6 +47,16 @@ TEST_CASE("option --size is the canvas in render, trace and explain, also for sc
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   CHECK(cv::imread((dir / "big.png").string()).size() == cv::Size(64, 48));
+  // why and diff render the same reference: with --size the 64x48 image agrees (exit 0), without
+  // it the canvases differ (exit 3), and pixel (63, 47) exists only on the larger canvas.
+  r = run_scantrace(dir.path(), {"diff", "s.json", "big.png", "--size", "64x48"});
+  CHECK(r.exit_code == 0);
+  r = run_scantrace(dir.path(), {"diff", "s.json", "big.png"});
+  CHECK(r.exit_code == 3);
+  r = run_scantrace(dir.path(), {"why", "s.json", "63", "47", "--size", "64x48"});
+  CHECK(r.exit_code == 0);
+  r = run_scantrace(dir.path(), {"why", "s.json", "63", "47"});
+  CHECK(r.exit_code != 0);
 
   r = run_scantrace(dir.path(), {"trace", "s.json", "--size", "30x25", "-o", "s.jsonl"});
   REQUIRE(r.exit_code == 0);

@@ -49,24 +49,38 @@ std::string explanation(const nlohmann::json::parse_error& e) {
   return start == std::string::npos ? what : what.substr(start + 2);
 }
 
+// Tells, character by character, whether a JSON text is inside a string literal, where brackets
+// and commas are not structure: a backslash hides the next character (\" too).
+class StringLiterals {
+ public:
+  // True when `c` belongs to a string literal, its quotes included.
+  bool contain(char c) {
+    if (in_string_) {
+      if (escaped_)
+        escaped_ = false;
+      else if (c == '\\')
+        escaped_ = true;
+      else if (c == '"')
+        in_string_ = false;
+      return true;
+    }
+    in_string_ = c == '"';
+    return in_string_;
+  }
+
+ private:
+  bool in_string_ = false, escaped_ = false;
+};
+
 }  // namespace
 
 std::optional<std::size_t> find_excess_nesting(std::string_view text, int max_depth) {
   int depth = 0;
-  bool in_string = false, escaped = false;
+  StringLiterals strings;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
-    if (in_string) {
-      // Brackets inside strings do not nest; a backslash hides the next character (\" too).
-      if (escaped)
-        escaped = false;
-      else if (c == '\\')
-        escaped = true;
-      else if (c == '"')
-        in_string = false;
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
+    if (strings.contain(c)) continue;
+    if (c == '[' || c == '{') {
       if (++depth > max_depth) return i;
     } else if ((c == ']' || c == '}') && depth > 0) {
       --depth;
@@ -81,22 +95,13 @@ std::string nesting_problem(int max_depth) {
 
 std::uint64_t estimated_dom_bytes(std::string_view text) {
   std::uint64_t values = 1, containers = 0;
-  bool in_string = false, escaped = false;
+  StringLiterals strings;
   for (const char c : text) {
-    if (in_string) {
-      if (escaped)
-        escaped = false;
-      else if (c == '\\')
-        escaped = true;
-      else if (c == '"')
-        in_string = false;
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == ',') {
+    if (strings.contain(c)) continue;
+    if (c == ',')
       ++values;
-    } else if (c == '[' || c == '{') {
+    else if (c == '[' || c == '{')
       ++values, ++containers;
-    }
   }
   return 16 * values + 64 * containers;
 }

@@ -111,81 +111,70 @@ cv::Rect card_picture_area(cv::Size frame, const Typography& type) {
           std::max(1, frame.height - type.px(70) - top)};
 }
 
+namespace {
+
+// The opening of a title card: the algorithm's name, what is drawn, the shading, then the steps
+// the replay will show, numbered, one paragraph each.
+void card_opening(PanelWriter& w, const trace::Header& h, const std::string& algorithm,
+                  const std::string& what) {
+  w.line(algorithm, TextStyle::huge);
+  w.gap(8);
+  w.line(what, TextStyle::title);
+  w.line(shading_text(h), TextStyle::body, palette::kMutedText);
+  w.gap(24);
+  w.line("What you will see", TextStyle::heading);
+}
+
+void numbered_steps(PanelWriter& w, const std::vector<std::string>& steps) {
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    w.gap(4);
+    w.paragraph(fmt::format("{}   {}", i + 1, steps[i]));
+  }
+}
+
+}  // namespace
+
 void draw_title_card(cv::Mat& frame, const Typography& type, const trace::Trace& trace,
                      const StepPlan& plan, const CardInfo& info) {
   PanelWriter w(frame, column(frame, type), type);
   const trace::Header& h = trace.header();
+  const std::string count = integer(static_cast<std::int64_t>(plan.order.size()));
   if (plan.mode == ReplayMode::scene && uses_zbuffer(h)) {
-    w.line("The z-buffer", TextStyle::huge);
-    w.gap(8);
-    w.line(fmt::format("{} triangles, in scene order, a depth test per pixel",
-                       integer(static_cast<std::int64_t>(plan.order.size()))),
-           TextStyle::title);
-    w.line(shading_text(h), TextStyle::body, palette::kMutedText);
-    w.gap(24);
-    w.line("What you will see", TextStyle::heading);
-    w.gap(4);
-    w.paragraph(
-        "1   The triangles in the order of the scene (no sorting), in batches, each filled "
-        "with the edge-table scanline fill; the last one drawn is outlined.");
-    w.gap(4);
-    w.paragraph(
-        "2   At every pixel: the triangle's depth there, compared with the depth stored so "
-        "far. Nearer (smaller) is written and stored; otherwise the pixel is rejected "
-        "(marked x on the frame of its step).");
-    w.gap(4);
-    w.paragraph(
-        "3   The finished image: where triangles cross, the nearer one wins pixel by pixel.");
+    card_opening(w, h, "The z-buffer",
+                 fmt::format("{} triangles, in scene order, a depth test per pixel", count));
+    numbered_steps(
+        w, {"The triangles in the order of the scene (no sorting), in batches, each filled with "
+            "the edge-table scanline fill; the last one drawn is outlined.",
+            "At every pixel: the triangle's depth there, compared with the depth stored so far. "
+            "Nearer (smaller) is written and stored; otherwise the pixel is rejected (marked x on "
+            "the frame of its step).",
+            "The finished image: where triangles cross, the nearer one wins pixel by pixel."});
   } else if (plan.mode == ReplayMode::scene) {
-    w.line("The painter's algorithm", TextStyle::huge);
-    w.gap(8);
-    w.line(fmt::format("{} triangles, drawn far to near",
-                       integer(static_cast<std::int64_t>(plan.order.size()))),
-           TextStyle::title);
-    w.line(shading_text(h), TextStyle::body, palette::kMutedText);
-    w.gap(24);
-    w.line("What you will see", TextStyle::heading);
-    w.gap(4);
-    w.paragraph(
-        "1   The triangles sorted by depth (the mean of their vertex depths), the "
-        "farthest first.");
-    w.gap(4);
-    w.paragraph(
-        "2   Each step draws a batch of triangles with the edge-table scanline fill; the "
-        "last one drawn is outlined.");
-    w.gap(4);
-    w.paragraph("3   Nearer triangles paint over farther ones: the finished image.");
+    card_opening(w, h, "The painter's algorithm",
+                 fmt::format("{} triangles, drawn far to near", count));
+    numbered_steps(w, {"The triangles sorted by depth (the mean of their vertex depths), the "
+                       "farthest first.",
+                       "Each step draws a batch of triangles with the edge-table scanline fill; "
+                       "the last one drawn is outlined.",
+                       "Nearer triangles paint over farther ones: the finished image."});
   } else {
-    w.line("The edge-table scanline fill", TextStyle::huge);
-    w.gap(8);
-    if (plan.order.size() == 1)
-      w.line(triangle_text(trace, plan.order.front()), TextStyle::title);
-    else
-      w.line(fmt::format("{} triangles, one after the other",
-                         integer(static_cast<std::int64_t>(plan.order.size()))),
-             TextStyle::title);
-    w.line(shading_text(h), TextStyle::body, palette::kMutedText);
-    w.gap(24);
-    w.line("What you will see", TextStyle::heading);
-    w.gap(4);
-    w.paragraph("1   Set-up: the vertices, snapped to the subpixel grid, and their colours.");
-    w.gap(4);
-    w.paragraph("2   The edge table: one entry per edge, with y_min, y_max, x and dx/dy.");
     const bool polygon = trace.header().winding_rule.has_value();
+    card_opening(w, h, "The edge-table scanline fill",
+                 plan.order.size() == 1 ? triangle_text(trace, plan.order.front())
+                                        : fmt::format("{} triangles, one after the other", count));
     std::string scanlines =
-        polygon ? "3   The scanlines, top to bottom: the active edges, where they cross the row, "
+        polygon ? "The scanlines, top to bottom: the active edges, where they cross the row, "
                   "their windings (+1 down, -1 up), the inside intervals filled, and the colours "
                   "interpolated."
-                : "3   The scanlines, top to bottom: the active edges, where they cross the row, "
+                : "The scanlines, top to bottom: the active edges, where they cross the row, "
                   "the span of pixels filled, and the colours interpolated.";
     if (info.rows_per_step > 1)
       scanlines +=
           fmt::format(" Up to {} rows per step; rows where an edge enters or leaves get their own.",
                       info.rows_per_step);
-    w.gap(4);
-    w.paragraph(scanlines);
-    w.gap(4);
-    w.paragraph(polygon ? "4   The finished polygon." : "4   The finished triangle.");
+    numbered_steps(w, {"Set-up: the vertices, snapped to the subpixel grid, and their colours.",
+                       "The edge table: one entry per edge, with y_min, y_max, x and dx/dy.",
+                       scanlines, polygon ? "The finished polygon." : "The finished triangle."});
   }
   if (plan.order.empty())
     w.paragraph("The trace holds no triangle (all filtered out?): there is nothing to replay.",

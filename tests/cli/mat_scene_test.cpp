@@ -39,8 +39,12 @@ void write_mat(const std::filesystem::path& file, const std::vector<MatVar>& var
   REQUIRE(mat != nullptr);
   for (const MatVar& v : vars) {
     std::size_t dims[2] = {v.rows, v.cols};
-    std::vector<std::int32_t> ints(v.column_major.begin(), v.column_major.end());
-    std::vector<char> chars(v.column_major.begin(), v.column_major.end());
+    // Converted only for the class that stores them: the double cases hold values (NaN, 132.1)
+    // that no int32 or char can represent.
+    std::vector<std::int32_t> ints;
+    std::vector<char> chars;
+    if (v.cls == MAT_C_INT32) ints.assign(v.column_major.begin(), v.column_major.end());
+    if (v.cls == MAT_C_CHAR) chars.assign(v.column_major.begin(), v.column_major.end());
     std::vector<double> re = v.column_major, im(v.column_major.size(), 1.0);
     mat_complex_split_t split{re.data(), im.data()};
     matvar_t* var = nullptr;

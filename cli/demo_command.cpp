@@ -90,38 +90,31 @@ void trace_demo_triangle(const std::filesystem::path& image_file,
                trace_file.string(), footer.events);
 }
 
-// The video is made from the trace file just written, so it explains exactly what the file holds.
+// The video and the page are made from the trace file just written, so they explain exactly what
+// the file holds; it is read once for both.
 void explain_demo_triangle(const std::filesystem::path& trace_file,
-                           const std::filesystem::path& video) {
+                           const std::filesystem::path& video, const std::filesystem::path& page) {
   const trace::Trace t = trace::Trace::load(trace_file);
   viz::ReplayOptions options;
   options.source = trace_file.string();
-  std::unique_ptr<viz::Progress> progress;
-  if (spdlog::should_log(spdlog::level::info))
-    progress = std::make_unique<viz::StderrProgress>(video.string(), "frames");
+  const auto replay_to = [&](const std::filesystem::path& out) {
+    std::unique_ptr<viz::Progress> progress;
+    if (spdlog::should_log(spdlog::level::info))
+      progress = std::make_unique<viz::StderrProgress>(out.string(), "frames");
+    return viz::replay(t, out, options, progress.get());
+  };
   const Stopwatch clock;
-  const viz::ReplayResult r = viz::replay(t, video, options, progress.get());
+  const viz::ReplayResult r = replay_to(video);
   spdlog::info(
       "wrote {}: the explanatory video of that trace, {} steps, {:.0f} s ({} {}x{}, {} "
       "frames, made in {:.1f} s)",
       video.string(), r.steps, r.seconds, r.format == "h264" ? "H.264" : "MPEG-4",
       options.size.width, options.size.height, r.frames, clock.ms() / 1000);
-}
-
-// The same trace as a page to step through in any browser, next to the video.
-void page_demo_triangle(const std::filesystem::path& trace_file,
-                        const std::filesystem::path& page) {
-  const trace::Trace t = trace::Trace::load(trace_file);
-  viz::ReplayOptions options;
-  options.source = trace_file.string();
-  std::unique_ptr<viz::Progress> progress;
-  if (spdlog::should_log(spdlog::level::info))
-    progress = std::make_unique<viz::StderrProgress>(page.string(), "frames");
-  const viz::ReplayResult r = viz::replay(t, page, options, progress.get());
+  const viz::ReplayResult p = replay_to(page);
   spdlog::info(
       "wrote {}: the same steps as a self-contained page ({} steps, {:.1f} MB): open it in a "
       "browser and step with the arrow keys",
-      page.string(), r.steps, r.bytes / 1e6);
+      page.string(), p.steps, p.bytes / 1e6);
 }
 
 void run_demo(const DemoArgs& args) {
@@ -132,8 +125,7 @@ void run_demo(const DemoArgs& args) {
   render_scene(scene, Shading::gouraud, dir / "demo_gouraud.png");
   render_model(dir / "demo_model.png");
   trace_demo_triangle(dir / "triangle_gouraud.png", dir / "triangle.jsonl");
-  explain_demo_triangle(dir / "triangle.jsonl", dir / "triangle.mp4");
-  page_demo_triangle(dir / "triangle.jsonl", dir / "triangle.html");
+  explain_demo_triangle(dir / "triangle.jsonl", dir / "triangle.mp4", dir / "triangle.html");
   const std::filesystem::path scene_file = dir / "demo_scene.json";
   save_scene(scene, scene_file);
   spdlog::info(

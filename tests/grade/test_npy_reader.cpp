@@ -1,6 +1,7 @@
 // The strict .npy reader: what np.save writes is read exactly; everything else is one clear error.
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <string>
 
@@ -8,6 +9,7 @@
 
 #include "grade/image_input.hpp"
 #include "io/input_error.hpp"
+#include "io/json_input.hpp"
 #include "io/npy_reader.hpp"
 
 using scantrace::InputError;
@@ -115,4 +117,19 @@ TEST_CASE("image files: a huge declared size and a truncated PNG are refused bef
     CHECK(std::string(e.what()).find("truncated") != std::string::npos);
   }
   CHECK_THROWS_AS(scantrace::grade::decode_image("GIF89a....", "x.gif"), InputError);
+}
+
+TEST_CASE("image files: a declared size whose product overflows 64 bits is refused, not wrapped",
+          "[grade][image][robustness]") {
+  // fuzz/regressions/image_input/png-size-overflow (found by fuzz_image_input in CI): an IHDR of
+  // 4294902015 x 4278190082. Their product, 2^63.99, overflowed the signed 64-bit check (UBSan),
+  // and a wrapped product could pass it.
+  const std::string png = scantrace::json_input::read_text_file(
+      std::filesystem::path(SCANTRACE_SOURCE_DIR) / "fuzz/regressions/image_input/png-size-overflow");
+  try {
+    scantrace::grade::decode_image(png, "overflow.png");
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("declares 4294902015x4278190082 pixels") != std::string::npos);
+  }
 }

@@ -97,8 +97,7 @@ SubmittedImage decode_image(std::string_view bytes, const std::string& name) {
   if (!declared_size(bytes, name, w, h, out.format))
     throw InputError(name, "", "not a PNG, JPEG, BMP or .npy file");
   // Each side first: two 32-bit sides can multiply past 2^63.
-  if (w <= 0 || h <= 0 || w > kMaxCanvasPixels || h > kMaxCanvasPixels ||
-      w * h > kMaxCanvasPixels)
+  if (w <= 0 || h <= 0 || w > kMaxCanvasPixels || h > kMaxCanvasPixels || w * h > kMaxCanvasPixels)
     throw InputError(name, out.format + " header",
                      "declares " + std::to_string(w) + "x" + std::to_string(h) +
                          " pixels, outside what can be compared (at most 2^28 pixels)");

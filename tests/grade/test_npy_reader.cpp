@@ -124,8 +124,9 @@ TEST_CASE("image files: a declared size whose product overflows 64 bits is refus
   // fuzz/regressions/image_input/png-size-overflow (found by fuzz_image_input in CI): an IHDR of
   // 4294902015 x 4278190082. Their product, 2^63.99, overflowed the signed 64-bit check (UBSan),
   // and a wrapped product could pass it.
-  const std::string png = scantrace::json_input::read_text_file(
-      std::filesystem::path(SCANTRACE_SOURCE_DIR) / "fuzz/regressions/image_input/png-size-overflow");
+  const std::string png =
+      scantrace::json_input::read_text_file(std::filesystem::path(SCANTRACE_SOURCE_DIR) /
+                                            "fuzz/regressions/image_input/png-size-overflow");
   try {
     scantrace::grade::decode_image(png, "overflow.png");
     FAIL("no error");

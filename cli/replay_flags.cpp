@@ -43,6 +43,7 @@ viz::ReplayOptions ReplayFlags::options(const std::string& source) const {
   o.plan.mode = viz::parse_replay_mode(mode);
   o.source = source;
   o.max_frames = max_frames;
+  o.marked_pixel = marked_pixel;
   return o;
 }
 

@@ -24,6 +24,7 @@ struct ReplayFlags {
   int rows_per_step = 0;
   std::string mode = "auto";
   std::size_t max_frames = viz::kDefaultMaxFrames;
+  std::optional<viz::CanvasPixel> marked_pixel{};  // not an option: set by `why --explain`
 
   viz::ReplayOptions options(const std::string& source) const;
 };

@@ -15,7 +15,6 @@
 #include "cli/stopwatch.hpp"
 #include "grade/pixel_story.hpp"
 #include "grade/scene_around.hpp"
-#include "trace/record.hpp"
 
 namespace scantrace::cli {
 namespace {
@@ -49,16 +48,13 @@ void run_why(const WhyArgs& args) {
       "{} in the scene)",
       ms, cpu_ms, story.faces.size(), g.scene.faces.size());
   if (!args.explain.empty()) {
-    // Only the faces around the pixel, every row of them: the replay shows how each one was
-    // filled. (Their indices in the video are their order in this small scene; the text above
-    // names the scene's face numbers.)
-    std::vector<int> faces;
-    const Scene around = grade::scene_around(g.scene, args.x, args.y, 0.01, &faces);
-    trace::TraceFilter filter;
-    filter.level = TraceLevel::scanline;
-    const trace::Trace t = trace::record_scene(around, g.options, filter);
+    // Only the faces around the pixel, every row of them, named by their scene index: the replay
+    // shows how each one was filled, with the pixel ringed on every frame.
+    const trace::Trace t =
+        grade::trace_around(g.scene, g.options, args.x, args.y, TraceLevel::scanline);
     ReplayFlags replay;
     replay.output = args.explain;
+    replay.marked_pixel = viz::CanvasPixel{args.x, args.y};
     run_replay(t, replay,
                "the faces around pixel (" + std::to_string(args.x) + ", " + std::to_string(args.y) +
                    ") of " + args.scene);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "trace/record.hpp"
+
 namespace scantrace::grade {
 
 Scene scene_around(const Scene& scene, int x, int y, double margin, std::vector<int>* faces) {
@@ -23,6 +25,14 @@ Scene scene_around(const Scene& scene, int x, int y, double margin, std::vector<
   }
   if (faces) *faces = std::move(picked);
   return out;
+}
+
+trace::Trace trace_around(const Scene& scene, const FillOptions& options, int x, int y,
+                          TraceLevel level) {
+  trace::TraceFilter filter;
+  filter.level = level;
+  filter.triangles = trace::IndexSet::of(faces_around(scene, x, y, 0.01));
+  return trace::record_scene(scene, options, filter);
 }
 
 std::vector<int> faces_around(const Scene& scene, int x, int y, double margin) {

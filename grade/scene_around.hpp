@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "src/scene.hpp"
+#include "src/tracer.hpp"
+#include "trace/trace.hpp"
 
 namespace scantrace::grade {
 
@@ -13,5 +15,11 @@ namespace scantrace::grade {
 // boxes (the fill decides on vertices snapped to its grid, which can move them by half a grid
 // step).
 Scene scene_around(const Scene& scene, int x, int y, double margin, std::vector<int>* faces);
+
+// The trace, at `level`, of the faces around pixel (x, y) as the whole scene draws them: every
+// face is filled and only those around the pixel are recorded, so the trace — and a replay of it —
+// names each face by its index in the scene, as `why`'s text does.
+trace::Trace trace_around(const Scene& scene, const FillOptions& options, int x, int y,
+                          TraceLevel level);
 
 }  // namespace scantrace::grade

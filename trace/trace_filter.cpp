@@ -36,17 +36,28 @@ IndexSet IndexSet::parse(const std::string& text) {
     set.ranges_.emplace_back(static_cast<int>(lo), static_cast<int>(hi));
   }
   if (set.ranges_.empty()) throw std::invalid_argument("empty " + context);
+  set.merge();
+  return set;
+}
+
+IndexSet IndexSet::of(const std::vector<int>& indices) {
+  IndexSet set;
+  for (int i : indices) set.ranges_.emplace_back(i, i);
+  set.merge();
+  return set;
+}
+
+void IndexSet::merge() {
   // Sorted and merged, so that membership is one binary search.
-  std::sort(set.ranges_.begin(), set.ranges_.end());
+  std::sort(ranges_.begin(), ranges_.end());
   std::vector<std::pair<int, int>> merged;
-  for (const auto& r : set.ranges_)
+  for (const auto& r : ranges_)
     if (!merged.empty() &&
         static_cast<std::int64_t>(r.first) <= merged.back().second + std::int64_t{1})
       merged.back().second = std::max(merged.back().second, r.second);  // touching or overlapping
     else
       merged.push_back(r);
-  set.ranges_ = std::move(merged);
-  return set;
+  ranges_ = std::move(merged);
 }
 
 bool IndexSet::contains(int i) const {

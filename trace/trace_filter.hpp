@@ -16,10 +16,13 @@ class IndexSet {
   IndexSet() = default;
   // Throws std::invalid_argument naming the offending item.
   static IndexSet parse(const std::string& text);
+  // The set of `indices` (each >= 0; any order, repeats allowed).
+  static IndexSet of(const std::vector<int>& indices);
   bool contains(int i) const;
   const std::vector<std::pair<int, int>>& ranges() const { return ranges_; }
 
  private:
+  void merge();
   std::vector<std::pair<int, int>> ranges_;  // sorted, inclusive
 };
 

@@ -78,6 +78,7 @@ ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
   validate(options);
   Replayer replayer(trace, options.plan, options.size,
                     options.source.empty() ? "the trace" : options.source);
+  replayer.mark_on_every_frame(options.marked_pixel);
   const std::size_t total = replayer.steps().size();
   if (options.steps.first > total)
     throw std::invalid_argument(fmt::format(

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -14,6 +15,7 @@
 #include "trace/trace.hpp"
 #include "viz/progress.hpp"
 #include "viz/replay_steps.hpp"
+#include "viz/view_geometry.hpp"
 
 namespace scantrace::viz {
 
@@ -37,6 +39,8 @@ struct ReplayOptions {
   // frame is drawn, so a trace too long to replay is a clear error, not hours of encoding or a
   // full disk. 20,000 frames is over an hour of video at 5 fps.
   std::size_t max_frames = kDefaultMaxFrames;
+  // A pixel ringed on every frame that shows the canvas (`why --explain`: the pixel asked about).
+  std::optional<CanvasPixel> marked_pixel{};
 };
 
 // Throws std::invalid_argument naming the option that is out of range.

@@ -5,6 +5,8 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "viz/step_overlay.hpp"
+
 namespace scantrace::viz {
 namespace {
 
@@ -99,7 +101,10 @@ cv::Mat Replayer::frame(std::size_t index) {
       checkpoints_.emplace(applied_, state_.clone());
     apply(plan_.steps[applied_]);
   }
-  return composer_.compose(plan_.steps[index], index, state_);
+  cv::Mat f = composer_.compose(plan_.steps[index], index, state_);
+  if (marked_)
+    if (const auto g = geometry(index)) mark_pixel(f, *g, *marked_);
+  return f;
 }
 
 }  // namespace scantrace::viz

@@ -38,6 +38,8 @@ class Replayer {
   // Where canvas pixels appear on the frames of step `index` (nullopt on a card).
   std::optional<ViewGeometry> geometry(std::size_t index) const;
   const CanvasState& state() const { return state_; }
+  // Ring `pixel` on every frame that shows the canvas (none: no ring).
+  void mark_on_every_frame(std::optional<CanvasPixel> pixel) { marked_ = pixel; }
 
  private:
   void apply(const Step& step);
@@ -54,6 +56,7 @@ class Replayer {
   // Copies of state_ taken when `applied_` reached a multiple of checkpoint_every_ (key: applied_).
   std::map<std::size_t, CanvasState> checkpoints_;
   std::size_t checkpoint_every_ = 8;
+  std::optional<CanvasPixel> marked_;
 };
 
 // The smallest frame the layout is designed for.

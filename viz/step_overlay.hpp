@@ -16,11 +16,6 @@
 
 namespace scantrace::viz {
 
-struct CanvasPixel {
-  std::int64_t x = 0, y = 0;
-  bool operator==(const CanvasPixel&) const = default;
-};
-
 // The canvas pixel shown at frame point `p`, when `p` lies on the magnified canvas `g` and the
 // pixel on the canvas (`canvas` pixels wide and high).
 std::optional<CanvasPixel> pixel_at(const ViewGeometry& g, cv::Point p, cv::Size canvas);

@@ -18,6 +18,12 @@ struct PixelBox {
   std::int64_t height() const { return y1 - y0 + 1; }
 };
 
+// One canvas pixel, by column and row.
+struct CanvasPixel {
+  std::int64_t x = 0, y = 0;
+  bool operator==(const CanvasPixel&) const = default;
+};
+
 class ViewGeometry {
  public:
   // Fits `region` into `view` (centred, cells square). Cells never exceed `max_cell` frame

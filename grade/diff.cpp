@@ -159,8 +159,8 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
       if (!g.within(x, y, 1.5)) continue;
       const double err = max_diff(g.color_at(x, y, options.shading), got);
       if (err > match_tol) continue;
-      const bool covers = g.covers(x, y, FillRule::closed);
-      if (err < best_err - 1e-7 || (std::fabs(err - best_err) <= 1e-7 && covers && !best_covers))
+      const bool covers = f != ids.ids[i] && g.covers(x, y, FillRule::closed);
+      if ((covers && !best_covers) || (covers == best_covers && err < best_err - 1e-7))
         best = f, best_err = err, best_covers = covers;
     }
     const double bg_err = max_diff(got, background);
@@ -168,15 +168,7 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
     seen[i] = best;
   }
 
-  // Faces shown nowhere in the image, and faces shown translated by one pixel.
   const std::size_t n_faces = scene.faces.size();
-  std::vector<std::int64_t> ref_pixels(n_faces, 0), shown(n_faces, 0);
-  for (std::size_t i = 0; i < seen.size(); ++i) {
-    if (ids.ids[i] >= 0) ++ref_pixels[static_cast<std::size_t>(ids.ids[i])];
-    if (seen[i] >= 0) ++shown[static_cast<std::size_t>(seen[i])];
-  }
-  std::vector<char> missing(n_faces, 0), shifted(n_faces, 0);
-  for (std::size_t f = 0; f < n_faces; ++f) missing[f] = ref_pixels[f] > 0 && shown[f] == 0;
   // Pixels of each face in the reference (counting sort by face id).
   std::vector<std::size_t> start(n_faces + 1, 0);
   for (int id : ids.ids)
@@ -185,6 +177,51 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
   std::vector<std::size_t> pixels(start[n_faces]), fill = start;
   for (std::size_t i = 0; i < ids.ids.size(); ++i)
     if (ids.ids[i] >= 0) pixels[fill[static_cast<std::size_t>(ids.ids[i])]++] = i;
+
+  // A flat face painted all over in one wrong colour (the first vertex's colour instead of the
+  // mean, say) shows that colour on every one of its pixels. Where a neighbour's colour happens
+  // to match it, the neighbour would be taken for the face shown — but a face drawn over this one
+  // covers its pixels, and one drawn too wide reaches only some of them. So when all of a face's
+  // pixels show one colour, not its own, and the face matched does not cover them, the image shows
+  // this face in the wrong colour.
+  // (A neighbour shown right on most of its own pixels is not such a coincidence: it reached
+  // over, as a span one pixel too wide does.)
+  std::vector<std::int64_t> own(n_faces, 0);
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    if (ids.ids[i] >= 0 && seen[i] == ids.ids[i]) ++own[static_cast<std::size_t>(ids.ids[i])];
+  const auto shown_right = [&](int f) {
+    const auto u = static_cast<std::size_t>(f);
+    return 2 * own[u] > static_cast<std::int64_t>(start[u + 1] - start[u]);
+  };
+  if (options.shading == Shading::flat)
+    for (std::size_t f = 0; f < n_faces; ++f) {
+      if (start[f + 1] - start[f] < 2) continue;
+      const std::size_t p0 = pixels[start[f]];
+      bool uniform = true;
+      for (std::size_t k = start[f]; k < start[f + 1] && uniform; ++k)
+        uniform = compared[pixels[k]] &&
+                  max_diff(image(static_cast<int>(pixels[k] % W), static_cast<int>(pixels[k] / W)),
+                           image(static_cast<int>(p0 % W), static_cast<int>(p0 / W))) == 0;
+      if (!uniform || max_diff(report.reference(static_cast<int>(p0 % W), static_cast<int>(p0 / W)),
+                               image(static_cast<int>(p0 % W), static_cast<int>(p0 / W))) <= tol)
+        continue;
+      for (std::size_t k = start[f]; k < start[f + 1]; ++k) {
+        const std::size_t i = pixels[k];
+        const int I = seen[i];
+        if (I >= 0 && !shown_right(I) &&
+            !faces[I].covers(static_cast<int>(i % W), static_cast<int>(i / W), FillRule::closed))
+          seen[i] = kNoFace;
+      }
+    }
+
+  // Faces shown nowhere in the image, and faces shown translated by one pixel.
+  std::vector<std::int64_t> ref_pixels(n_faces, 0), shown(n_faces, 0);
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    if (ids.ids[i] >= 0) ++ref_pixels[static_cast<std::size_t>(ids.ids[i])];
+    if (seen[i] >= 0) ++shown[static_cast<std::size_t>(seen[i])];
+  }
+  std::vector<char> missing(n_faces, 0), shifted(n_faces, 0);
+  for (std::size_t f = 0; f < n_faces; ++f) missing[f] = ref_pixels[f] > 0 && shown[f] == 0;
   {
     std::vector<char> touched(n_faces, 0);
     for (std::size_t i : differing) {
@@ -262,7 +299,8 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
   // Pixels of a missing face that show a face drawn earlier and covering them: a skipped face or
   // a face painted over everywhere — the rest of the image decides which (below).
   std::vector<char> hidden(differing.size(), 0);
-  std::int64_t order_evidence = 0;
+  std::int64_t order_evidence = 0, edge_evidence = 0;
+  std::vector<char> ambiguous(differing.size(), 0);
   for (std::size_t k = 0; k < differing.size(); ++k) {
     const std::size_t i = differing[k];
     const int x = static_cast<int>(i % W), y = static_cast<int>(i / W);
@@ -285,13 +323,18 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
       // The image shows a face that does cover the pixel. Painted over in the wrong order, the
       // whole overlap of the two faces shows it; a face that lost its edge pixels (a row or a
       // span end dropped) shows the face below only near its outline.
-      if (pair_share(I, R) < 1.0 && faces[R].distance_to_outline(x, y) <= 1.0) {
+      // Where the two overlap only near R's outline (R's last row over the face below, say),
+      // both readings fit; the rest of the image decides (below).
+      const bool near_outline = faces[R].distance_to_outline(x, y) <= 1.0;
+      if (near_outline && pair_share(I, R) < 1.0) {
         cat = "near_boundary";
         ++report.near_boundary_missing;
         tag_missing(faces[R], x, y);
+        ++edge_evidence;
       } else {
         cat = order_category(I, R);
-        order_evidence += cat != "other";
+        ambiguous[k] = near_outline && cat != "other";
+        if (!near_outline) order_evidence += cat != "other";
       }
     } else if (I >= 0 && faces[I].distance_to_outline(x, y) <= 1.0) {
       cat = "near_boundary";
@@ -317,6 +360,24 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
   // loses most faces, painting nearest first does.
   std::int64_t n_missing = 0, n_visible = 0;
   for (std::size_t f = 0; f < n_faces; ++f) n_missing += missing[f], n_visible += ref_pixels[f] > 0;
+  // Pixels where a face covering them shows only near the outline of the face the reference
+  // shows: lost edge pixels when that is what the clear cases show (a face's last row dropped
+  // everywhere), the painter's order otherwise.
+  // (Faces hidden everywhere count for the order: lost edge pixels hide only faces a row high.)
+  std::int64_t n_hidden = 0;
+  for (char h : hidden) n_hidden += h;
+  const bool edge_mistake = edge_evidence > order_evidence + n_hidden;
+  for (std::size_t k = 0; k < differing.size(); ++k)
+    if (ambiguous[k]) {
+      if (edge_mistake) {
+        const std::size_t i = differing[k];
+        cats[k] = "near_boundary";
+        ++report.near_boundary_missing;
+        tag_missing(faces[ids.ids[i]], static_cast<int>(i % W), static_cast<int>(i / W));
+      } else {
+        ++order_evidence;
+      }
+    }
   const bool order_mistake = 5 * order_evidence >= static_cast<std::int64_t>(differing.size()) ||
                              2 * n_missing >= n_visible;
   for (std::size_t k = 0; k < differing.size(); ++k) {

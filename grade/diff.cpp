@@ -13,6 +13,7 @@
 #include "grade/face_id_render.hpp"
 #include "grade/global_mistakes.hpp"
 #include "grade/pixel_story.hpp"
+#include "src/depth_plane.hpp"
 #include "src/painter.hpp"
 
 namespace scantrace::grade {
@@ -289,7 +290,25 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
     }
     return it->second;
   };
-  const auto order_category = [&](int I, int R) -> const char* {
+  // Which face wins at (x, y) in the reference's visibility: the painter's order of mean depths,
+  // or the z-buffer's depth test at that pixel (zbuffer_canvas.hpp: the nearer wins, a tie keeps
+  // the face drawn first).
+  std::map<int, DepthPlane> planes;
+  const auto depth_at = [&](int f, int x, int y) {
+    auto it = planes.find(f);
+    if (it == planes.end()) {
+      const auto& v = scene.faces[static_cast<std::size_t>(f)];
+      const std::array<double, 3> d{scene.depth[v[0]], scene.depth[v[1]], scene.depth[v[2]]};
+      it = planes.emplace(f, DepthPlane::through(faces[f].snapped(), d)).first;
+    }
+    return it->second.at(x, y);
+  };
+  const auto order_category = [&](int I, int R, int x, int y) -> const char* {
+    if (options.visibility == Visibility::zbuffer) {
+      const double dI = depth_at(I, x, y), dR = depth_at(R, x, y);
+      if (dI == dR || static_cast<float>(dI) == static_cast<float>(dR)) return "order_tie";
+      return dI > dR ? "order" : "other";
+    }
     const bool drawn_before = depth[I] > depth[R] || (depth[I] == depth[R] && I < R);
     const bool tie =
         depth[I] == depth[R] || static_cast<float>(depth[I]) == static_cast<float>(depth[R]);
@@ -317,8 +336,8 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
       cat = "shifted";
     } else if (R >= 0 && missing[static_cast<std::size_t>(R)]) {
       cat = "missing_face";
-      hidden[k] =
-          I >= 0 && faces[I].covers(x, y, rule) && std::string(order_category(I, R)) != "other";
+      hidden[k] = I >= 0 && faces[I].covers(x, y, rule) &&
+                  std::string(order_category(I, R, x, y)) != "other";
     } else if (I >= 0 && R >= 0 && faces[I].covers(x, y, rule)) {
       // The image shows a face that does cover the pixel. Painted over in the wrong order, the
       // whole overlap of the two faces shows it; a face that lost its edge pixels (a row or a
@@ -332,7 +351,7 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
         tag_missing(faces[R], x, y);
         ++edge_evidence;
       } else {
-        cat = order_category(I, R);
+        cat = order_category(I, R, x, y);
         ambiguous[k] = near_outline && cat != "other";
         if (!near_outline) order_evidence += cat != "other";
       }
@@ -383,7 +402,8 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
   for (std::size_t k = 0; k < differing.size(); ++k) {
     const std::size_t i = differing[k];
     const int R = ids.ids[i], I = seen[i];
-    if (hidden[k] && order_mistake) cats[k] = order_category(I, R);
+    if (hidden[k] && order_mistake)
+      cats[k] = order_category(I, R, static_cast<int>(i % W), static_cast<int>(i / W));
     const std::string& cat = cats[k];
     ++report.categories[cat];
     report.category_map[i] = static_cast<std::uint8_t>(1 + category_index(cat));

@@ -108,6 +108,15 @@ class Checker {
   void finite(double v, const std::string& what) const {
     if (!std::isfinite(v)) fail(what + " is not finite (" + str(v) + ")");
   }
+  // A begun triangle's vertices are within the fill's range: beyond it the fill skips the
+  // triangle (out_of_range) instead of beginning it, and the thorough check's exact snap would
+  // overflow its integers.
+  void coordinate(double v, const std::string& what) const {
+    finite(v, what);
+    if (std::fabs(v) > kMaxCoordinate)
+      fail(what + " " + str(v) +
+           " is beyond the fill's range of ±2^30 pixels (the fill skips such a triangle)");
+  }
   void color(const Color& c, const std::string& what) const {
     for (double v : {c.r, c.g, c.b})
       if (!std::isfinite(v) || v < -kColorSlack || v > 1 + kColorSlack)
@@ -160,8 +169,8 @@ class Checker {
            " snapped vertices and " + std::to_string(b.colors.size()) + " colours");
     for (std::size_t i = 0; i < n; ++i) {
       const std::string v = tri + ": vertex " + std::to_string(i);
-      finite(b.vertices[i].x, v + " x"), finite(b.vertices[i].y, v + " y");
-      finite(b.snapped[i].x, v + " snapped x"), finite(b.snapped[i].y, v + " snapped y");
+      coordinate(b.vertices[i].x, v + " x"), coordinate(b.vertices[i].y, v + " y");
+      coordinate(b.snapped[i].x, v + " snapped x"), coordinate(b.snapped[i].y, v + " snapped y");
       color(b.colors[i], v + ": colour");
     }
     if (b.flat_color) color(*b.flat_color, tri + ": flat_color");

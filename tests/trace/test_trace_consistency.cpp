@@ -189,6 +189,18 @@ TEST_CASE("a trace whose events contradict each other is refused naming the line
     v[b]["colors"][1] = {-0.5, 0, 0};
     CHECK_THROWS_WITH(parse(v), at_line(b, "vertex 1: colour"));
   }
+  SECTION("a vertex beyond the fill's coordinate range") {
+    // Found by fuzz_trace_reader (fuzz/regressions/trace_reader/vertex-beyond-range): the
+    // thorough check snapped 9.2e19 to the grid, a float-to-integer overflow (UBSan).
+    auto t = good;
+    const std::size_t b = find(t, "triangle_begin");
+    t[b]["vertices"][0][0] = 92233720368547758084.5;
+    CHECK_THROWS_WITH(parse(t),
+                      at_line(b, "vertex 0 x 9.2233720368547758e+19 is beyond the fill's range"));
+    auto u = good;
+    u[b]["snapped"][2][1] = -2147483648.0;
+    CHECK_THROWS_WITH(parse(u), at_line(b, "vertex 2 snapped y"));
+  }
   SECTION("a scanline of a triangle that was never begun") {
     auto t = good;
     const std::size_t i = find(t, "scanline", 4);

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -18,8 +19,17 @@
 // limit of scripts/fuzz.sh, an "out-of-memory" that is matio's trust in the file, not a leak.
 // Allocations above 1 GiB therefore fail here as on a machine without that memory: malloc
 // returns NULL, which matio reports as a failed read (and scantrace as a damaged file).
+// (512 MiB, not more: each such allocation is poisoned and quarantined by ASan, and a 10-minute
+// run hit the 10-second timeout freeing one while its RSS neared the 2 GB limit; the reproducer
+// alone takes 0.8 s.) scantrace's own matrices are checked against a 128 MiB budget first, as
+// SCANTRACE_MAX_MEMORY would on a small machine.
 extern "C" const char* __asan_default_options() {
-  return "max_allocation_size_mb=1024:allocator_may_return_null=1";
+  return "max_allocation_size_mb=512:allocator_may_return_null=1";
+}
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  setenv("SCANTRACE_MAX_MEMORY", "128M", 1);
+  return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -26,6 +26,7 @@ import shlex
 import shutil
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 SKIPPED = 77
@@ -177,6 +178,9 @@ def set_up(source, binary, work, course):
     (work / "bin").mkdir()
     os.symlink(binary, clone / "build" / "cli" / "scantrace")
     os.symlink(binary, work / "bin" / "scantrace")
+    # `python3` is the interpreter running this test: Debian's, whose numpy scripts/deps.sh
+    # installs (the README says so), not whichever python3 comes first on the caller's PATH.
+    os.symlink(sys.executable, work / "bin" / "python3")
     python_build = Path(binary).parent.parent / "python"
     if python_build.is_dir():
         os.symlink(python_build, clone / "build" / "python")
@@ -259,9 +263,10 @@ def main():
         if spec.get("python") and not (clone / "build" / "python").exists():
             print(f"{where}: not run, the Python module is not built: {cmd}")
             continue
+        start = time.monotonic()
         found = run(cmd, spec, clone, work)
         ran += 1
-        print(f"{where}: {'ok' if not found else 'FAILED'}: {cmd}")
+        print(f"{where}: {'ok' if not found else 'FAILED'} ({time.monotonic() - start:.1f} s): {cmd}")
         problems += [f"{where}: `{cmd}`: {p}" for p in found]
     print(f"{ran} commands run, {len(problems)} problems")
     if problems:

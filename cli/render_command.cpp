@@ -13,6 +13,7 @@
 #include "cli/model_flags.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/stopwatch.hpp"
+#include "io/interrupt.hpp"
 #include "io/obj_loader.hpp"
 #include "io/scene_json.hpp"
 #include "src/band_render.hpp"
@@ -44,6 +45,9 @@ void run_render(const RenderArgs& args) {
                       : load_scene_file(args.scene, args.fill.clamp_colors);
   if (!model) apply_canvas_size(scene, args.model.size);  // --size overrides the file's canvas
   const double load_ms = load_clock.ms();
+  // Ctrl-C while the scene loaded stops here; the render itself does not look at the flag (a
+  // second Ctrl-C ends it at once) and the PNG's write refuses to commit after one.
+  check_interrupt();
 
   RenderStats stats;
   const Stopwatch render_clock;

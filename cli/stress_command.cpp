@@ -3,6 +3,7 @@
 // reference with every method, a Markdown table on stdout, progress on stderr. Exits 1 when the
 // default method (exact) fails any check; the other methods' failures are reported, not fatal.
 #include <chrono>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
@@ -91,8 +92,9 @@ void run_stress_command(const StressArgs& args) {
 
   spdlog::info("stress: seed {} (replay with --seed {}), {} s", options.seed, options.seed,
                options.seconds);
+  // Ctrl-C ends the run after the case in hand; the table of what was checked is printed.
+  options.stop = [] { return interrupt_signal() != 0; };
   options.progress = [](const stress::Progress& p) {
-    check_interrupt();  // about once a second: Ctrl-C stops a long run here
     spdlog::info("stress: {:.0f}/{:.0f} s, {} cases, {} failing exact cases", p.elapsed, p.budget,
                  p.cases, p.default_failures);
   };
@@ -119,6 +121,18 @@ void run_stress_command(const StressArgs& args) {
       std::printf("    %s\n", line.c_str());
     }
   if (any) std::printf("\n");
+  if (result.stopped) {
+    // Interrupted: what was checked is above; the verdict is only about those cases, and the
+    // status is the shell's for the signal (130, 143), not a pass.
+    const int signal = interrupt_signal();
+    std::printf("Interrupted by %s after %.1f s: the table holds the %lld cases checked so far.\n",
+                signal == SIGTERM ? "SIGTERM" : "SIGINT", result.seconds, cases);
+    std::fflush(stdout);
+    spdlog::warn("warning: stress: interrupted by {} after {:.1f} s; {} cases checked{}",
+                 signal == SIGTERM ? "SIGTERM" : "SIGINT", result.seconds, cases,
+                 result.default_failed ? ", exact FAILED some (reproducers on stdout)" : "");
+    throw ExitStatus{128 + signal};
+  }
 
   if (!default_checked) {
     std::printf("exact: not run (--method without exact).\n");

@@ -49,6 +49,9 @@ void write_atomically(const std::filesystem::path& target,
   };
   try {
     write(temp);
+    // A run interrupted while it computed or wrote (a render does not look at the flag while
+    // it fills) must not put its output in place of an existing one: the rename is the commit.
+    check_interrupt();
   } catch (...) {
     discard();
     throw;
@@ -94,6 +97,7 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::commit() {
+  check_interrupt();  // as in write_atomically: an interrupted run commits nothing
   out_.flush();
   const bool written = static_cast<bool>(out_);
   out_.close();

@@ -20,7 +20,7 @@ namespace detail {
 template <Canvas C>
 FillResult fill_halfspace_triangle(C& canvas, const std::array<FixedPoint, 3>& v,
                                    const std::array<Color, 3>& colors, const FillOptions& opt,
-                                   Color flat) {
+                                   Color flat, std::array<bool, 3> outline = {true, true, true}) {
   const SubpixelGrid grid(opt.subpixel_bits);
   const i64 s = grid.scale();
   const i128 area2 = static_cast<i128>(v[1].x - v[0].x) * (v[2].y - v[0].y) -
@@ -39,7 +39,9 @@ FillResult fill_halfspace_triangle(C& canvas, const std::array<FixedPoint, 3>& v
     const FixedPoint a = v[i], b = v[(i + 1) % 3];
     ex[i] = -sign * (b.y - a.y);
     ey[i] = sign * (b.x - a.x);
-    owns_ties[i] = closed || ex[i] > 0 || (ex[i] == 0 && ey[i] > 0);
+    // The closed rule takes the centres on the polygon's outline; a diagonal inside a fan
+    // (outline[i] false) keeps the top-left rule, so that its centres go to one side only.
+    owns_ties[i] = (closed && outline[i]) || ex[i] > 0 || (ex[i] == 0 && ey[i] > 0);
   }
   const i64 x_min = std::min({v[0].x, v[1].x, v[2].x}), x_max = std::max({v[0].x, v[1].x, v[2].x});
   const i64 y_min = std::min({v[0].y, v[1].y, v[2].y}), y_max = std::max({v[0].y, v[1].y, v[2].y});
@@ -91,13 +93,16 @@ FillResult fill_halfspace_triangle(C& canvas, const std::array<FixedPoint, 3>& v
 
 // A convex polygon by half-space tests: a triangle directly, a larger polygon as the fan of
 // triangles (v0, vi, vi+1), which the tie rule makes tile the polygon exactly — each pixel once.
+// Under the closed rule only the outline's edges take their ties: were the diagonals closed too,
+// the centres on them would be filled (and counted) by both of their triangles.
 template <Canvas C>
 FillResult fill_halfspace(C& canvas, std::span<const FixedPoint> pts, std::span<const Color> colors,
                           const FillOptions& opt, Color flat) {
   FillResult total;
   for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
-    const FillResult r = detail::fill_halfspace_triangle(
-        canvas, {pts[0], pts[i], pts[i + 1]}, {colors[0], colors[i], colors[i + 1]}, opt, flat);
+    const FillResult r = detail::fill_halfspace_triangle(canvas, {pts[0], pts[i], pts[i + 1]},
+                                                         {colors[0], colors[i], colors[i + 1]}, opt,
+                                                         flat, {i == 1, true, i + 2 == pts.size()});
     total.rows += r.rows;
     total.pixels += r.pixels;
   }

@@ -151,7 +151,12 @@ void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step,
   cv::Rect text = layout_.panel;
   text.height -= legend;
   draw_triangle_panel(frame, text, type_, trace_, step);
-  draw_legend(frame, layout_.panel, type_, LegendKind::triangle);
+  LegendShape shape;  // a polygon's legend names its outline and all of its edges
+  if (b && trace_.header().winding_rule) {
+    shape.polygon = true;
+    shape.edges = static_cast<int>(polygon_of(*b).size());
+  }
+  draw_legend(frame, layout_.panel, type_, LegendKind::triangle, shape);
 }
 
 void FrameComposer::scene_frame(cv::Mat& frame, const Step& step, const CanvasState& state) const {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <spdlog/fmt/fmt.h>
 #include <opencv2/imgproc.hpp>
 
 #include "viz/palette.hpp"
@@ -33,7 +34,13 @@ void line_icon(cv::Mat& f, const cv::Rect& r, const cv::Scalar& c, int thickness
     draw_segment(f, mid_left(r), mid_right(r), r, c, thickness);
 }
 
-std::vector<Entry> entries(LegendKind kind) {
+// "e0, e1, e2" for a triangle; a polygon's edges by their range ("e0 .. e4"), as many as it has.
+std::string edge_names(LegendShape shape) {
+  if (shape.edges <= 3) return "e0, e1, e2";
+  return fmt::format("e0 .. e{}", shape.edges - 1);  // ASCII: the frame font has no "…"
+}
+
+std::vector<Entry> entries(LegendKind kind, LegendShape shape = {}) {
   std::vector<Entry> e;
   auto cells = [](cv::Mat& f, const cv::Rect& r, const Typography&) {
     const int s = r.height;
@@ -49,7 +56,7 @@ std::vector<Entry> entries(LegendKind kind) {
     e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
                    line_icon(f, r, palette::kOutline, t.px(2), 0);
                  },
-                 "triangle outline (snapped)"});
+                 shape.polygon ? "polygon outline (snapped)" : "triangle outline (snapped)"});
     e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
                    line_icon(f, r, palette::kScanline, t.px(2), t.px(1));
                  },
@@ -61,7 +68,7 @@ std::vector<Entry> entries(LegendKind kind) {
                      line_icon(f, part, palette::edge_colour(i), t.px(3), t.px(1));
                    }
                  },
-                 "edges e0, e1, e2 (bold: active)"});
+                 "edges " + edge_names(shape) + " (bold: active)"});
     e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
                    const cv::Point c(r.x + r.height / 2 + t.px(2), r.y + r.height / 2);
                    cv::circle(f, c, r.height / 2, palette::edge_colour(0), cv::FILLED, cv::LINE_AA);
@@ -111,13 +118,20 @@ std::vector<Entry> entries(LegendKind kind) {
 
 }  // namespace
 
+std::vector<std::string> legend_texts(LegendKind kind, LegendShape shape) {
+  std::vector<std::string> texts;
+  for (const Entry& e : entries(kind, shape)) texts.push_back(e.text);
+  return texts;
+}
+
 int legend_height(const Typography& type, LegendKind kind) {
   const int rows = (static_cast<int>(entries(kind).size()) + 1) / 2;
   return type.line_height(TextStyle::small) * (rows + 1) + type.px(6);
 }
 
-void draw_legend(cv::Mat& frame, const cv::Rect& area, const Typography& type, LegendKind kind) {
-  const std::vector<Entry> list = entries(kind);
+void draw_legend(cv::Mat& frame, const cv::Rect& area, const Typography& type, LegendKind kind,
+                 LegendShape shape) {
+  const std::vector<Entry> list = entries(kind, shape);
   const int h = legend_height(type, kind);
   int y = area.y + area.height - h;
   cv::line(frame, {area.x, y}, {area.x + area.width, y}, palette::kPanelBorder, 1);

@@ -1,5 +1,8 @@
 #pragma once
 // The legend: every colour and mark of the view, drawn with the same primitives the view uses.
+#include <string>
+#include <vector>
+
 #include <opencv2/core.hpp>
 
 #include "viz/typography.hpp"
@@ -8,8 +11,19 @@ namespace scantrace::viz {
 
 enum class LegendKind { triangle, scene };
 
+// What the one-shape view shows: a triangle (3 edges) or a general polygon of `edges` edges
+// (over all its contours); its legend names the shape and its edges as they are.
+struct LegendShape {
+  bool polygon = false;
+  int edges = 3;
+};
+
+// The legend's entries, in order (the texts beside the icons).
+std::vector<std::string> legend_texts(LegendKind kind, LegendShape shape = {});
+
 int legend_height(const Typography& type, LegendKind kind);
 // Draws the legend in `area`, bottom-aligned.
-void draw_legend(cv::Mat& frame, const cv::Rect& area, const Typography& type, LegendKind kind);
+void draw_legend(cv::Mat& frame, const cv::Rect& area, const Typography& type, LegendKind kind,
+                 LegendShape shape = {});
 
 }  // namespace scantrace::viz

@@ -10,6 +10,22 @@
 #include "io/interrupt.hpp"
 
 namespace scantrace::viz {
+namespace {
+
+// "H.264", "MPEG-4 part 2": the names the warning gives the codecs.
+std::string codec_label(const std::string& name) {
+  if (name == "h264") return "H.264";
+  if (name == "mpeg4") return "MPEG-4 part 2";
+  return name;
+}
+
+std::string fourcc_of(std::span<const VideoCodec> codecs, const std::string& name) {
+  for (const VideoCodec& c : codecs)
+    if (name == c.name) return c.fourcc;
+  return "?";
+}
+
+}  // namespace
 
 void check_frame(const cv::Mat& frame, cv::Size size, const std::string& sink) {
   if (frame.type() != CV_8UC3 || frame.size() != size)
@@ -18,7 +34,8 @@ void check_frame(const cv::Mat& frame, cv::Size size, const std::string& sink) {
         sink, frame.cols, frame.rows, frame.type(), size.width, size.height));
 }
 
-VideoFile::VideoFile(std::filesystem::path path, cv::Size size, double fps)
+VideoFile::VideoFile(std::filesystem::path path, cv::Size size, double fps,
+                     std::span<const VideoCodec> codecs)
     : path_(std::move(path)), temp_(temporary_name_keeping_extension(path_)), size_(size) {
   if (size.width % 2 || size.height % 2)
     throw std::invalid_argument(path_.string() + ": video frames must have even sizes, not " +
@@ -29,12 +46,8 @@ VideoFile::VideoFile(std::filesystem::path path, cv::Size size, double fps)
     throw std::runtime_error(path_.string() + ": cannot write: no directory " + parent.string());
   // The FFmpeg backend only: it is the one that writes MP4 files, and asking the others
   // (GStreamer) first fills stderr with their failures.
-  struct Codec {
-    const char* fourcc;
-    const char* name;
-  };
   register_temporary(temp_);
-  for (const Codec c : {Codec{"avc1", "h264"}, Codec{"mp4v", "mpeg4"}}) {
+  for (const VideoCodec& c : codecs) {
     try {
       writer_.open(temp_.string(), cv::CAP_FFMPEG,
                    cv::VideoWriter::fourcc(c.fourcc[0], c.fourcc[1], c.fourcc[2], c.fourcc[3]), fps,
@@ -56,11 +69,11 @@ VideoFile::VideoFile(std::filesystem::path path, cv::Size size, double fps)
                              "'mp4v' through OpenCV's FFmpeg backend; is the directory "
                              "writable?)");
   }
-  if (codec_ != "h264")
+  if (codec_ != codecs.front().name)
     spdlog::warn(
-        "warning: {}: the H.264 encoder (fourcc avc1) is not available; writing "
-        "MPEG-4 part 2 (mp4v) instead",
-        path_.string());
+        "warning: {}: the {} encoder (fourcc {}) is not available; writing {} ({}) instead",
+        path_.string(), codec_label(codecs.front().name), codecs.front().fourcc,
+        codec_label(codec_), fourcc_of(codecs, codec_));
 }
 
 VideoFile::~VideoFile() {

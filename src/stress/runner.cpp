@@ -100,7 +100,8 @@ RunResult run_stress(const RunOptions& o, const std::vector<Rasterizer*>& raster
   const std::uint64_t limit = o.only_case ? 1 : o.max_cases;
   long long cases = 0;
   double last_report = 0;
-  for (int round = 0;; ++round) {
+  bool stopped = false;
+  for (int round = 0; !stopped; ++round) {
     bool ran = false;
     for (std::size_t fi = 0; fi < n; ++fi) {
       if (done_cases[fi] >= limit) continue;
@@ -112,7 +113,10 @@ RunResult run_stress(const RunOptions& o, const std::vector<Rasterizer*>& raster
         ++done_cases[fi];
         ++cases;
         ran = true;
-      } while (done_cases[fi] < limit && elapsed() - slice_start < slice && elapsed() < o.seconds);
+        stopped = o.stop && o.stop();
+      } while (!stopped && done_cases[fi] < limit && elapsed() - slice_start < slice &&
+               elapsed() < o.seconds);
+      if (stopped) break;
       if (o.progress && elapsed() - last_report >= 1.0) {
         last_report = elapsed();
         o.progress({last_report, o.seconds, cases, run.default_failures()});
@@ -120,7 +124,9 @@ RunResult run_stress(const RunOptions& o, const std::vector<Rasterizer*>& raster
     }
     if (!ran || elapsed() >= o.seconds) break;
   }
-  return run.finish(elapsed());
+  RunResult result = run.finish(elapsed());
+  result.stopped = stopped;
+  return result;
 }
 
 }  // namespace scantrace::stress

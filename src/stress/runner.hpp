@@ -31,6 +31,9 @@ struct RunOptions {
   int reproducers_per_cell = 10;           // for the methods other than the default (which get all)
   std::string default_method = "exact";    // the method whose failures fail the run
   std::function<void(const Progress&)> progress;  // called about once a second
+  // Asked after every case: true ends the run there, with the cases checked so far (Ctrl-C in
+  // the command: the table of what was checked is still printed).
+  std::function<bool()> stop;
 };
 
 // Reproducers kept per cell of the default method: all of its failures, unless it is broken so
@@ -43,6 +46,7 @@ struct RunResult {
   std::vector<CellStats> cells;  // family-major, in the order of the options and rasterizers
   bool default_failed = false;   // the default method failed a check
   long long default_failing_cases = 0;
+  bool stopped = false;  // RunOptions::stop ended the run before its budget
 };
 
 RunResult run_stress(const RunOptions& options, const std::vector<Rasterizer*>& rasterizers);

@@ -1,24 +1,26 @@
 // Bad input gets one clear line and exit status 1; budgets refuse before anything is written;
 // an interrupted run (SIGINT, SIGTERM) leaves nothing under the output's name and no temporary.
-#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
-#include <chrono>
-#include <thread>
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "child_process.hpp"
 #include "cli_test_support.hpp"
 #include "trace/trace.hpp"
 
 using namespace scantrace;
+using scantrace::test::Child;
 using scantrace::test::file_names;
+using scantrace::test::has_content;
 using scantrace::test::read_text;
 using scantrace::test::run_scantrace;
+using scantrace::test::spawn_scantrace;
 using scantrace::test::TempDir;
+using scantrace::test::temporary;
 using scantrace::test::write_text;
 
 namespace {
@@ -30,45 +32,6 @@ std::string square_scene(int size) {
          R"(]], "vcolors": [[1,0,0],[0,1,0],[0,0,1],[1,1,0]], "faces": [[0,1,2],[1,3,2]],)"
          R"( "depth": [1,1,1,1], "width": )" +
          s + R"(, "height": )" + s + "}";
-}
-
-// Starts scantrace in `cwd` with `args` (stdout and stderr to files there) and returns its pid.
-pid_t spawn_scantrace(const std::filesystem::path& cwd, const std::vector<std::string>& args) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    if (::chdir(cwd.c_str()) != 0) ::_exit(127);
-    const int out = ::open(".stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err = ::open(".stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(out, 1);
-    ::dup2(err, 2);
-    std::vector<char*> argv{const_cast<char*>(SCANTRACE_BINARY)};
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(SCANTRACE_BINARY, argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-
-// Waits (up to a minute) until `file` exists and is not empty.
-bool wait_for_file(const std::filesystem::path& file) {
-  for (int i = 0; i < 6000; ++i) {
-    std::error_code ec;
-    if (std::filesystem::exists(file, ec) && std::filesystem::file_size(file, ec) > 0) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return false;
-}
-
-int exit_status_of(pid_t pid) {
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
-}
-
-// The temporary name io/atomic_write.hpp gives `name` in a process `pid`.
-std::string temporary(const std::string& name, pid_t pid) {
-  return "." + name + ".tmp-" + std::to_string(pid);
 }
 
 }  // namespace
@@ -193,12 +156,12 @@ TEST_CASE("SIGINT during a long trace leaves neither the trace nor a temporary f
           "[command][robustness][signal]") {
   TempDir dir;
   write_text(dir / "big.json", square_scene(3000));
-  const pid_t pid =
-      spawn_scantrace(dir.path(), {"trace", "big.json", "--level", "pixel", "-o", "big.jsonl"});
+  Child child(
+      spawn_scantrace(dir.path(), {"trace", "big.json", "--level", "pixel", "-o", "big.jsonl"}));
   // Interrupt once the trace is being written: the temporary file has content.
-  REQUIRE(wait_for_file(dir / temporary("big.jsonl", pid)));
-  ::kill(pid, SIGINT);
-  CHECK(exit_status_of(pid) == 130);
+  REQUIRE(child.wait_until([&] { return has_content(dir / temporary("big.jsonl", child.pid())); }));
+  child.signal(SIGINT);
+  CHECK(child.wait() == 130);
   const std::string err = read_text(dir / ".stderr.txt");
   CHECK_THAT(err, Catch::Contains("interrupted by SIGINT"));
   CHECK(file_names(dir.path()) == std::vector<std::string>{"big.json"});
@@ -207,12 +170,12 @@ TEST_CASE("SIGINT during a long trace leaves neither the trace nor a temporary f
 TEST_CASE("SIGTERM during a long video leaves neither the video nor a temporary file",
           "[command][robustness][signal]") {
   TempDir dir;
-  const pid_t pid =
-      spawn_scantrace(dir.path(), {"explain", "--triangle", "10,10 300,60 80,700", "--size",
-                                   "400x720", "--rows-per-step", "1", "-o", "v.mp4"});
-  REQUIRE(wait_for_file(dir / (temporary("v.mp4", pid) + ".mp4")));
-  ::kill(pid, SIGTERM);
-  CHECK(exit_status_of(pid) == 143);
+  Child child(spawn_scantrace(dir.path(), {"explain", "--triangle", "10,10 300,60 80,700", "--size",
+                                           "400x720", "--rows-per-step", "1", "-o", "v.mp4"}));
+  REQUIRE(child.wait_until(
+      [&] { return has_content(dir / (temporary("v.mp4", child.pid()) + ".mp4")); }));
+  child.signal(SIGTERM);
+  CHECK(child.wait() == 143);
   CHECK_THAT(read_text(dir / ".stderr.txt"), Catch::Contains("interrupted by SIGTERM"));
   CHECK(file_names(dir.path()).empty());
 }

@@ -1,5 +1,4 @@
 // Scene files: round trip, defaults, and error messages that name the file and the element.
-#include <chrono>
 #include <sstream>
 #include <string>
 
@@ -168,24 +167,19 @@ TEST_CASE("scene errors name the file and the element", "[scene_json][errors]") 
   }
 }
 
-TEST_CASE("the course scene loads quickly", "[scene_json][shared_data]") {
+TEST_CASE("the course scene loads", "[scene_json][shared_data]") {
   const auto file = test::shared_data("hw1_2024.json");
   if (!std::filesystem::exists(file)) {
     WARN("skipped: " << file << " does not exist");
     return;
   }
-  const auto start = std::chrono::steady_clock::now();
   const Scene s = load_scene(file);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   CHECK(s.vertices.size() == 4999);
   CHECK(s.faces.size() == 10000);
   CHECK(s.width == 512);
   CHECK(s.height == 512);
-  // The target is well under 100 ms in a Release build; the bound here only catches an
-  // accidental quadratic, not a slow (e.g. Debug or sanitizer) build.
-  INFO("load_scene took " << ms << " ms");
-  CHECK(ms < 2000);
+  // How fast it loads is measured by `scantrace bench` and bench/, never asserted here: a bound
+  // in milliseconds fails on a loaded machine (issue 20).
 }
 
 TEST_CASE("numbers beyond a double are an input error with their position (found by fuzzing)",

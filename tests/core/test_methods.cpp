@@ -3,6 +3,7 @@
 // where that arithmetic is inexact they must (and do) lose or gain pixels.
 #include <catch2/catch.hpp>
 
+#include "counting_canvas.hpp"
 #include "random.hpp"
 #include "raster_compare.hpp"
 #include "reference_raster.hpp"
@@ -52,25 +53,62 @@ TEST_CASE("halfspace equals the reference on every pixel, colours included", "[m
 
 TEST_CASE("halfspace fills convex polygons exactly once per pixel, like the edge table",
           "[methods]") {
-  // A hexagon: the fan triangles (v0, vi, vi+1) must tile it with no pixel twice or missing.
-  std::vector<Vec2> hex;
+  // Two hexagons: one with vertices anywhere, one with integer vertices, whose fan diagonals run
+  // through pixel centres (ties that the shared-edge rule must give to exactly one triangle).
+  std::vector<Vec2> any;
   for (int k = 0; k < 6; ++k)
-    hex.push_back({30 + 20.3 * std::cos(0.4 + k * 1.0471975511965976),
+    any.push_back({30 + 20.3 * std::cos(0.4 + k * 1.0471975511965976),
                    25 + 20.3 * std::sin(0.4 + k * 1.0471975511965976)});
+  const std::vector<Vec2> integer{{12, 4}, {32, 4}, {42, 24}, {32, 44}, {12, 44}, {2, 24}};
   const std::vector<Color> colors(6, Color{0.2, 0.4, 0.6});
-  for (Method m : {Method::exact, Method::halfspace}) {
-    RgbImage img(64, 52, sttest::kSentinel);
-    const FillResult r =
-        fill_convex_polygon(img, hex, colors, FillOptions{.shading = Shading::flat, .method = m});
-    const sttest::RefRaster ref = sttest::ref_rasterize(64, 52, hex, colors, FillRule::top_left);
-    CHECK(r.pixels == ref.count);
-    CHECK(sttest::first_difference(
-              img, ref,
-              [](int, int) {
-                return Color{0.2, 0.4, 0.6};
-              },
-              1e-6)
-              .empty());
+  for (const std::vector<Vec2>* polygon : std::array<const std::vector<Vec2>*, 2>{&any, &integer}) {
+    const std::vector<Vec2>& hex = *polygon;
+    for (FillRule rule : {FillRule::top_left, FillRule::closed}) {
+      const sttest::RefRaster ref = sttest::ref_rasterize(64, 52, hex, colors, rule);
+      for (Method m : {Method::exact, Method::halfspace}) {
+        const FillOptions opt{.shading = Shading::flat, .fill_rule = rule, .method = m};
+        INFO(sttest::format_points(hex) << to_string(rule) << ", " << to_string(m));
+        // The polygon in one fill: the reference's pixels, once each.
+        RgbImage img(64, 52, sttest::kSentinel);
+        const FillResult r = fill_convex_polygon(img, hex, colors, opt);
+        CHECK(r.pixels == ref.count);
+        CHECK(sttest::first_difference(
+                  img, ref,
+                  [](int, int) {
+                    return Color{0.2, 0.4, 0.6};
+                  },
+                  1e-6)
+                  .empty());
+        // The fan (v0, vi, vi+1), filled triangle by triangle: under the top-left rule it tiles
+        // the hexagon, every pixel of the polygon exactly once and none outside it; under the
+        // closed rule the pixels on a diagonal are filled by both of its triangles, and every
+        // other pixel once.
+        sttest::CountingCanvas counts(64, 52);
+        FillScratch scratch;
+        for (std::size_t i = 1; i + 1 < hex.size(); ++i) {
+          const std::array<Vec2, 3> tri{hex[0], hex[i], hex[i + 1]};
+          const std::array<Color, 3> c{colors[0], colors[0], colors[0]};
+          fill_polygon(counts, PolygonInput{tri, c, static_cast<int>(i), {}}, opt, scratch);
+        }
+        int missing = 0, twice = 0, outside = 0;
+        for (int y = 0; y < 52; ++y)
+          for (int x = 0; x < 64; ++x) {
+            const int n = counts.count(x, y);
+            if (!ref.at(x, y))
+              outside += n != 0;
+            else if (n == 0)
+              ++missing;
+            else if (n > 1)
+              ++twice;
+          }
+        CHECK(counts.out_of_bounds() == 0);
+        CHECK(missing == 0);
+        CHECK(outside == 0);
+        if (rule == FillRule::top_left) CHECK(twice == 0);
+        // The integer hexagon's diagonals do pass through centres: the closed rule shows it.
+        if (rule == FillRule::closed && polygon == &integer) CHECK(twice > 0);
+      }
+    }
   }
 }
 

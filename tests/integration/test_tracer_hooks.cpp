@@ -70,7 +70,12 @@ TEST_CASE("scanline spans and pixel events equal what the fill wrote", "[trace]"
           REQUIRE(s.has_span_colors);
           const Color first = img(static_cast<int>(s.x_begin), static_cast<int>(s.y)).color();
           const Color last = img(static_cast<int>(s.x_end - 1), static_cast<int>(s.y)).color();
+          // Every channel of both ends (a colour with two channels swapped must fail).
           CHECK(s.span_begin.r == Approx(first.r).margin(1e-6));
+          CHECK(s.span_begin.g == Approx(first.g).margin(1e-6));
+          CHECK(s.span_begin.b == Approx(first.b).margin(1e-6));
+          CHECK(s.span_end.r == Approx(last.r).margin(1e-6));
+          CHECK(s.span_end.g == Approx(last.g).margin(1e-6));
           CHECK(s.span_end.b == Approx(last.b).margin(1e-6));
         }
       }

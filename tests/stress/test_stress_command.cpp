@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "../cli/child_process.hpp"
+
 namespace {
 
 struct Output {
@@ -21,7 +23,7 @@ struct Output {
   std::string out;  // stdout only; stderr holds the progress
 };
 
-Output scantrace(const std::string& args) {
+Output run_scantrace(const std::string& args) {
   const std::string command = std::string(SCANTRACE_BINARY) + " " + args + " 2>/dev/null";
   Output o;
   FILE* pipe = popen(command.c_str(), "r");
@@ -56,7 +58,7 @@ constexpr int kCases = 2, kExtra = 7, kGaps = 8, kOverlaps = 9, kFailing = 17;
 }  // namespace
 
 TEST_CASE("stress prints the seed and a table, and passes for exact", "[stress][command]") {
-  const Output o = scantrace(
+  const Output o = run_scantrace(
       "stress --seconds 0 --seed 9 --family meshes,centres "
       "--method exact --method opencv");
   CAPTURE(o.out);
@@ -79,7 +81,7 @@ TEST_CASE("stress prints the seed and a table, and passes for exact", "[stress][
 }
 
 TEST_CASE("stress draws a fresh seed when none is given, and prints it", "[stress][command]") {
-  const Output o = scantrace("stress --seconds 0 --family subpixel --method exact");
+  const Output o = run_scantrace("stress --seconds 0 --family subpixel --method exact");
   CHECK(o.status == 0);
   const std::size_t at = o.out.find("--seed ");
   REQUIRE(at != std::string::npos);
@@ -87,7 +89,7 @@ TEST_CASE("stress draws a fresh seed when none is given, and prints it", "[stres
 }
 
 TEST_CASE("stress --help explains families, methods and exit status", "[stress][command]") {
-  const Output o = scantrace("stress --help");
+  const Output o = run_scantrace("stress --help");
   CHECK(o.status == 0);
   for (const char* word :
        {"--seconds", "--seed", "--family", "--method", "--case", "slivers", "near-collinear",
@@ -96,9 +98,9 @@ TEST_CASE("stress --help explains families, methods and exit status", "[stress][
 }
 
 TEST_CASE("stress usage errors exit 2", "[stress][command]") {
-  CHECK(scantrace("stress --family nope").status == 2);
-  CHECK(scantrace("stress --method fast").status == 2);
-  CHECK(scantrace("stress --seconds -1").status == 2);
+  CHECK(run_scantrace("stress --family nope").status == 2);
+  CHECK(run_scantrace("stress --method fast").status == 2);
+  CHECK(run_scantrace("stress --seconds -1").status == 2);
 }
 
 TEST_CASE("the method flag selects the fill method of trace and render", "[stress][command]") {
@@ -114,15 +116,49 @@ TEST_CASE("the method flag selects the fill method of trace and render", "[stres
   // Not only accepted: the float method's x += dx/dy in float32 gives other active-edge x values
   // than the exact method, so its trace differs — while two exact traces are byte-identical.
   const std::string tri = "trace --triangle \"0,0 40,3 7,30\" --size 48x48 ";
-  REQUIRE(scantrace(tri + "--method float -o " + out).status == 0);
+  REQUIRE(run_scantrace(tri + "--method float -o " + out).status == 0);
   const std::string float_trace = slurp(out);
-  REQUIRE(scantrace(tri + "--method exact -o " + out).status == 0);
+  REQUIRE(run_scantrace(tri + "--method exact -o " + out).status == 0);
   const std::string exact_trace = slurp(out);
-  REQUIRE(scantrace(tri + "-o " + out).status == 0);
+  REQUIRE(run_scantrace(tri + "-o " + out).status == 0);
   CHECK(slurp(out) == exact_trace);
   CHECK(!float_trace.empty());
   CHECK(float_trace != exact_trace);
   std::remove(out.c_str());
-  CHECK(scantrace("trace --triangle \"0,0 40,3 7,30\" --method fast -o " + out).status == 2);
-  CHECK(scantrace("render --help").out.find("--method") != std::string::npos);
+  CHECK(run_scantrace("trace --triangle \"0,0 40,3 7,30\" --method fast -o " + out).status == 2);
+  CHECK(run_scantrace("render --help").out.find("--method") != std::string::npos);
+}
+
+TEST_CASE("stress interrupted by SIGINT prints the table of what it checked, then exits 130",
+          "[stress][command][signal]") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("scantrace-stress-sigint-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  scantrace::test::Child child(
+      scantrace::test::spawn_scantrace(dir, {"stress", "--seconds", "3600", "--seed", "5",
+                                             "--family", "centres,slivers", "--method", "exact"}));
+  // Started: the first progress line (printed after a second of checking) is on stderr.
+  const auto progress = [&] {
+    std::ifstream err(dir / ".stderr.txt");
+    std::stringstream s;
+    s << err.rdbuf();
+    return s.str().find("stress: 1/3600 s") != std::string::npos;
+  };
+  REQUIRE(child.wait_until(progress));
+  child.signal(SIGINT);
+  CHECK(child.wait() == 130);
+  std::ifstream out_file(dir / ".stdout.txt");
+  std::stringstream out;
+  out << out_file.rdbuf();
+  std::filesystem::remove_all(dir);
+  const std::string text = out.str();
+  CAPTURE(text);
+  CHECK(text.find("# scantrace stress") != std::string::npos);
+  CHECK(text.find("Interrupted by SIGINT after") != std::string::npos);
+  CHECK(text.find("exact: PASS") == std::string::npos);  // not a verdict on the whole budget
+  // The table holds the cases checked before the signal.
+  const std::vector<std::string> centres = row(text, "centres", "exact");
+  REQUIRE(centres.size() == 18);
+  CHECK(std::stoll(centres[kCases]) > 0);
+  CHECK(centres[kFailing] == "0");
 }

@@ -6,6 +6,7 @@
 #include "trace/record.hpp"
 #include "viz/canvas_state.hpp"
 #include "viz/frame_composer.hpp"
+#include "viz/legend.hpp"
 #include "viz/replay_steps.hpp"
 #include "viz_test_support.hpp"
 
@@ -65,4 +66,22 @@ TEST_CASE("every step of a polygon's replay composes into a frame", "[viz][polyg
     CHECK(frame.cols == 960);
     CHECK(frame.rows == 540);
   }
+}
+
+TEST_CASE("a polygon's legend names a polygon and all of its edges", "[viz][polygon][legend]") {
+  // A five-edge star: not "triangle outline", not "edges e0, e1, e2" (issue 20).
+  const std::vector<std::string> star =
+      viz::legend_texts(viz::LegendKind::triangle, {.polygon = true, .edges = 5});
+  CHECK(std::find(star.begin(), star.end(), "polygon outline (snapped)") != star.end());
+  CHECK(std::find(star.begin(), star.end(), "edges e0 .. e4 (bold: active)") != star.end());
+  for (const std::string& text : star) {
+    CHECK_THAT(text, !Catch::Contains("triangle"));
+    CHECK_THAT(text, !Catch::Contains("e0, e1, e2"));
+  }
+  // A triangle's legend is unchanged.
+  const std::vector<std::string> triangle = viz::legend_texts(viz::LegendKind::triangle);
+  CHECK(std::find(triangle.begin(), triangle.end(), "triangle outline (snapped)") !=
+        triangle.end());
+  CHECK(std::find(triangle.begin(), triangle.end(), "edges e0, e1, e2 (bold: active)") !=
+        triangle.end());
 }

@@ -88,6 +88,24 @@ inline bool have_ffprobe() {
   return std::system("command -v ffprobe >/dev/null 2>&1") == 0;
 }
 
+// Whether FFmpeg (the library OpenCV's backend writes with) has a software H.264 encoder, as
+// `ffmpeg -encoders` lists them: 1 yes, 0 no, -1 ffmpeg is not installed (unknown). Hardware
+// encoders (nvenc, vaapi, ...) are listed without a device and are not counted.
+inline int have_software_h264_encoder() {
+  std::FILE* p = ::popen("ffmpeg -hide_banner -encoders 2>/dev/null", "r");
+  if (!p) return -1;
+  bool any_line = false, found = false;
+  char line[512];
+  while (std::fgets(line, sizeof line, p)) {
+    const std::string s(line);
+    any_line = true;
+    if (s.find(" libx264 ") != std::string::npos || s.find(" libopenh264 ") != std::string::npos)
+      found = true;
+  }
+  ::pclose(p);
+  return any_line ? found : -1;
+}
+
 // ffprobe's view of the first video stream: codec_name, width, height, nb_read_frames.
 inline std::map<std::string, std::string> ffprobe(const std::filesystem::path& video) {
   const std::string command =

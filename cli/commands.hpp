@@ -1,5 +1,5 @@
 #pragma once
-// The subcommands of the `scantrace` binary (design.md §7). Each add_*_command registers its
+// The subcommands of the `scantrace` binary (docs/design.md §7). Each add_*_command registers its
 // options on the app and returns the action to run once the whole command line has parsed, so
 // that parsing (usage errors, exit status 2) and running (bad input, exit status 1) stay apart.
 #include <functional>

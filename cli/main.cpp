@@ -1,4 +1,4 @@
-// The `scantrace` command: subcommand dispatch and exit status (design.md §7):
+// The `scantrace` command: subcommand dispatch and exit status (docs/design.md §7):
 // 0 success, 1 bad input data or a failed output (one line on stderr naming the file, the element
 // and the problem), 2 usage error.
 #include <exception>

@@ -1,5 +1,5 @@
 #pragma once
-// Output files appear complete or not at all (design.md §7): the content is written under a
+// Output files appear complete or not at all (docs/design.md §7): the content is written under a
 // temporary name in the target's directory (".NAME.tmp-PID", hidden, so an interrupted run never
 // leaves a file that looks finished) and renamed over the target only once it is complete; a
 // rename within one directory is atomic on POSIX file systems.

@@ -1,7 +1,7 @@
 #pragma once
 // The error every reader of user-supplied files throws: one line naming the file, the element and
 // the problem ("scene.json: faces[812]: vertex index 5012 is out of range (4999 vertices)"), so the
-// command line can print it as is and exit with status 1 (design.md §7).
+// command line can print it as is and exit with status 1 (docs/design.md §7).
 #include <stdexcept>
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The scene file: a JSON object with the course's keys (design.md §2, README "Scene files")
+// The scene file: a JSON object with the course's keys (docs/design.md §2, README "Scene files")
 //
 //   vertices    L×2  [x, y] pixels, x = column, y = row (pointing down)
 //   vcolors     L×3  [r, g, b] in [0, 1]

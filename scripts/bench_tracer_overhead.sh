@@ -12,17 +12,22 @@ bash scripts/build.sh >/dev/null
 with=build/bench/bench_tracer_overhead
 without=build/bench/bench_tracer_overhead_nohooks
 
-# The untraced render as the compiler emitted it, with addresses removed (they differ between two
-# binaries even when the code is the same).
+# The untraced render as the compiler emitted it: render_untraced and every function instantiated
+# for the no-op tracer (which of them the compiler inlines into which changes with the code, so
+# all are listed, by name), with addresses removed (they differ between two binaries even when
+# the code is the same).
 code_of() {
-  local symbol
-  symbol=$(nm "$1" | awk '{print $3}' | while read -r s; do
-    if c++filt "$s" | grep -q '^scantrace::RenderStats scantrace::render_into<scantrace::ImageCanvas<scantrace::Rgb32f>, scantrace::NoTracer>.*\[clone .isra.0\]$'; then
-      echo "$s"; break; fi; done)
-  [ -n "$symbol" ] || { echo "symbol not found in $1" >&2; return 1; }
-  objdump -d --no-show-raw-insn --disassemble="$symbol" "$1" |
-    sed -n '/^[0-9a-f]* <.*>:$/,$p' | tail -n +2 | cut -f2- |
-    sed -E 's/0x[0-9a-f]+//g; s/[0-9a-f]{4,}//g; s/<[^>]*>//g'
+  local listing
+  listing=$(nm --defined-only "$1" | awk '$2 ~ /^[TtWw]$/ {print $3}' |
+    paste -d'|' - <(nm --defined-only "$1" | awk '$2 ~ /^[TtWw]$/ {print $3}' | c++filt) |
+    grep -E '\|(scantrace::bench::render_untraced\(|.*NoTracer)' | sort -t'|' -k2)
+  [ -n "$listing" ] || { echo "no untraced render found in $1" >&2; return 1; }
+  while IFS='|' read -r symbol name; do
+    echo "== $name"
+    objdump -d --no-show-raw-insn --disassemble="$symbol" "$1" |
+      sed -n '/^[0-9a-f]* <.*>:$/,$p' | tail -n +2 | cut -f2- |
+      sed -E 's/0x[0-9a-f]+//g; s/[0-9a-f]{4,}//g; s/<[^>]*>//g'
+  done <<<"$listing"
 }
 # Into variables first: a failure inside a process substitution would not stop the script, and
 # two empty listings would compare "identical" (it once printed "identical ... (0 instructions)").
@@ -33,7 +38,7 @@ if [ -z "$code_with" ] || [ -z "$code_without" ]; then
   exit 1
 fi
 if [ "$code_with" = "$code_without" ]; then
-  echo "machine code of the untraced render: identical in both builds ($(wc -l <<<"$code_with") instructions)"
+  echo "machine code of the untraced render: identical in both builds ($(grep -c '^==' <<<"$code_with") functions, $(grep -vc '^==' <<<"$code_with") instructions)"
 else
   echo "machine code of the untraced render: DIFFERS between the builds" >&2
   exit 1

@@ -78,13 +78,9 @@ Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads
     for (int b; (b = next_band.fetch_add(1)) < bands;) {
       BandCanvas<P> canvas(image, {b * band_height, std::min(scene.height, (b + 1) * band_height)});
       for (int f : by_band[b]) {
-        const auto& face = scene.faces[f];
-        const std::array<Vec2, 3> v{scene.vertices[face[0]], scene.vertices[face[1]],
-                                    scene.vertices[face[2]]};
-        const std::array<Color, 3> c{scene.vcolors[face[0]], scene.vcolors[face[1]],
-                                     scene.vcolors[face[2]]};
+        const FaceCorners c = corners_of(scene, scene.faces[f]);
         const FillResult r =
-            fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, none);
+            fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f]}, opt, scratch, none);
         if (r.skipped == SkipReason::none) std::atomic_ref<char>(filled[f]).store(1);
         if (r.skipped == SkipReason::culled) std::atomic_ref<char>(filled[f]).store(2);
         pixels[b] += r.pixels;

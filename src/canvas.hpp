@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "color.hpp"
+#include "flat_span.hpp"
 #include "image.hpp"
 
 namespace scantrace {
@@ -99,24 +100,6 @@ class ImageCanvas {
     }
   }
   P* row(int y) { return image_.row(y); }
-
-  // The value is a local copy on purpose: std::fill reads it through a reference, and with 8-bit
-  // pixels every byte stored may alias it, so it would be reloaded for every pixel. Long spans
-  // are written as a few pixels copied onto the rest in doubling blocks: memcpy moves a 3-byte
-  // pattern as fast as memset moves a 1-byte one, a pixel loop does not.
-  static void fill_pixels(P* first, P* last, P value) {
-    constexpr std::ptrdiff_t kShort = 32;
-    if (last - first <= kShort) {
-      for (; first != last; ++first) *first = value;
-      return;
-    }
-    for (P* p = first; p != first + kShort; ++p) *p = value;
-    for (std::ptrdiff_t done = kShort, n = last - first; done < n;) {
-      const std::ptrdiff_t chunk = std::min(done, n - done);
-      std::memcpy(first + done, first, static_cast<std::size_t>(chunk) * sizeof(P));
-      done += chunk;
-    }
-  }
 
  private:
   Image<P>& image_;

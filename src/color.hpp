@@ -1,5 +1,5 @@
 #pragma once
-// RGB colour with components in [0, 1] (design.md §2). Arithmetic is in double so that
+// RGB colour with components in [0, 1] (docs/design.md §2). Arithmetic is in double so that
 // interpolation over long spans keeps well inside the 1e-4 accuracy budget; conversion to 8 bits
 // and to OpenCV's BGR order happens only at the file boundary.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Following an edge's intersection with the scanlines, three ways. The sweep (scanline_fill.hpp)
+// Following an edge's intersection with the scanlines, three ways. The sweep (scanline_sweep.hpp)
 // is the same for all of them; only this arithmetic differs, which is what makes the methods
 // comparable (docs/accuracy.md).
 //
@@ -118,21 +118,5 @@ struct FloatStepper {
   }
   std::partial_ordering operator<=>(const FloatStepper& o) const { return xf <=> o.xf; }
 };
-
-// An edge in the active list: its geometry and where the stepper has it on the current row.
-template <class Stepper>
-struct ActiveEdge {
-  Edge edge;
-  Stepper at;
-};
-
-// Order of two active edges on the current row: by x, then (where they meet) by slope, so that
-// two edges leaving a common top vertex are ordered as they are just below it.
-template <class Stepper>
-bool before_on_row(const ActiveEdge<Stepper>& a, const ActiveEdge<Stepper>& b) {
-  const auto by_x = a.at <=> b.at;
-  if (by_x != 0) return by_x < 0;
-  return compare_slopes(a.edge, b.edge) < 0;
-}
 
 }  // namespace scantrace

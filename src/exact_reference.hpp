@@ -2,7 +2,7 @@
 // The exact reference (library code, deliberately independent of the fill): an independent
 // brute-force rasterizer. For every pixel centre of the canvas it evaluates the
 // polygon's edge functions exactly (128-bit integers on the snapped vertices) and applies the fill
-// rule of design.md §3 literally, as a half-plane test with a tie rule. It shares no code with the
+// rule of docs/design.md §3 literally, as a half-plane test with a tie rule. It shares no code with the
 // scanline fill in src/ (only the plain Vec2 / Color value types), so agreement between the two is
 // evidence rather than a tautology.
 #include <array>
@@ -99,7 +99,7 @@ Raster rasterize_contours(int width, int height,
                           std::span<const scantrace::Color> colors, WindingRule rule,
                           int bits = kExactBits);
 
-// The mean of the colours (the flat colour of design.md §2).
+// The mean of the colours (the flat colour of docs/design.md §2).
 scantrace::Color mean_color(std::span<const scantrace::Color> colors);
 
 }  // namespace scantrace::reference

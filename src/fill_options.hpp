@@ -7,14 +7,14 @@ namespace scantrace {
 // gouraud: vertex colours interpolated along the two active edges, then along the span.
 enum class Shading { flat, gouraud };
 
-// top_left: the half-open rule of design.md §3 — rows ceil(y_min) … ceil(y_max) − 1, columns
+// top_left: the half-open rule of docs/design.md §3 — rows ceil(y_min) … ceil(y_max) − 1, columns
 // ceil(x_left) … ceil(x_right) − 1 — so triangles sharing an edge never both own a pixel.
 // closed: every centre inside or on the boundary (both span ends and the last row inclusive), the
 // course's and OpenCV's behaviour, kept to show why shared edges get painted twice.
 enum class FillRule { top_left, closed };
 
 // How coverage and colour are computed (docs/accuracy.md compares them):
-// exact: the edge table with exact fixed-point stepping (the default, design.md §3);
+// exact: the edge table with exact fixed-point stepping (the default, docs/design.md §3);
 // float: the same edge table stepped the textbook way, x += 1/m and colours += Δ in float32;
 // double: the same edge table, x recomputed from the edge equation in double on every row;
 // halfspace: no edge table — bounding box and exact edge functions per pixel (tinyrenderer's
@@ -35,7 +35,7 @@ enum class WindingRule { even_odd, non_zero };
 enum class Cull { none, back, front };
 
 // Which face is visible where faces overlap (read by render(), not by the fill of one polygon):
-// painter: the course's order — farthest mean depth first, later faces overwrite (design.md §2);
+// painter: the course's order — farthest mean depth first, later faces overwrite (docs/design.md §2);
 // zbuffer: per-pixel depth, interpolated over the triangle like a Gouraud colour; the nearest
 // (smallest) depth wins, ties keep the face drawn first.
 enum class Visibility { painter, zbuffer };

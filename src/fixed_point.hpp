@@ -56,7 +56,7 @@ class SubpixelGrid {
   }
 
   // Round to the nearest grid point, ties upward (floor(v + 1/2)). Unlike rounding ties away from
-  // zero this commutes with translation by whole pixels, which design.md §3 requires.
+  // zero this commutes with translation by whole pixels, which docs/design.md §3 requires.
   FixedPoint snap(Vec2 p) const {
     const double s = static_cast<double>(scale());
     return {round_half_up(p.x * s), round_half_up(p.y * s)};

@@ -1,6 +1,7 @@
 #pragma once
-// The course's render: every face of the scene filled in painter's order (design.md §2), or, when
-// FillOptions::visibility asks for it, in face order through a depth buffer (zbuffer_canvas.hpp).
+// The course's render: every face of the scene filled in painter's order (docs/design.md §2), or,
+// when FillOptions::visibility asks for it, in face order through a depth buffer
+// (zbuffer_canvas.hpp).
 #include <vector>
 
 #include "scanline_fill.hpp"
@@ -36,12 +37,9 @@ RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt, T
   FillScratch scratch;
   RenderStats stats;
   for (int f : painter_order(depth)) {
-    const auto& face = scene.faces[f];
-    const std::array<Vec2, 3> v{scene.vertices[face[0]], scene.vertices[face[1]],
-                                scene.vertices[face[2]]};
-    const std::array<Color, 3> c{scene.vcolors[face[0]], scene.vcolors[face[1]],
-                                 scene.vcolors[face[2]]};
-    stats.count(fill_polygon(canvas, PolygonInput{v, c, f, depth[f]}, opt, scratch, tracer));
+    const FaceCorners c = corners_of(scene, scene.faces[f]);
+    stats.count(
+        fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f]}, opt, scratch, tracer));
   }
   return stats;
 }
@@ -56,14 +54,11 @@ RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
   FillScratch scratch;
   RenderStats stats;
   for (int f = 0; f < static_cast<int>(scene.faces.size()); ++f) {
-    const auto& face = scene.faces[f];
-    const std::array<Vec2, 3> v{scene.vertices[face[0]], scene.vertices[face[1]],
-                                scene.vertices[face[2]]};
-    const std::array<Color, 3> c{scene.vcolors[face[0]], scene.vcolors[face[1]],
-                                 scene.vcolors[face[2]]};
-    const std::array<double, 3> d{scene.depth[face[0]], scene.depth[face[1]], scene.depth[face[2]]};
-    if (grid.valid()) canvas.begin_triangle(v, d, grid);
-    stats.count(fill_polygon(canvas, PolygonInput{v, c, f, depth[f], d}, opt, scratch, tracer));
+    const FaceCorners c = corners_of(scene, scene.faces[f]);
+    const std::array<double, 3> d = corner_depths(scene, scene.faces[f]);
+    if (grid.valid()) canvas.begin_triangle(c.points, d, grid);
+    stats.count(fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f], d}, opt, scratch,
+                             tracer));
   }
   return stats;
 }

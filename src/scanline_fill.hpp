@@ -1,47 +1,37 @@
 #pragma once
 // The edge-table / active-edge-list scanline fill of a convex polygon (a triangle being the
-// common case), flat or Gouraud, under the fill rules of design.md §3.
+// common case), flat or Gouraud, under the fill rules of docs/design.md §3.
 //
 //   1. snap the vertices to the subpixel grid; reject what cannot fill a pixel (degenerate,
-//      off the canvas) before any per-row work;
+//      off the canvas) before any per-row work (fill_setup.hpp);
 //   2. build the edge table: non-horizontal edges sorted by their first scanline;
-//   3. sweep the scanlines that are on the canvas: retire edges that ended, let edges that start
-//      enter the active list (kept in exact x order), take the span between the leftmost and
-//      rightmost active points, clip it to the canvas and write it; step every active edge to
-//      the next row exactly.
-//
-// Rows before the canvas are never iterated: an edge entering below its first row is started
-// directly at the first visible row (Edge::start_at). Columns outside are clipped before writing.
+//   3. sweep the scanlines that are on the canvas (scanline_sweep.hpp) with the convex rule: a
+//      convex polygon meets a row in one span, from the leftmost active crossing to the rightmost.
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <optional>
 #include <span>
-#include <stdexcept>
-#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "canvas.hpp"
-#include "depth_test.hpp"
 #include "edge_stepper.hpp"
 #include "edge_table.hpp"
 #include "fill_options.hpp"
+#include "fill_scratch.hpp"
+#include "fill_setup.hpp"
+#include "flat_color.hpp"
+#include "flat_span.hpp"
 #include "halfspace_fill.hpp"
+#include "row_rule.hpp"
+#include "row_trace.hpp"
+#include "scanline_sweep.hpp"
+#include "span.hpp"
 #include "tracer.hpp"
 #include "vector_interp.hpp"
 
 namespace scantrace {
-
-// Built with SCANTRACE_NO_TRACE_HOOKS, the fill contains no hook call at all, whatever the tracer.
-// Only the tracer-overhead benchmark uses it, to show side by side that the default no-op tracer
-// costs exactly nothing (bench/tracer_overhead.cpp).
-#ifdef SCANTRACE_NO_TRACE_HOOKS
-inline constexpr bool kTraceHooks = false;
-#else
-inline constexpr bool kTraceHooks = true;
-#endif
 
 // One polygon to fill: its vertices (pixels) and one colour per vertex. `triangle` is the index
 // the trace reports (the face index in a scene); `depth` is reported when known.
@@ -55,33 +45,6 @@ struct PolygonInput {
   std::span<const double> vertex_depths = {};
 };
 
-// Working storage of the fill, reusable across polygons: a renderer keeps one and allocates
-// nothing per triangle once the vectors have grown to their working size.
-struct FillScratch {
-  std::vector<FixedPoint> snapped;
-  std::vector<int> order;
-  EdgeTable table;
-  std::vector<ActiveEdge<ExactStepper>> active_exact;
-  std::vector<ActiveEdge<DoubleStepper>> active_double;
-  std::vector<ActiveEdge<FloatStepper>> active_float;
-  // Only used when tracing.
-  std::vector<int> entered, retired;
-  std::vector<ActiveEdgeState> active_states;
-  std::vector<ActivePointState> active_points;
-  // A row of the current polygon's flat colour in the canvas's pixel format (fill_flat_span).
-  std::vector<unsigned char> pattern;
-
-  template <class Stepper>
-  std::vector<ActiveEdge<Stepper>>& active() {
-    if constexpr (std::is_same_v<Stepper, ExactStepper>)
-      return active_exact;
-    else if constexpr (std::is_same_v<Stepper, DoubleStepper>)
-      return active_double;
-    else
-      return active_float;
-  }
-};
-
 namespace detail {
 
 // Twice the signed area, exactly.
@@ -92,38 +55,6 @@ inline i128 twice_area(std::span<const FixedPoint> p) {
     a += static_cast<i128>(u.x) * v.y - static_cast<i128>(v.x) * u.y;
   }
   return a;
-}
-
-// The mean of the vertex colours, summed in a canonical order so that listing the same polygon's
-// vertices in another order cannot change the last bit of the result.
-inline Color mean_color(std::span<const FixedPoint> p, std::span<const Color> colors,
-                        std::vector<int>& order) {
-  if (p.size() == 3) {
-    // A triangle: each channel's three values are summed smallest first, which is as canonical as
-    // a vertex order and takes six min/max instructions instead of a sort whose branches the
-    // processor cannot predict.
-    const auto sum3 = [](double a, double b, double c) {
-      const double lo = std::min(a, b), hi = std::max(a, b);
-      return (std::min(lo, c) + std::max(lo, std::min(hi, c))) + std::max(hi, c);
-    };
-    return Color{sum3(colors[0].r, colors[1].r, colors[2].r),
-                 sum3(colors[0].g, colors[1].g, colors[2].g),
-                 sum3(colors[0].b, colors[1].b, colors[2].b)} *
-           (1.0 / 3.0);
-  }
-  // Insertion sort: polygons are small, and std::sort's set-up costs more than three vertices.
-  const auto before = [&](int a, int b) {
-    return p[a].y != p[b].y ? p[a].y < p[b].y : p[a].x != p[b].x ? p[a].x < p[b].x : a < b;
-  };
-  order.resize(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    std::size_t j = i;
-    for (; j > 0 && before(static_cast<int>(i), order[j - 1]); --j) order[j] = order[j - 1];
-    order[j] = static_cast<int>(i);
-  }
-  Color sum;
-  for (int i : order) sum += colors[i];
-  return sum * (1.0 / static_cast<double>(p.size()));
 }
 
 // Colours along one span, the way each method computes them.
@@ -209,117 +140,33 @@ struct RunEdgeColor<ExactStepper> {
   }
 };
 
-// A flat span of a direct canvas. Short spans (the common case) are a plain loop; long ones are
-// one memcpy from a row of the polygon's colour kept in `pattern`, which is built on the first long
-// span and grown geometrically, so a large flat polygon is written at memcpy speed.
-template <class P>
-void fill_flat_span(P* out, int n, P value, std::vector<unsigned char>& pattern,
-                    std::size_t& pattern_pixels) {
-  constexpr int kShort = 32;
-  if (n <= kShort) {
-    for (int k = 0; k < n; ++k) out[k] = value;
-    return;
-  }
-  const auto need = static_cast<std::size_t>(n);
-  if (pattern_pixels < need) {
-    pattern_pixels = std::max(need, 2 * pattern_pixels);
-    pattern.resize(pattern_pixels * sizeof(P));
-    for (std::size_t k = 0; k < pattern_pixels; ++k)
-      std::memcpy(pattern.data() + k * sizeof(P), &value, sizeof(P));
-  }
-  std::memcpy(out, pattern.data(), need * sizeof(P));
-}
-
-// One pixel to the pixel-level trace, with the outcome of its depth test when the canvas tests
-// depth and the tracer takes it (the canvas has just written the pixel: a span's pixels are
-// narrated right after fill_span).
-template <class Tracer, class C>
-void trace_pixel(Tracer& tracer, const C& canvas, int triangle, int x, i64 y, Color c, double t) {
-  if constexpr (DepthTestingCanvas<C> &&
-                requires { tracer.pixel(triangle, x, y, c, t, canvas.depth_test(x)); })
-    tracer.pixel(triangle, x, y, c, t, canvas.depth_test(x));
-  else
-    tracer.pixel(triangle, x, y, c, t);
-}
-
-// What the set-up hands to the sweep.
-struct Setup {
-  SubpixelGrid grid;
-  Color flat;
-  bool traced = false;
-  bool uniform = false;  // Gouraud with three equal colours: every pixel is `flat`
-};
-
-// Step 3 of the fill for one stepper: the scanline sweep over the canvas rows.
+// The convex rule of the sweep (scanline_sweep.hpp): on each row one span, from the leftmost
+// active crossing to the rightmost, written to the canvas and narrated to the tracer.
 //
-// The active list changes only on the rows where an edge starts or ends. The sweep is therefore a
-// sequence of runs: at the first row of a run the list is updated (edges retire, edges enter in x
-// order), and every row of the run is then the same few steps, two ceilings, one span and two
-// increments. Within a run the outermost edges' steppers live in local variables: the canvas is
-// written through byte pointers, which may alias anything, so steppers kept in the list would be
-// reloaded and stored around every span.
+// Within a run the outermost edges' steppers live in local variables: the canvas is written
+// through byte pointers, which may alias anything, so steppers kept in the list would be reloaded
+// and stored around every span. Every row of a run is then the same few steps: two ceilings, one
+// span and two increments.
 template <class Stepper, Canvas C, FillTracer Tracer>
-FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, FillScratch& s,
-                 Tracer& tracer, const Setup& setup) {
-  constexpr bool kScanlineLevel = kTraceHooks && Tracer::max_level >= TraceLevel::scanline;
-  constexpr bool kPixelLevel = kTraceHooks && Tracer::max_level >= TraceLevel::pixel;
-  const SubpixelGrid& grid = setup.grid;
-  const bool closed = opt.fill_rule == FillRule::closed;
-  const bool gouraud = opt.shading == Shading::gouraud;
-  // Interpolating equal colours gives the same colour everywhere: such a polygon is filled as a
+struct ConvexRows : RowRule<C, Tracer> {
+  using RowRule<C, Tracer>::canvas, RowRule<C, Tracer>::colors, RowRule<C, Tracer>::grid,
+      RowRule<C, Tracer>::opt, RowRule<C, Tracer>::flat, RowRule<C, Tracer>::trace,
+      RowRule<C, Tracer>::rows, RowRule<C, Tracer>::pixels;
+  // Gouraud with equal colours gives the same colour everywhere: such a polygon is filled as a
   // flat one (the trace still reports Gouraud span colours, which are that colour).
-  const bool shade = gouraud && !setup.uniform;
-  const int width = canvas.width();
-  const std::vector<Edge>& edges = s.table.edges();
-  const RowBand band = canvas_rows(canvas);
-  const i64 y_first = std::max<i64>(s.table.first_row(), band.begin);
-  const i64 y_last = std::min<i64>(s.table.last_row(), band.end - 1);
-  std::vector<ActiveEdge<Stepper>>& active = s.active<Stepper>();
-  active.clear();
-  std::size_t next = 0;
-  i64 rows = 0, pixels = 0;
-  [[maybe_unused]] std::size_t pattern_pixels = 0;  // of s.pattern, valid for this polygon
-  [[maybe_unused]] const auto flat_pixel = [&] {
-    if constexpr (DirectCanvas<C>)
-      return C::convert(setup.flat);
-    else
-      return 0;
-  }();
+  bool uniform = false;
 
-  for (i64 y = y_first; y <= y_last;) {
-    [[maybe_unused]] bool trace_row = false;
-    if constexpr (kScanlineLevel) {
-      trace_row = setup.traced && tracer.wants_scanline(in.triangle, y);
-      if (trace_row) s.entered.clear(), s.retired.clear();
-    }
-    // Retire the edges whose last row is behind us (keeping the others in order).
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < active.size(); ++i) {
-      if (active[i].edge.last_row >= y) {
-        if (kept != i) active[kept] = active[i];
-        ++kept;
-      } else if constexpr (kScanlineLevel) {
-        if (trace_row) s.retired.push_back(active[i].edge.id);
-      }
-    }
-    active.resize(kept);
-    // Let the edges that start by this row enter, in x order (an insertion step: the list holds
-    // two or three edges). An edge whose rows all lie above the canvas, or that crosses no
-    // scanline, is passed over without being stepped.
-    for (; next < edges.size() && edges[next].first_row <= y; ++next) {
-      if (edges[next].last_row < y) continue;
-      active.push_back({edges[next], {}});
-      active.back().at.start(edges[next], y, grid, in.colors);
-      for (std::size_t k = active.size() - 1; k > 0 && before_on_row(active[k], active[k - 1]); --k)
-        std::swap(active[k], active[k - 1]);
-      if constexpr (kScanlineLevel)
-        if (trace_row) s.entered.push_back(edges[next].id);
-    }
-    i64 run_last = next < edges.size() ? edges[next].first_row - 1 : y_last;
-    for (const ActiveEdge<Stepper>& a : active) run_last = std::min(run_last, a.edge.last_row);
-    run_last = std::min(run_last, y_last);
-
-    // The run y … run_last.
+  void run(i64 y, const i64 run_last, ActiveEdgeList<Stepper>& active) {
+    const bool closed = opt.fill_rule == FillRule::closed;
+    const bool gouraud = opt.shading == Shading::gouraud;
+    const bool shade = gouraud && !uniform;
+    const int width = canvas.width();
+    [[maybe_unused]] const auto flat_pixel = [&] {
+      if constexpr (DirectCanvas<C>)
+        return C::convert(flat);
+      else
+        return 0;
+    }();
     const std::size_t n_active = active.size();
     const Edge* left = n_active >= 2 ? &active.front().edge : nullptr;
     const Edge* right = n_active >= 2 ? &active.back().edge : nullptr;
@@ -327,121 +174,76 @@ FillResult sweep(C& canvas, const PolygonInput& in, const FillOptions& opt, Fill
     Stepper r = n_active >= 2 ? active.back().at : Stepper{};
     RunEdgeColor<Stepper> l_color, r_color;
     if (shade && left) {
-      l_color.start(*left, in.colors, grid);
-      r_color.start(*right, in.colors, grid);
+      l_color.start(*left, colors, grid);
+      r_color.start(*right, colors, grid);
     }
     rows += run_last - y + 1;
     for (;; ++y) {
-      if constexpr (kScanlineLevel) {
-        if (trace_row && n_active >= 2) active.front().at = l, active.back().at = r;
-      }
-      // A convex polygon meets a scanline in one interval: from the leftmost to the rightmost
-      // active point. (Under the top-left rule exactly two edges are active; the closed rule can
-      // add the two edges meeting at a vertex that lies exactly on the row.)
-      i64 x_begin = 0, x_end = 0;
+      const bool trace_row = trace.row();
+      if (trace_row && n_active >= 2) active.front().at = l, active.back().at = r;
+      // Under the top-left rule exactly two edges are active; the closed rule can add the two
+      // edges meeting at a vertex that lies exactly on the row.
+      Span span;
       if (left) {
-        x_begin = std::max<i64>(l.ceil_x(), 0);
+        span.x_begin = std::max<i64>(l.ceil_x(), 0);
         // Half-open span [ceil(xl), ceil(xr)): a centre exactly on the right edge belongs to the
         // neighbour on the right. The closed rule includes it: [ceil(xl), floor(xr)].
-        x_end = std::min<i64>(closed ? r.floor_x() + 1 : r.ceil_x(), width);
+        span.x_end = std::min<i64>(closed ? r.floor_x() + 1 : r.ceil_x(), width);
       }
-      const bool has_span = x_begin < x_end;
-      Color c_left = setup.flat, c_right = setup.flat;
-      double x_left = 0, x_right = 0;
+      const bool has_span = !span.empty();
+      Color c_left = flat, c_right = flat;
       if (left && (shade || trace_row)) {
-        x_left = l.x();
-        x_right = r.x();
+        span.x_left = l.x();
+        span.x_right = r.x();
         if (shade) {
-          c_left = l_color.at(l, *left, y, in.colors, grid);
-          c_right = r_color.at(r, *right, y, in.colors, grid);
+          c_left = l_color.at(l, *left, y, colors, grid);
+          c_right = r_color.at(r, *right, y, colors, grid);
         }
       }
-
-      [[maybe_unused]] Color span_first = setup.flat, span_last = setup.flat;
+      span.begin = span.end = flat;
       if (has_span) {
-        const int yi = static_cast<int>(y), xb = static_cast<int>(x_begin),
-                  xe = static_cast<int>(x_end);
-        [[maybe_unused]] bool trace_pixels = false;
-        if constexpr (kPixelLevel) trace_pixels = trace_row && tracer.wants_pixels(in.triangle, y);
-        [[maybe_unused]] auto weight = [&](int x) {
-          return x_right > x_left ? (x - x_left) / (x_right - x_left) : 0.0;
-        };
+        const int yi = static_cast<int>(y), xb = static_cast<int>(span.x_begin),
+                  xe = static_cast<int>(span.x_end);
+        const bool trace_pixels = trace.pixels(y);
         if (!shade) {
           if constexpr (DirectCanvas<C>)
-            fill_flat_span(canvas.row(yi) + xb, xe - xb, flat_pixel, s.pattern, pattern_pixels);
+            fill_pixels(canvas.row(yi) + xb, canvas.row(yi) + xe, flat_pixel);
           else
-            canvas.fill_span(yi, xb, xe, setup.flat);
-          if constexpr (kPixelLevel)
-            if (trace_pixels)
-              for (int x = xb; x < xe; ++x)
-                trace_pixel(tracer, canvas, in.triangle, x, y, setup.flat, weight(x));
+            canvas.fill_span(yi, xb, xe, flat);
+          if (trace_pixels)
+            for (int x = xb; x < xe; ++x) trace.pixel(canvas, x, y, flat, span.weight(x));
         } else {
-          SpanShader<Stepper> shade(c_left, c_right, x_left, x_right, x_begin);
+          SpanShader<Stepper> shader(c_left, c_right, span.x_left, span.x_right, span.x_begin);
           // The exact method's span is linear from its first pixel's colour, so an image canvas
           // writes it in its pixel format's fastest way (whether the row is traced or not, so that
           // tracing never changes a pixel); the loop below then only narrates.
           constexpr bool kCanvasShades = DirectCanvas<C> && std::is_same_v<Stepper, ExactStepper>;
-          if constexpr (kCanvasShades) canvas.shade_span(yi, xb, xe, shade.c, shade.step);
-          if constexpr (kScanlineLevel)
-            if (trace_row) span_first = shade.color();
+          if constexpr (kCanvasShades) canvas.shade_span(yi, xb, xe, shader.c, shader.step);
+          if (trace_row) span.begin = shader.color();
           if (!kCanvasShades || trace_row) {
             for (int x = xb; x < xe; ++x) {
-              const Color c = shade.color();
+              const Color c = shader.color();
               if constexpr (!kCanvasShades) canvas.set(x, yi, c);
-              if constexpr (kPixelLevel)
-                if (trace_pixels) trace_pixel(tracer, canvas, in.triangle, x, y, c, weight(x));
-              if constexpr (kScanlineLevel)
-                if (trace_row) span_last = c;
-              shade.next();
+              if (trace_pixels) trace.pixel(canvas, x, y, c, span.weight(x));
+              if (trace_row) span.end = c;
+              shader.next();
             }
           }
         }
-        pixels += x_end - x_begin;
+        pixels += span.size();
       }
-
-      if constexpr (kScanlineLevel) {
-        if (trace_row) {
-          s.active_states.clear();
-          s.active_points.clear();
-          for (const ActiveEdge<Stepper>& a : active) {
-            s.active_states.push_back({a.edge.id, a.at.x(), a.at.ceil_x()});
-            s.active_points.push_back(
-                {a.at.x(), a.edge.id,
-                 gouraud ? a.at.color(a.edge, y, in.colors, grid) : setup.flat});
-          }
-          ScanlineStep step;
-          step.triangle = in.triangle;
-          step.y = y;
-          step.entered = s.entered;
-          step.retired = s.retired;
-          step.active_edges = s.active_states;
-          step.active_points = s.active_points;
-          step.has_span = has_span;
-          step.x_begin = x_begin;
-          step.x_end = x_end;
-          if (has_span && gouraud) {
-            step.has_span_colors = true;
-            step.span_begin = span_first;
-            step.span_end = span_last;
-          }
-          tracer.scanline(step);
-        }
-      }
+      span.has_colors = has_span && gouraud;
+      trace.end_row(y, active, colors, grid, gouraud, flat, false, has_span, span, false);
       l.advance();
       r.advance();
       for (std::size_t i = n_active >= 2 ? 1 : 0; i + 1 < n_active; ++i) active[i].at.advance();
       if (n_active == 1) active[0].at.advance();
       if (y == run_last) break;
-      if constexpr (kScanlineLevel) {
-        trace_row = setup.traced && tracer.wants_scanline(in.triangle, y + 1);
-        if (trace_row) s.entered.clear(), s.retired.clear();
-      }
+      trace.begin_row(y + 1);
     }
     if (n_active >= 2) active.front().at = l, active.back().at = r;
-    ++y;
   }
-  return FillResult{SkipReason::none, rows, pixels};
-}
+};
 
 }  // namespace detail
 
@@ -460,17 +262,10 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   };
 
   const SubpixelGrid grid(opt.subpixel_bits);
-  if (!grid.valid())
-    throw std::invalid_argument("fill: subpixel_bits must be in 0…" +
-                                std::to_string(kMaxSubpixelBits));
-  const std::size_t n = in.points.size();
-  if (in.colors.size() != n) throw std::invalid_argument("fill: one colour per vertex is needed");
-  if (n < 3) return skip(SkipReason::too_few_vertices);
-  s.snapped.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!SubpixelGrid::representable(in.points[i])) return skip(SkipReason::out_of_range);
-    s.snapped[i] = grid.snap(in.points[i]);
-  }
+  require_valid(grid);
+  if (const SkipReason r = snap_vertices(in.points, in.colors, grid, s.snapped);
+      r != SkipReason::none)
+    return skip(r);
   const std::span<const FixedPoint> pts(s.snapped);
   // A zero-area polygon has no interior; under the top-left rule it owns no pixel, and the closed
   // rule is defined here for polygons with an interior too, so both skip it.
@@ -481,29 +276,15 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   if (opt.cull != Cull::none && (opt.cull == Cull::back ? area2 > 0 : area2 < 0))
     return skip(SkipReason::culled);
 
-  const bool closed = opt.fill_rule == FillRule::closed;
-  {
-    i64 x_min = pts[0].x, x_max = pts[0].x, y_min = pts[0].y, y_max = pts[0].y;
-    for (const FixedPoint& p : pts) {
-      x_min = std::min(x_min, p.x), x_max = std::max(x_max, p.x);
-      y_min = std::min(y_min, p.y), y_max = std::max(y_max, p.y);
-    }
-    // The pixel rows and columns the bounding box spans under the fill rule, before clipping.
-    const i64 col_first = grid.ceil_to_pixel(x_min), row_first = grid.ceil_to_pixel(y_min);
-    const i64 col_last = closed ? grid.floor_to_pixel(x_max) : grid.ceil_to_pixel(x_max) - 1;
-    const i64 row_last = closed ? grid.floor_to_pixel(y_max) : grid.ceil_to_pixel(y_max) - 1;
-    if (col_first > col_last || row_first > row_last) return skip(SkipReason::no_pixel_centre);
-    const RowBand band = canvas_rows(canvas);
-    if (col_last < 0 || col_first >= canvas.width() || row_last < band.begin ||
-        row_first >= band.end)
-      return skip(SkipReason::offscreen);
-  }
+  if (const SkipReason r =
+          covers_pixels(pts, grid, opt.fill_rule, canvas.width(), canvas_rows(canvas));
+      r != SkipReason::none)
+    return skip(r);
 
   // The flat colour is needed to fill flat, and to narrate (triangle_begin reports it); an
   // untraced Gouraud fill never reads it, so it does not pay for it.
-  const Color flat = opt.shading == Shading::flat || traced
-                         ? detail::mean_color(pts, in.colors, s.order)
-                         : Color{};
+  const Color flat =
+      opt.shading == Shading::flat || traced ? flat_color(pts, in.colors, s.order) : Color{};
   if constexpr (kTriangleLevel)
     if (traced)
       tracer.triangle_begin(PolygonSetup{.triangle = in.triangle,
@@ -526,17 +307,13 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
     const bool uniform =
         opt.shading == Shading::gouraud && std::all_of(in.colors.begin() + 1, in.colors.end(),
                                                        [&](Color c) { return c == in.colors[0]; });
-    const detail::Setup setup{grid, uniform ? in.colors[0] : flat, traced, uniform};
-    switch (opt.method) {
-      case Method::float32:
-        result = detail::sweep<FloatStepper>(canvas, in, opt, s, tracer, setup);
-        break;
-      case Method::double64:
-        result = detail::sweep<DoubleStepper>(canvas, in, opt, s, tracer, setup);
-        break;
-      default:
-        result = detail::sweep<ExactStepper>(canvas, in, opt, s, tracer, setup);
-    }
+    RowTrace<Tracer> trace(tracer, s.trace, in.triangle, traced);
+    result = with_stepper(opt.method, [&]<class Stepper>() {
+      detail::ConvexRows<Stepper, C, Tracer> rule{
+          {canvas, in.colors, grid, opt, uniform ? in.colors[0] : flat, trace}, uniform};
+      sweep_scanlines(s.table, canvas_rows(canvas), grid, in.colors, s.active<Stepper>(), rule);
+      return rule.result();
+    });
   }
   if constexpr (kTriangleLevel)
     if (traced) tracer.triangle_end(in.triangle, result.rows, result.pixels);

@@ -26,6 +26,23 @@ struct Scene {
   Color background{1, 1, 1};
 };
 
+// One face's three corners as the fill takes them: positions and colours, in face order. The one
+// place a face is gathered from the scene's shared arrays (renders, bands, benchmarks).
+struct FaceCorners {
+  std::array<Vec2, 3> points;
+  std::array<Color, 3> colors;
+};
+
+inline FaceCorners corners_of(const Scene& scene, const std::array<int, 3>& face) {
+  return {{scene.vertices[face[0]], scene.vertices[face[1]], scene.vertices[face[2]]},
+          {scene.vcolors[face[0]], scene.vcolors[face[1]], scene.vcolors[face[2]]}};
+}
+
+// The corners' depths (z-buffer renders).
+inline std::array<double, 3> corner_depths(const Scene& scene, const std::array<int, 3>& face) {
+  return {scene.depth[face[0]], scene.depth[face[1]], scene.depth[face[2]]};
+}
+
 // The first problem found in a scene, naming the element, e.g. {"faces[812]", "index 5012 is out
 // of range (4999 vertices)"}.
 struct SceneProblem {

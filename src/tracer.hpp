@@ -1,12 +1,13 @@
 #pragma once
 // What the fill tells a tracer, as plain value types (no JSON here: trace/ turns them into the
-// events of design.md §5).
+// events of docs/design.md §5).
 //
 // The fill is a template over its tracer. A tracer declares the most detailed level it can ever
 // want as `static constexpr TraceLevel max_level`; every hook call sits under `if constexpr` on it,
 // so with NoTracer (max_level none) the fill compiles to exactly the untraced loop: no virtual
 // call, no allocation, no "is tracing on" branch anywhere near the per-pixel loop. A tracer with a
-// higher max_level also provides the runtime filters and the hooks of its levels:
+// higher max_level also provides the runtime filters and the hooks of its levels (the concept
+// FillTracer below checks them):
 //
 //   bool wants_triangle(int triangle);            // level >= triangle
 //   void triangle_begin(const PolygonSetup&);
@@ -17,6 +18,7 @@
 //   void scanline(const ScanlineStep&);
 //   bool wants_pixels(int triangle, i64 y);       // level == pixel
 //   void pixel(int triangle, i64 x, i64 y, Color, double t);
+#include <concepts>
 #include <optional>
 #include <span>
 
@@ -24,9 +26,19 @@
 #include "edge_table.hpp"
 #include "fill_options.hpp"
 #include "fill_result.hpp"
+#include "span.hpp"
 #include "vec2.hpp"
 
 namespace scantrace {
+
+// Built with SCANTRACE_NO_TRACE_HOOKS, the fills contain no hook call at all, whatever the tracer.
+// Only the tracer-overhead benchmark uses it, to show side by side that the default no-op tracer
+// costs exactly nothing (bench/tracer_overhead.cpp).
+#ifdef SCANTRACE_NO_TRACE_HOOKS
+inline constexpr bool kTraceHooks = false;
+#else
+inline constexpr bool kTraceHooks = true;
+#endif
 
 enum class TraceLevel { none = 0, triangle = 1, scanline = 2, pixel = 3 };
 
@@ -65,30 +77,21 @@ struct ActivePointState {
   Color color;  // interpolated along the edge (Gouraud) or the flat colour
 };
 
-// One inside interval of a row of a general polygon: between the active edge where the winding
-// rule turns "inside" and the one where it turns "outside" again.
-struct IntervalState {
-  int left_edge = 0, right_edge = 0;
-  double x_left = 0, x_right = 0;  // the two edges' exact intersections with the row
-  i64 x_begin = 0, x_end = 0;      // its pixels, half-open, clipped to the canvas (may be empty)
-  bool has_colors = false;
-  Color begin, end;  // colours of pixels x_begin and x_end - 1 (Gouraud)
-};
-
+// One row of the sweep as a tracer sees it: the active edge list and the row's spans.
 struct ScanlineStep {
   int triangle = 0;
   i64 y = 0;
-  std::span<const int> entered, retired;
+  std::span<const int> entered, retired;  // edge ids that entered / retired on this row
   std::span<const ActiveEdgeState> active_edges;
   std::span<const ActivePointState> active_points;
+  // The row's span (a convex polygon has at most one; for a general polygon the first of
+  // `intervals`, for readers that know one span per row). span.has_colors under Gouraud.
   bool has_span = false;
-  i64 x_begin = 0, x_end = 0;  // half-open, clipped to the canvas
-  bool has_span_colors = false;
-  Color span_begin, span_end;  // colours of pixels x_begin and x_end - 1 (Gouraud)
-  // General polygons: every inside interval with at least one pixel, left to right; the span
-  // above is then the first of them. Convex fills leave has_intervals false.
+  Span span;
+  // General polygons: every span with at least one pixel, left to right. Convex fills leave
+  // has_intervals false.
   bool has_intervals = false;
-  std::span<const IntervalState> intervals = {};
+  std::span<const Span> intervals = {};
 };
 
 // The default: traces nothing, costs nothing.
@@ -96,9 +99,38 @@ struct NoTracer {
   static constexpr TraceLevel max_level = TraceLevel::none;
 };
 
+// The hooks of each level, as the fills call them. A tracer must provide every hook of the levels
+// up to its max_level: a misspelt or missing hook is then an error at the fill's call site naming
+// the concept, not one deep inside the sweep.
+template <class T>
+concept TriangleHooks = requires(T& t, int i, i64 n, const PolygonSetup& s, const EdgeTableView& v,
+                                 SkipReason r) {
+  { t.wants_triangle(i) } -> std::convertible_to<bool>;
+  t.triangle_begin(s);
+  t.edge_table(v);
+  t.triangle_end(i, n, n);
+  t.triangle_skipped(i, r);
+};
+
+template <class T>
+concept ScanlineHooks = requires(T& t, int i, i64 y, const ScanlineStep& step) {
+  { t.wants_scanline(i, y) } -> std::convertible_to<bool>;
+  t.scanline(step);
+};
+
+// pixel() may also take the pixel's DepthTest as a sixth argument (z-buffer renders).
+template <class T>
+concept PixelHooks = requires(T& t, int i, i64 x, i64 y, Color c, double w) {
+  { t.wants_pixels(i, y) } -> std::convertible_to<bool>;
+  t.pixel(i, x, y, c, w);
+};
+
 template <class T>
 concept FillTracer = requires {
   { T::max_level } -> std::convertible_to<TraceLevel>;
-};
+}
+&&(T::max_level < TraceLevel::triangle ||
+   TriangleHooks<T>)&&(T::max_level < TraceLevel::scanline ||
+                       ScanlineHooks<T>)&&(T::max_level < TraceLevel::pixel || PixelHooks<T>);
 
 }  // namespace scantrace

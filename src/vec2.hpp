@@ -1,6 +1,6 @@
 #pragma once
 // A point of the image plane in pixel units: x is the column (grows right), y the row (grows
-// down); pixel (x, y) is centred on the integer point (x, y) (design.md §2).
+// down); pixel (x, y) is centred on the integer point (x, y) (docs/design.md §2).
 
 namespace scantrace {
 

@@ -72,11 +72,11 @@ Scanline to_event(const ScanlineStep& s) {
   }
   for (const scantrace::ActivePointState& p : s.active_points)
     e.active_points.push_back({p.x, p.edge, p.color});
-  if (s.has_span) e.span = Span{s.x_begin, s.x_end};
-  if (s.has_span_colors) e.span_colors = SpanColors{s.span_begin, s.span_end};
+  if (s.has_span) e.span = Span{s.span.x_begin, s.span.x_end};
+  if (s.has_span && s.span.has_colors) e.span_colors = SpanColors{s.span.begin, s.span.end};
   if (s.has_intervals) {
     e.intervals.emplace();
-    for (const IntervalState& i : s.intervals) {
+    for (const scantrace::Span& i : s.intervals) {
       Interval x{i.left_edge, i.right_edge, i.x_left, i.x_right, Span{i.x_begin, i.x_end}, {}};
       if (i.has_colors) x.colors = SpanColors{i.begin, i.end};
       e.intervals->push_back(x);

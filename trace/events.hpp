@@ -1,5 +1,5 @@
 #pragma once
-// The events of trace format v1 (design.md §5) as value types. One event is one line of a
+// The events of trace format v1 (docs/design.md §5) as value types. One event is one line of a
 // .jsonl trace; to_json/from_json live in event_json.hpp.
 #include <array>
 #include <cstdint>

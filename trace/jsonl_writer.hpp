@@ -1,5 +1,5 @@
 #pragma once
-// The streaming sink: one JSON object per line, header first, footer last (design.md §5). Lines
+// The streaming sink: one JSON object per line, header first, footer last (docs/design.md §5). Lines
 // are flushed at the end of every triangle, so a trace cut short by a crash is readable up to the
 // last finished triangle, and its missing footer says that it is incomplete.
 #include <cstdint>

@@ -230,32 +230,46 @@ const Trace::TriangleIndex& Trace::at(int t) const {
   return it->second;
 }
 
+const TriangleBegin* Trace::find_triangle_begin(int t) const {
+  auto it = index_.find(t);
+  if (it == index_.end() || !it->second.begin) return nullptr;
+  return &std::get<TriangleBegin>(events_[*it->second.begin]);
+}
+
+const EdgeTableEvent* Trace::find_edge_table(int t) const {
+  auto it = index_.find(t);
+  if (it == index_.end() || !it->second.edge_table) return nullptr;
+  return &std::get<EdgeTableEvent>(events_[*it->second.edge_table]);
+}
+
+const Scanline* Trace::find_scanline(int t, i64 y) const {
+  auto it = index_.find(t);
+  if (it == index_.end()) return nullptr;
+  auto row = it->second.scanlines.find(y);
+  return row == it->second.scanlines.end() ? nullptr : &std::get<Scanline>(events_[row->second]);
+}
+
 const TriangleBegin& Trace::triangle_begin(int t) const {
-  const auto& ix = at(t);
-  if (!ix.begin)
-    throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " has no triangle_begin");
-  return std::get<TriangleBegin>(events_[*ix.begin]);
+  at(t);  // names a triangle that is not in the trace at all
+  if (const TriangleBegin* b = find_triangle_begin(t)) return *b;
+  throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " has no triangle_begin");
 }
 
 const EdgeTableEvent& Trace::edge_table(int t) const {
-  const auto& ix = at(t);
-  if (!ix.edge_table)
-    throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " has no edge table");
-  return std::get<EdgeTableEvent>(events_[*ix.edge_table]);
+  at(t);
+  if (const EdgeTableEvent* e = find_edge_table(t)) return *e;
+  throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " has no edge table");
 }
 
 bool Trace::has_scanline(int t, i64 y) const {
-  auto it = index_.find(t);
-  return it != index_.end() && it->second.scanlines.count(y) > 0;
+  return find_scanline(t, y) != nullptr;
 }
 
 const Scanline& Trace::scanline(int t, i64 y) const {
-  const auto& ix = at(t);
-  auto it = ix.scanlines.find(y);
-  if (it == ix.scanlines.end())
-    throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " has no scanline " +
-                            std::to_string(y) + " in the trace");
-  return std::get<Scanline>(events_[it->second]);
+  at(t);
+  if (const Scanline* s = find_scanline(t, y)) return *s;
+  throw std::out_of_range(name_ + ": triangle " + std::to_string(t) + " has no scanline " +
+                          std::to_string(y) + " in the trace");
 }
 
 std::vector<const Scanline*> Trace::scanlines(int t) const {

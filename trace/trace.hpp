@@ -69,6 +69,11 @@ class Trace {
 
   std::vector<int> triangles() const;  // traced (begun or skipped), in order of appearance
   bool has_triangle(int t) const { return index_.count(t) > 0; }
+  // The accessors below throw std::out_of_range naming the trace when the event is absent; the
+  // find_ ones return nullptr instead (a filtered or interrupted trace legitimately lacks some).
+  const TriangleBegin* find_triangle_begin(int t) const;
+  const EdgeTableEvent* find_edge_table(int t) const;
+  const Scanline* find_scanline(int t, i64 y) const;
   const TriangleBegin& triangle_begin(int t) const;
   const EdgeTableEvent& edge_table(int t) const;
   const Scanline& scanline(int t, i64 y) const;

@@ -16,14 +16,10 @@ namespace {
 // (A bool and an out-parameter rather than an optional: GCC's -Wmaybe-uninitialized misreads
 // an optional of this aggregate.)
 bool plane_of(const trace::Trace& trace, int triangle, DepthPlane& plane) {
-  try {
-    const trace::TriangleBegin& b = trace.triangle_begin(triangle);
-    if (b.vertex_depths.size() != 3 || b.snapped.size() != 3) return false;
-    plane = DepthPlane::through(b.snapped, b.vertex_depths);
-    return true;
-  } catch (const std::out_of_range&) {
-    return false;
-  }
+  const trace::TriangleBegin* b = trace.find_triangle_begin(triangle);
+  if (!b || b->vertex_depths.size() != 3 || b->snapped.size() != 3) return false;
+  plane = DepthPlane::through(b->snapped, b->vertex_depths);
+  return true;
 }
 
 // What the fill writes to when a triangle-level trace is filled again: the replay's own canvas.
@@ -123,10 +119,7 @@ Color span_pixel_colour(const trace::Scanline& s, const std::optional<Color>& fl
 void CanvasState::paint_scanline(const trace::Trace& trace, const trace::Scanline& s) {
   if (!s.span || s.span->size() <= 0) return;
   std::optional<Color> flat;
-  try {
-    flat = trace.triangle_begin(s.triangle).flat_color;
-  } catch (const std::out_of_range&) {
-  }
+  if (const trace::TriangleBegin* b = trace.find_triangle_begin(s.triangle)) flat = b->flat_color;
   DepthPlane plane{};
   const bool tested = depth_test_ && plane_of(trace, s.triangle, plane);
   const auto depth = [&](std::int64_t x) {
@@ -178,12 +171,8 @@ void CanvasState::paint_rows(const trace::Trace& trace, int triangle, std::int64
 
 void CanvasState::refill(const trace::Trace& trace, int triangle) {
   if (trace.skipped(triangle)) return;
-  const trace::TriangleBegin* b = nullptr;
-  try {
-    b = &trace.triangle_begin(triangle);
-  } catch (const std::out_of_range&) {
-    return;
-  }
+  const trace::TriangleBegin* b = trace.find_triangle_begin(triangle);
+  if (!b) return;
   const trace::Header& h = trace.header();
   FillOptions o;
   o.shading = h.shading == "flat" ? Shading::flat : Shading::gouraud;

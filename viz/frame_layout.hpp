@@ -1,5 +1,5 @@
 #pragma once
-// The regions of an explanatory frame (design.md §6): a title bar across the top, the magnified
+// The regions of an explanatory frame (docs/design.md §6): a title bar across the top, the magnified
 // canvas on the left, the side panel on the right.
 #include <opencv2/core.hpp>
 

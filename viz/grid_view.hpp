@@ -1,6 +1,6 @@
 #pragma once
 // The left half of a frame: the canvas around the triangle, magnified, with the marks of
-// design.md §6 — pixel cells in their written colours, the pixel grid and centres (when cells are
+// docs/design.md §6 — pixel cells in their written colours, the pixel grid and centres (when cells are
 // big enough to show them), the exact outline, the current scanline, the active edges, the active
 // points with their x, the span, the vertices.
 #include <cstdint>

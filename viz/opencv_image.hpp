@@ -1,5 +1,5 @@
 #pragma once
-// The OpenCV boundary (design.md §2): float RGB [0, 1] on our side, 8-bit BGR on OpenCV's.
+// The OpenCV boundary (docs/design.md §2): float RGB [0, 1] on our side, 8-bit BGR on OpenCV's.
 // Frame and video code reuses these, so the conversion rule lives in one place.
 #include <cstdint>
 

@@ -64,24 +64,18 @@ void plan_triangle(const trace::Trace& trace, int triangle, const StepOptions& o
         {.kind = StepKind::triangle_skipped, .triangle = triangle, .weight = kSkippedWeight});
     return;
   }
-  bool begun = true;
-  try {
-    trace.triangle_begin(triangle);
-  } catch (const std::out_of_range&) {
-    begun = false;  // a filtered or cut trace may hold later events of a triangle only
-  }
+  // A filtered or cut trace may hold later events of a triangle only.
+  const bool begun = trace.find_triangle_begin(triangle) != nullptr;
   if (begun)
     plan.steps.push_back(
         {.kind = StepKind::triangle_setup, .triangle = triangle, .weight = kSetupWeight});
-  try {
-    const trace::EdgeTableEvent& table = trace.edge_table(triangle);
-    const int entries = static_cast<int>(table.edges.size() + table.horizontal.size());
+  if (const trace::EdgeTableEvent* table = trace.find_edge_table(triangle)) {
+    const int entries = static_cast<int>(table->edges.size() + table->horizontal.size());
     for (int e = 0; e < entries; ++e)
       plan.steps.push_back({.kind = StepKind::edge_table_entry,
                             .triangle = triangle,
                             .entry = e,
                             .weight = kEntryWeight});
-  } catch (const std::out_of_range&) {
   }
   plan_scanlines(trace, triangle, options, plan);
   if (begun)

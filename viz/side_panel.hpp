@@ -1,5 +1,5 @@
 #pragma once
-// The right half of a triangle frame (design.md §6): what the fill knows at this step — the
+// The right half of a triangle frame (docs/design.md §6): what the fill knows at this step — the
 // vertices, the edge table, the active edge table, the active points and their colours, the span,
 // and the formula being applied.
 #include <opencv2/core.hpp>

@@ -1,6 +1,6 @@
 #pragma once
-// Optional look-ups into a trace: the Trace accessors throw when an event is absent, but a
-// filtered or interrupted trace legitimately lacks some, and a frame then shows what there is.
+// Look-ups into a trace for the frames, which show what there is: a filtered or interrupted trace
+// legitimately lacks some events (the Trace's find_ accessors answer nullptr then).
 #include <string>
 
 #include <spdlog/fmt/fmt.h>
@@ -10,25 +10,15 @@
 namespace scantrace::viz {
 
 inline const trace::TriangleBegin* find_begin(const trace::Trace& t, int triangle) {
-  if (triangle < 0 || !t.has_triangle(triangle)) return nullptr;
-  try {
-    return &t.triangle_begin(triangle);
-  } catch (const std::out_of_range&) {
-    return nullptr;
-  }
+  return t.find_triangle_begin(triangle);
 }
 
 inline const trace::EdgeTableEvent* find_edge_table(const trace::Trace& t, int triangle) {
-  if (triangle < 0 || !t.has_triangle(triangle)) return nullptr;
-  try {
-    return &t.edge_table(triangle);
-  } catch (const std::out_of_range&) {
-    return nullptr;
-  }
+  return t.find_edge_table(triangle);
 }
 
 inline const trace::Scanline* find_scanline(const trace::Trace& t, int triangle, trace::i64 y) {
-  return t.has_scanline(triangle, y) ? &t.scanline(triangle, y) : nullptr;
+  return t.find_scanline(triangle, y);
 }
 
 inline const trace::EdgeEntry* find_edge(const trace::EdgeTableEvent* table, int id) {

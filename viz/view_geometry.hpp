@@ -1,7 +1,7 @@
 #pragma once
 // Where the canvas appears on a frame: a region of canvas pixels magnified into a rectangle of
 // the frame, every pixel a square cell. Pixel (x, y) is centred on the canvas point (x, y)
-// (design.md §2), so its cell spans x - 0.5 … x + 0.5.
+// (docs/design.md §2), so its cell spans x - 0.5 … x + 0.5.
 #include <cstdint>
 #include <optional>
 #include <utility>

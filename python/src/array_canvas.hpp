@@ -34,7 +34,7 @@ class ArrayCanvas {
   P* row(int y) { return pixels_ + static_cast<std::size_t>(y) * width_; }
   static P convert(Color c) { return P::from(c); }
   void fill_span(int y, int x_begin, int x_end, Color c) {
-    ImageCanvas<P>::fill_pixels(row(y) + x_begin, row(y) + x_end, convert(c));
+    scantrace::fill_pixels(row(y) + x_begin, row(y) + x_end, convert(c));
   }
   void set(int x, int y, Color c) { row(y)[x] = convert(c); }
   void shade_span(int y, int x_begin, int x_end, Color c, Color step) {
@@ -44,7 +44,7 @@ class ArrayCanvas {
   // Every pixel set to `c` (the background before a render).
   void clear(Color c) {
     const std::size_t n = static_cast<std::size_t>(width_) * height_;
-    if (n > 0) ImageCanvas<P>::fill_pixels(pixels_, pixels_ + n, convert(c));
+    if (n > 0) scantrace::fill_pixels(pixels_, pixels_ + n, convert(c));
   }
 
  private:

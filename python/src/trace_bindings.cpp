@@ -20,6 +20,8 @@ Scene load_scene_file(const std::string& path, Shading obj_shading);
 namespace {
 
 using namespace scantrace::trace;
+// The trace event's span (scantrace::Span, the fill's, is another type).
+using scantrace::trace::Span;
 
 // A trace and, when it was recorded here, the image its fill drew.
 struct PyTrace {

@@ -27,7 +27,7 @@ struct RunOptions {
   std::vector<Family> families{kAllFamilies.begin(), kAllFamilies.end()};
   std::optional<std::uint64_t> only_case;  // run just this case index of each family (replay)
   std::uint64_t max_cases = UINT64_MAX;    // per family
-  double colour_tolerance = 1e-4;          // design.md §3
+  double colour_tolerance = 1e-4;          // docs/design.md §3
   int reproducers_per_cell = 10;           // for the methods other than the default (which get all)
   std::string default_method = "exact";    // the method whose failures fail the run
   std::function<void(const Progress&)> progress;  // called about once a second

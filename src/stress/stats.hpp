@@ -9,7 +9,7 @@
 namespace scantrace::stress {
 
 // Colour error against the exact barycentric colour, per channel: at the float level and at the
-// 8-bit level of the image files, |round(255 c) − round(255 c_ref)| (design.md §2).
+// 8-bit level of the image files, |round(255 c) − round(255 c_ref)| (docs/design.md §2).
 struct ColourError {
   double max = 0, sum_sq = 0;
   long long samples = 0;  // channels compared

@@ -1,4 +1,4 @@
-// Painter's order (design.md §2: mean depth, farthest first, stable on ties), the render of an
+// Painter's order (docs/design.md §2: mean depth, farthest first, stable on ties), the render of an
 // overlapping pair, and scene validation naming the offending element.
 #include <algorithm>
 #include <catch2/catch.hpp>

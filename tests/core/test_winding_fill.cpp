@@ -169,7 +169,7 @@ TEST_CASE(
         return Contours{tangle(rng, static_cast<int>(rng.integer(4, 9)), false)};
       },
       true);
-  // Far vertices: the fill starts edges at the first visible row, exactly (design.md §3).
+  // Far vertices: the fill starts edges at the first visible row, exactly (docs/design.md §3).
   against_reference(62, 100, false, [&](sttest::Rng& rng) {
     std::vector<Vec2> v = tangle(rng, static_cast<int>(rng.integer(4, 8)), false);
     const double far = rng.integer(0, 1) ? 1e9 : -1e9;

@@ -53,11 +53,11 @@ struct RecordingTracer {
                          {s.active_edges.begin(), s.active_edges.end()},
                          {s.active_points.begin(), s.active_points.end()},
                          s.has_span,
-                         s.x_begin,
-                         s.x_end,
-                         s.has_span_colors,
-                         s.span_begin,
-                         s.span_end});
+                         s.span.x_begin,
+                         s.span.x_end,
+                         s.has_span && s.span.has_colors,
+                         s.span.begin,
+                         s.span.end});
   }
   void pixel(int t, i64 x, i64 y, Color c, double w) { pixels.push_back({t, x, y, c, w}); }
 };

@@ -1,4 +1,4 @@
-#include "tracer.hpp"
+#include "fill_result.hpp"
 
 namespace scantrace {
 

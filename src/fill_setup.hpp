@@ -1,0 +1,59 @@
+#pragma once
+// The set-up every fill does before its first row: check the options, snap the vertices to the
+// subpixel grid, and reject what cannot fill a pixel of the canvas (docs/design.md §3).
+#include <algorithm>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "canvas.hpp"
+#include "color.hpp"
+#include "fill_options.hpp"
+#include "fill_result.hpp"
+#include "fixed_point.hpp"
+#include "vec2.hpp"
+
+namespace scantrace {
+
+inline void require_valid(const SubpixelGrid& grid) {
+  if (!grid.valid())
+    throw std::invalid_argument("fill: subpixel_bits must be in 0…" +
+                                std::to_string(kMaxSubpixelBits));
+}
+
+// Snaps `points` into `snapped`: too_few_vertices or out_of_range when that cannot be done.
+inline SkipReason snap_vertices(std::span<const Vec2> points, std::span<const Color> colors,
+                                const SubpixelGrid& grid, std::vector<FixedPoint>& snapped) {
+  const std::size_t n = points.size();
+  if (colors.size() != n) throw std::invalid_argument("fill: one colour per vertex is needed");
+  if (n < 3) return SkipReason::too_few_vertices;
+  snapped.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!SubpixelGrid::representable(points[i])) return SkipReason::out_of_range;
+    snapped[i] = grid.snap(points[i]);
+  }
+  return SkipReason::none;
+}
+
+// Whether the bounding box of `p` holds a pixel centre under `rule` (no_pixel_centre) and one of
+// the canvas's columns [0, width) and rows `band` (offscreen), before any per-row work.
+inline SkipReason covers_pixels(std::span<const FixedPoint> p, const SubpixelGrid& grid,
+                                FillRule rule, int width, RowBand band) {
+  i64 x_min = p[0].x, x_max = p[0].x, y_min = p[0].y, y_max = p[0].y;
+  for (const FixedPoint& q : p) {
+    x_min = std::min(x_min, q.x), x_max = std::max(x_max, q.x);
+    y_min = std::min(y_min, q.y), y_max = std::max(y_max, q.y);
+  }
+  const bool closed = rule == FillRule::closed;
+  // The pixel rows and columns the bounding box spans under the fill rule, before clipping.
+  const i64 col_first = grid.ceil_to_pixel(x_min), row_first = grid.ceil_to_pixel(y_min);
+  const i64 col_last = closed ? grid.floor_to_pixel(x_max) : grid.ceil_to_pixel(x_max) - 1;
+  const i64 row_last = closed ? grid.floor_to_pixel(y_max) : grid.ceil_to_pixel(y_max) - 1;
+  if (col_first > col_last || row_first > row_last) return SkipReason::no_pixel_centre;
+  if (col_last < 0 || col_first >= width || row_last < band.begin || row_first >= band.end)
+    return SkipReason::offscreen;
+  return SkipReason::none;
+}
+
+}  // namespace scantrace

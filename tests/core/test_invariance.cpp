@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "double_canvas.hpp"
 #include "random.hpp"
 #include "raster_compare.hpp"
 #include "src/scanline_fill.hpp"
@@ -52,24 +53,7 @@ RgbImage render(const Triangle& t, const Colors& c, const FillOptions& opt, int 
   return img;
 }
 
-// Keeps the colours the fill computes in double: a float image would round away a difference in
-// the last bits, which the vertex order must not cause either.
-class ExactCanvas {
- public:
-  ExactCanvas(int w, int h)
-      : w_(w), h_(h), px_(static_cast<std::size_t>(w) * h, Color{-1, -1, -1}) {}
-  int width() const { return w_; }
-  int height() const { return h_; }
-  void fill_span(int y, int xb, int xe, Color c) {
-    for (int x = xb; x < xe; ++x) set(x, y, c);
-  }
-  void set(int x, int y, Color c) { px_[static_cast<std::size_t>(y) * w_ + x] = c; }
-  friend bool operator==(const ExactCanvas&, const ExactCanvas&) = default;
-
- private:
-  int w_, h_;
-  std::vector<Color> px_;
-};
+using ExactCanvas = sttest::DoubleCanvas;
 
 ExactCanvas render_exact(const Triangle& t, const Colors& c, const FillOptions& opt, int w, int h) {
   ExactCanvas canvas(w, h);

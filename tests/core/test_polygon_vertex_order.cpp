@@ -8,6 +8,7 @@
 #include <numbers>
 #include <vector>
 
+#include "double_canvas.hpp"
 #include "random.hpp"
 #include "reference_raster.hpp"
 #include "src/exact_reference.hpp"
@@ -22,24 +23,7 @@ using scantrace::Shading;
 using scantrace::Vec2;
 using sttest::Rng;
 
-// Colours in double, and which pixels were written (a colour of -1 never is).
-class DoubleCanvas {
- public:
-  DoubleCanvas(int w, int h)
-      : w_(w), h_(h), px_(static_cast<std::size_t>(w) * h, Color{-1, -1, -1}) {}
-  int width() const { return w_; }
-  int height() const { return h_; }
-  void fill_span(int y, int xb, int xe, Color c) {
-    for (int x = xb; x < xe; ++x) set(x, y, c);
-  }
-  void set(int x, int y, Color c) { px_[static_cast<std::size_t>(y) * w_ + x] = c; }
-  bool written(int x, int y) const { return px_[static_cast<std::size_t>(y) * w_ + x].r >= 0; }
-  friend bool operator==(const DoubleCanvas&, const DoubleCanvas&) = default;
-
- private:
-  int w_, h_;
-  std::vector<Color> px_;
-};
+using DoubleCanvas = sttest::DoubleCanvas;
 
 // n points on a circle at sorted random angles (a convex polygon), rounded to multiples of
 // 1/grid: integers put centres on edges and vertices, 2^16 keeps them fractional.

@@ -105,9 +105,7 @@ PixelStory why(const Scene& scene, const FillOptions& options, int x, int y) {
     throw std::out_of_range(
         fmt::format("pixel ({}, {}) is outside the {}x{} canvas", x, y, scene.width, scene.height));
   std::vector<int> faces;
-  // Half a step of the subpixel grid: what snapping can move a vertex by.
-  const double margin = std::ldexp(0.5, -std::clamp(options.subpixel_bits, 0, 30));
-  const Scene around = scene_around(scene, x, y, margin, &faces);
+  const Scene around = scene_around(scene, x, y, snap_margin(options), &faces);
   trace::TraceFilter filter;
   filter.level = TraceLevel::pixel;
   filter.rows = trace::RowRange{y, y};

@@ -3,6 +3,7 @@
 #include "grade/pixel_story.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "trace/record.hpp"
 
@@ -27,11 +28,15 @@ Scene scene_around(const Scene& scene, int x, int y, double margin, std::vector<
   return out;
 }
 
+double snap_margin(const FillOptions& options) {
+  return std::ldexp(0.5, -std::clamp(options.subpixel_bits, 0, 30));
+}
+
 trace::Trace trace_around(const Scene& scene, const FillOptions& options, int x, int y,
                           TraceLevel level) {
   trace::TraceFilter filter;
   filter.level = level;
-  filter.triangles = trace::IndexSet::of(faces_around(scene, x, y, 0.01));
+  filter.triangles = trace::IndexSet::of(faces_around(scene, x, y, snap_margin(options)));
   return trace::record_scene(scene, options, filter);
 }
 

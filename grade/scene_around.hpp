@@ -16,6 +16,9 @@ namespace scantrace::grade {
 // step).
 Scene scene_around(const Scene& scene, int x, int y, double margin, std::vector<int>* faces);
 
+// The margin for `options`: half a step of its subpixel grid, what snapping can move a vertex by.
+double snap_margin(const FillOptions& options);
+
 // The trace, at `level`, of the faces around pixel (x, y) as the whole scene draws them: every
 // face is filled and only those around the pixel are recorded, so the trace — and a replay of it —
 // names each face by its index in the scene, as `why`'s text does.

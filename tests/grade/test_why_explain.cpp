@@ -53,5 +53,12 @@ TEST_CASE("why --explain's trace names the faces around the pixel by scene index
     std::vector<int> listed;
     for (const auto& step : grade::why(s, o, x, y).faces) listed.push_back(step.face);
     CHECK(listed == expected);
+    // On a coarse grid snapping moves vertices by up to half a pixel: both widen the boxes alike.
+    FillOptions coarse;
+    coarse.subpixel_bits = 0;
+    std::vector<int> coarse_listed;
+    for (const auto& step : grade::why(s, coarse, x, y).faces) coarse_listed.push_back(step.face);
+    CHECK(grade::trace_around(s, coarse, x, y, TraceLevel::scanline).triangles() == coarse_listed);
+    CHECK(coarse_listed.size() > expected.size());
   }
 }

@@ -45,9 +45,16 @@ def python_ticks_during(call):
 
 def gil_holding_call(seconds):
     """A deliberately wrong call for comparison: C code that keeps the GIL (time.sleep does not,
-    so this busy-waits inside one Python-level C call: sum over a big generator-free range)."""
-    n = int(3e7 * seconds)
-    return lambda: sum(range(n))
+    so this busy-waits inside one Python-level C call: sum over a big generator-free range).
+    Sized on this machine, at this moment: a fixed count took 45 ms on a fast one, too short for
+    the comparison to mean anything."""
+    n = 1 << 20
+    while True:
+        start = time.perf_counter()
+        sum(range(n))
+        if time.perf_counter() - start >= seconds:
+            return lambda: sum(range(n))
+        n *= 2
 
 
 def test_render_releases_the_gil():

@@ -18,7 +18,7 @@ import images
 SKIP = 77
 WIDTH, HEIGHT = 640, 360
 FRAME_HEIGHT = 344  # the status line takes 16 of the 360 rows (16 per 720)
-TIMEOUT = 30
+TIMEOUT = 120  # seconds; every wait is for a condition, so a loaded machine only costs time
 
 
 def run(scantrace, *args, cwd, env=None, check=True):

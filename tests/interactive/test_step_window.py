@@ -79,11 +79,20 @@ class Window:
     def __init__(self, display, scantrace, args, cwd):
         self.display = display
         self.err_path = os.path.join(cwd, "step.err")
-        self.err = open(self.err_path, "w")
-        self.process = subprocess.Popen([scantrace, "step", *args], cwd=cwd, env=display.env,
-                                        stdout=subprocess.DEVNULL, stderr=self.err)
-        self.id = poll(lambda: display.xdotool("search", "--name", "^scantrace step$"),
-                       "the window").split()[0]
+        command = [scantrace, "step", *args]
+        # Once in CI (a loaded 2-core machine) a window never appeared in 120 s, and that run
+        # said nothing more; here it appears in 1-3 s. So a window that is not there after half
+        # the time is reported with what the display and the process show, and the command is
+        # started once more; a second miss fails.
+        try:
+            self.id = self.launch(command, cwd, TIMEOUT / 2)
+        except TimeoutError as first:
+            print(f"note: {first}; starting it again", flush=True)
+            self.kill()
+            try:
+                self.id = self.launch(command, cwd, TIMEOUT)
+            except TimeoutError as second:
+                raise AssertionError(f"{first}; and again: {second}") from None
         # The window is mapped before it gets the image's size.
         def geometry():
             text = display.xdotool("getwindowgeometry", "--shell", self.id)
@@ -94,6 +103,26 @@ class Window:
         self.x, self.y = int(g["X"]), int(g["Y"])
         # The pointer away from the window, so that it is not in the screenshots.
         display.xdotool("mousemove", "1000", "750")
+
+    def launch(self, command, cwd, timeout):
+        """Starts the command and returns its window's id; TimeoutError says what was seen."""
+        self.err = open(self.err_path, "w")
+        self.process = subprocess.Popen(command, cwd=cwd, env=self.display.env,
+                                        stdout=subprocess.DEVNULL, stderr=self.err)
+
+        def window():
+            if self.process.poll() is not None:
+                raise AssertionError(f"{' '.join(command[1:])} exited with status "
+                                     f"{self.process.returncode} before its window appeared: "
+                                     f"{self.log()}")
+            return self.display.xdotool("search", "--name", "^scantrace step$")
+        try:
+            return poll(window, "the window", timeout).split()[0]
+        except TimeoutError:
+            names = self.display.xdotool("search", "--name", ".")
+            raise TimeoutError(f"no window named 'scantrace step' after {timeout:.0f} s for "
+                               f"{' '.join(command[1:])}, still running; the display's windows: "
+                               f"[{' '.join(names.split())}]; its log: {self.log()!r}") from None
 
     def log(self):
         return open(self.err_path).read()

@@ -8,6 +8,7 @@
 #include "edge_stepper.hpp"
 #include "edge_table.hpp"
 #include "fixed_point.hpp"
+#include "flat_span.hpp"
 #include "row_trace.hpp"
 
 namespace scantrace {
@@ -20,6 +21,7 @@ struct FillScratch {
   ActiveEdgeList<DoubleStepper> active_double;
   ActiveEdgeList<FloatStepper> active_float;
   RowTraceScratch trace;  // only used when tracing rows
+  FlatRow flat_row;       // long flat spans on a DirectCanvas
 
   template <class Stepper>
   ActiveEdgeList<Stepper>& active() {

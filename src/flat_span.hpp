@@ -4,27 +4,73 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <type_traits>
+#include <vector>
 
 namespace scantrace {
 
+// Spans up to this many pixels are a plain store loop: most spans of a real scene are this short,
+// and a call to memcpy costs more than it saves on them.
+inline constexpr std::ptrdiff_t kShortSpan = 32;
+
 // Pixels [first, last) := value. The value is a local copy on purpose: std::fill reads it through
 // a reference, and with 8-bit pixels every byte stored may alias it, so it would be reloaded for
-// every pixel. Short spans (the common case) are a plain loop; long ones are a few pixels copied
-// onto the rest in doubling blocks: memcpy moves a 3-byte pattern as fast as memset moves a
-// 1-byte one, a pixel loop does not.
+// every pixel. Long spans are a few pixels copied onto the rest in doubling blocks: memcpy moves a
+// 3-byte pattern as fast as memset moves a 1-byte one, a pixel loop does not.
 template <class P>
 void fill_pixels(P* first, P* last, P value) {
-  constexpr std::ptrdiff_t kShort = 32;
-  if (last - first <= kShort) {
+  if (last - first <= kShortSpan) {
     for (; first != last; ++first) *first = value;
     return;
   }
-  for (P* p = first; p != first + kShort; ++p) *p = value;
-  for (std::ptrdiff_t done = kShort, n = last - first; done < n;) {
+  for (P* p = first; p != first + kShortSpan; ++p) *p = value;
+  for (std::ptrdiff_t done = kShortSpan, n = last - first; done < n;) {
     const std::ptrdiff_t chunk = std::min(done, n - done);
     std::memcpy(first + done, first, static_cast<std::size_t>(chunk) * sizeof(P));
     done += chunk;
   }
 }
+
+// A row of one pixel value kept between the spans of a polygon, so that each long span of a large
+// flat polygon is a single memcpy from it, where fill_pixels's doubling blocks cost a dozen short
+// copies per span. The row grows geometrically to the longest span seen (so building it costs at
+// most twice the pixels written), is rebuilt from its first pixel when the value changes, and
+// keeps its memory, so a renderer holding one (in FillScratch) allocates nothing per polygon once
+// it has grown.
+class FlatRow {
+ public:
+  template <class P>
+  void fill(P* first, P* last, P value) {
+    static_assert(std::is_trivially_copyable_v<P>);
+    const std::ptrdiff_t n = last - first;
+    if (n <= kShortSpan) {
+      for (; first != last; ++first) *first = value;
+      return;
+    }
+    if (pixel_size_ != sizeof(P) || std::memcmp(bytes_.data(), &value, sizeof(P)) != 0) {
+      pixel_size_ = sizeof(P);
+      if (bytes_.size() < sizeof(P)) bytes_.resize(sizeof(P));
+      std::memcpy(bytes_.data(), &value, sizeof(P));
+      valid_ = 1;
+    }
+    const auto need = static_cast<std::size_t>(n);
+    if (valid_ < need) grow(std::max(need, 2 * valid_));
+    std::memcpy(first, bytes_.data(), need * sizeof(P));
+  }
+
+ private:
+  // Extends the valid pixels to `pixels` by copying the valid part onto the rest, doubling.
+  void grow(std::size_t pixels) {
+    if (bytes_.size() < pixels * pixel_size_) bytes_.resize(pixels * pixel_size_);
+    while (valid_ < pixels) {
+      const std::size_t chunk = std::min(valid_, pixels - valid_);
+      std::memcpy(bytes_.data() + valid_ * pixel_size_, bytes_.data(), chunk * pixel_size_);
+      valid_ += chunk;
+    }
+  }
+
+  std::vector<unsigned char> bytes_;  // valid_ pixels of pixel_size_ bytes, all equal
+  std::size_t pixel_size_ = 0, valid_ = 0;
+};
 
 }  // namespace scantrace

@@ -155,6 +155,7 @@ struct ConvexRows : RowRule<C, Tracer> {
   // Gouraud with equal colours gives the same colour everywhere: such a polygon is filled as a
   // flat one (the trace still reports Gouraud span colours, which are that colour).
   bool uniform = false;
+  FlatRow& flat_row;
 
   void run(i64 y, const i64 run_last, ActiveEdgeList<Stepper>& active) {
     const bool closed = opt.fill_rule == FillRule::closed;
@@ -207,7 +208,7 @@ struct ConvexRows : RowRule<C, Tracer> {
         const bool trace_pixels = trace.pixels(y);
         if (!shade) {
           if constexpr (DirectCanvas<C>)
-            fill_pixels(canvas.row(yi) + xb, canvas.row(yi) + xe, flat_pixel);
+            flat_row.fill(canvas.row(yi) + xb, canvas.row(yi) + xe, flat_pixel);
           else
             canvas.fill_span(yi, xb, xe, flat);
           if (trace_pixels)
@@ -310,7 +311,9 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
     RowTrace<Tracer> trace(tracer, s.trace, in.triangle, traced);
     result = with_stepper(opt.method, [&]<class Stepper>() {
       detail::ConvexRows<Stepper, C, Tracer> rule{
-          {canvas, in.colors, grid, opt, uniform ? in.colors[0] : flat, trace}, uniform};
+          {canvas, in.colors, grid, opt, uniform ? in.colors[0] : flat, trace},
+          uniform,
+          s.flat_row};
       sweep_scanlines(s.table, canvas_rows(canvas), grid, in.colors, s.active<Stepper>(), rule);
       return rule.result();
     });

@@ -24,12 +24,12 @@
 #include "cli/bench/opencv_scene.hpp"
 #include "cli/bench/timing.hpp"
 #include "cli/commands.hpp"
-#include "cli/stress_opencv.hpp"
 #include "io/atomic_write.hpp"
 #include "io/scene_json.hpp"
 #include "src/band_render.hpp"
 #include "src/demo_scene.hpp"
 #include "src/painter.hpp"
+#include "stress/opencv_rasterizer.hpp"
 #include "trace/event_tracer.hpp"
 #include "trace/recorder.hpp"
 
@@ -119,7 +119,7 @@ class Bench {
         rows[i].wrong_per_million = rows[i + 1].wrong_per_million = a.wrong_per_million();
         rows[i + 1].colour_max = a.colour_max;
       }
-      auto r = make_opencv_rasterizer();
+      auto r = stress::make_opencv_rasterizer();
       rows[rows.size() - 2].wrong_per_million =
           bench::measure_accuracy(*r, w.scene).wrong_per_million();
     }

@@ -17,10 +17,10 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/stress_opencv.hpp"
 #include "io/interrupt.hpp"
-#include "src/stress/report.hpp"
-#include "src/stress/runner.hpp"
+#include "stress/opencv_rasterizer.hpp"
+#include "stress/report.hpp"
+#include "stress/runner.hpp"
 
 namespace scantrace::cli {
 namespace {
@@ -81,7 +81,7 @@ void run_stress_command(const StressArgs& args) {
     if (parse_method(name.c_str(), m))
       owned.push_back(stress::make_method(m));
     else
-      owned.push_back(make_opencv_rasterizer());
+      owned.push_back(stress::make_opencv_rasterizer());
   }
   std::vector<stress::Rasterizer*> rasterizers;
   bool default_checked = false;

@@ -30,11 +30,11 @@ endforeach()
 # The headers keep the repository's layout (src/ is the core) because they include each other
 # by their path from the repository root ("src/scene.hpp"): the installed targets therefore put
 # both P/include (for <scantrace/trace/trace.hpp>) and P/include/scantrace on the include path
-# (src/CMakeLists.txt). The stress generator (src/stress) is part of the command, not the library.
+# (src/CMakeLists.txt).
 foreach(dir src io trace viz)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/scantrace/${dir} COMPONENT development
-          FILES_MATCHING PATTERN "*.hpp" PATTERN "stress" EXCLUDE)
+          FILES_MATCHING PATTERN "*.hpp")
 endforeach()
 install(FILES ${PROJECT_SOURCE_DIR}/trace/trace_schema.json
         DESTINATION ${CMAKE_INSTALL_DATADIR}/scantrace COMPONENT development)

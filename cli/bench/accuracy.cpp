@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "src/stress/checks.hpp"
-#include "src/stress/reference_window.hpp"
+#include "stress/checks.hpp"
+#include "stress/reference_window.hpp"
 
 namespace scantrace::cli::bench {
 

@@ -3,7 +3,7 @@
 // filled alone (in all 6 vertex orders) and compared pixel by pixel with the exact reference
 // (src/exact_reference.hpp) by the stress checks.
 #include "src/scene.hpp"
-#include "src/stress/rasterizer.hpp"
+#include "stress/rasterizer.hpp"
 
 namespace scantrace::cli::bench {
 

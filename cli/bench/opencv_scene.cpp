@@ -9,7 +9,7 @@
 
 namespace scantrace::cli::bench {
 namespace {
-constexpr int kShift = 8;  // fractional bits of the vertices, as in cli/stress_opencv.cpp
+constexpr int kShift = 8;  // fractional bits of the vertices, as in stress/opencv_rasterizer.cpp
 }
 
 OpenCvScene::OpenCvScene(const Scene& scene) : scene_(scene) {

@@ -7,9 +7,9 @@
 #include <memory>
 
 #include "src/scanline_fill.hpp"
-#include "src/stress/checks.hpp"
-#include "src/stress/rasterizer.hpp"
-#include "src/stress/reference_window.hpp"
+#include "stress/checks.hpp"
+#include "stress/rasterizer.hpp"
+#include "stress/reference_window.hpp"
 
 using namespace scantrace;
 using namespace scantrace::stress;

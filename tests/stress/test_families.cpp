@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <string>
 
-#include "src/stress/grid.hpp"
-#include "src/stress/rng.hpp"
-#include "src/stress/stress_case.hpp"
+#include "stress/grid.hpp"
+#include "stress/rng.hpp"
+#include "stress/stress_case.hpp"
 
 using namespace scantrace;
 using namespace scantrace::stress;

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "src/stress/report.hpp"
-#include "src/stress/runner.hpp"
-#include "src/stress/stress_case.hpp"
+#include "stress/report.hpp"
+#include "stress/runner.hpp"
+#include "stress/stress_case.hpp"
 
 using namespace scantrace;
 using namespace scantrace::stress;

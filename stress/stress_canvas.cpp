@@ -1,4 +1,4 @@
-#include "src/stress/stress_canvas.hpp"
+#include "stress/stress_canvas.hpp"
 
 #include <algorithm>
 

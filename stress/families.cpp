@@ -1,7 +1,7 @@
-#include "src/stress/families.hpp"
+#include "stress/families.hpp"
 
-#include "src/stress/generators.hpp"
-#include "src/stress/stress_case.hpp"
+#include "stress/generators.hpp"
+#include "stress/stress_case.hpp"
 
 namespace scantrace::stress {
 

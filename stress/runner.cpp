@@ -1,14 +1,14 @@
-#include "src/stress/runner.hpp"
+#include "stress/runner.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <optional>
 #include <span>
 
-#include "src/stress/checks.hpp"
-#include "src/stress/reference_window.hpp"
-#include "src/stress/report.hpp"
-#include "src/stress/stress_case.hpp"
+#include "stress/checks.hpp"
+#include "stress/reference_window.hpp"
+#include "stress/report.hpp"
+#include "stress/stress_case.hpp"
 
 namespace scantrace::stress {
 namespace {

@@ -2,9 +2,9 @@
 // The stress report: the Markdown table (rows: family × method) and the one-line reproducers.
 #include <string>
 
-#include "src/stress/runner.hpp"
-#include "src/stress/stats.hpp"
-#include "src/stress/stress_case.hpp"
+#include "stress/runner.hpp"
+#include "stress/stats.hpp"
+#include "stress/stress_case.hpp"
 
 namespace scantrace::stress {
 

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "src/stress/rasterizer.hpp"
-#include "src/stress/reference_window.hpp"
-#include "src/stress/stats.hpp"
-#include "src/stress/stress_canvas.hpp"
-#include "src/stress/stress_case.hpp"
+#include "stress/rasterizer.hpp"
+#include "stress/reference_window.hpp"
+#include "stress/stats.hpp"
+#include "stress/stress_canvas.hpp"
+#include "stress/stress_case.hpp"
 
 namespace scantrace::stress {
 

@@ -7,8 +7,8 @@
 #include <numeric>
 #include <utility>
 
-#include "src/stress/generators.hpp"
-#include "src/stress/grid.hpp"
+#include "stress/generators.hpp"
+#include "stress/grid.hpp"
 
 namespace scantrace::stress::detail {
 

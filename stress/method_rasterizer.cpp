@@ -1,7 +1,7 @@
 // The library's four fill methods as stress rasterizers: fill_polygon straight into the canvas,
 // with one FillScratch reused across triangles as a renderer would.
 #include "src/scanline_fill.hpp"
-#include "src/stress/rasterizer.hpp"
+#include "stress/rasterizer.hpp"
 
 namespace scantrace::stress {
 namespace {

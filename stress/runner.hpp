@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "src/stress/families.hpp"
-#include "src/stress/rasterizer.hpp"
-#include "src/stress/stats.hpp"
+#include "stress/families.hpp"
+#include "stress/rasterizer.hpp"
+#include "stress/stats.hpp"
 
 namespace scantrace::stress {
 

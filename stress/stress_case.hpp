@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "src/color.hpp"
-#include "src/stress/families.hpp"
+#include "stress/families.hpp"
 #include "src/vec2.hpp"
 
 namespace scantrace::stress {

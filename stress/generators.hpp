@@ -2,8 +2,8 @@
 // The generator of each family (internal to the stress library). Each fills in the canvas, grid,
 // kind and geometry of a case whose family, seed and index are already set, drawing only from
 // `rng`, the case's own stream.
-#include "src/stress/rng.hpp"
-#include "src/stress/stress_case.hpp"
+#include "stress/rng.hpp"
+#include "stress/stress_case.hpp"
 
 namespace scantrace::stress::detail {
 

@@ -1,4 +1,4 @@
-#include "src/stress/checks.hpp"
+#include "stress/checks.hpp"
 
 #include <algorithm>
 #include <chrono>

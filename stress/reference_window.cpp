@@ -1,4 +1,4 @@
-#include "src/stress/reference_window.hpp"
+#include "stress/reference_window.hpp"
 
 #include <algorithm>
 #include <array>

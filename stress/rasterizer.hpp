@@ -7,8 +7,8 @@
 #include <string>
 
 #include "src/fill_options.hpp"
-#include "src/stress/stress_canvas.hpp"
-#include "src/stress/stress_case.hpp"
+#include "stress/stress_canvas.hpp"
+#include "stress/stress_case.hpp"
 
 namespace scantrace::stress {
 

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "src/stress/generators.hpp"
-#include "src/stress/grid.hpp"
+#include "stress/generators.hpp"
+#include "stress/grid.hpp"
 
 namespace scantrace::stress::detail {
 namespace {

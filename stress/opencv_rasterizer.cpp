@@ -1,4 +1,4 @@
-#include "cli/stress_opencv.hpp"
+#include "stress/opencv_rasterizer.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,13 +7,13 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-namespace scantrace::cli {
+namespace scantrace::stress {
 namespace {
 
 // Fractional bits of the vertices passed to OpenCV (see the header).
 constexpr int kShift = 8;
 
-class OpenCvRasterizer final : public stress::Rasterizer {
+class OpenCvRasterizer final : public Rasterizer {
  public:
   std::string name() const override { return "opencv"; }
   FillRule rule() const override { return FillRule::closed; }
@@ -67,8 +67,8 @@ class OpenCvRasterizer final : public stress::Rasterizer {
 
 }  // namespace
 
-std::unique_ptr<stress::Rasterizer> make_opencv_rasterizer() {
+std::unique_ptr<Rasterizer> make_opencv_rasterizer() {
   return std::make_unique<OpenCvRasterizer>();
 }
 
-}  // namespace scantrace::cli
+}  // namespace scantrace::stress

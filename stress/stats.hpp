@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "src/stress/families.hpp"
+#include "stress/families.hpp"
 
 namespace scantrace::stress {
 

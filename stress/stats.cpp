@@ -1,4 +1,4 @@
-#include "src/stress/stats.hpp"
+#include "stress/stats.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "src/stress/report.hpp"
+#include "stress/report.hpp"
 
 #include <cstdio>
 #include <string>
 
 #include "src/fill_options.hpp"
-#include "src/stress/checks.hpp"
+#include "stress/checks.hpp"
 
 namespace scantrace::stress {
 namespace {

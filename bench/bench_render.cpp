@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "io/scene_json.hpp"
-#include "src/demo_scene.hpp"
+#include "demo/demo_scene.hpp"
 #include "src/painter.hpp"
 
 namespace {

@@ -27,7 +27,7 @@
 #include "io/atomic_write.hpp"
 #include "io/scene_json.hpp"
 #include "src/band_render.hpp"
-#include "src/demo_scene.hpp"
+#include "demo/demo_scene.hpp"
 #include "src/painter.hpp"
 #include "stress/opencv_rasterizer.hpp"
 #include "trace/event_tracer.hpp"

@@ -16,7 +16,7 @@
 #include "io/mat_scene.hpp"
 #include "io/scene_json.hpp"
 #include "scene_compare.hpp"
-#include "src/demo_scene.hpp"
+#include "demo/demo_scene.hpp"
 
 using namespace scantrace;
 using scantrace::test::run_scantrace;

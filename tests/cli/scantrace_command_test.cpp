@@ -10,7 +10,7 @@
 #include "cli_test_support.hpp"
 #include "io/scene_json.hpp"
 #include "scene_compare.hpp"
-#include "src/demo_scene.hpp"
+#include "demo/demo_scene.hpp"
 #include "src/painter.hpp"
 #include "trace/trace.hpp"
 #include "viz/opencv_image.hpp"

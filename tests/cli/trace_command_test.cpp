@@ -8,7 +8,7 @@
 
 #include "cli_test_support.hpp"
 #include "io/scene_json.hpp"
-#include "src/demo_scene.hpp"
+#include "demo/demo_scene.hpp"
 #include "trace/event_json.hpp"
 #include "trace/record.hpp"
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "src/band_render.hpp"
-#include "src/demo_scene.hpp"
+#include "demo/demo_scene.hpp"
 #include "src/splitmix64.hpp"
 
 namespace {

@@ -6,7 +6,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "src/demo_mesh.hpp"
+#include "demo/demo_mesh.hpp"
 #include "src/painter.hpp"
 #include "src/shade_mesh.hpp"
 

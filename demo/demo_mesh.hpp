@@ -1,6 +1,6 @@
 #pragma once
 // A mesh the project generates itself, so that `scantrace demo` needs no file: a torus.
-#include "mesh.hpp"
+#include "src/mesh.hpp"
 
 namespace scantrace {
 

@@ -1,4 +1,4 @@
-#include "demo_mesh.hpp"
+#include "demo/demo_mesh.hpp"
 
 #include <cmath>
 #include <numbers>

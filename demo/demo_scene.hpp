@@ -1,5 +1,5 @@
 #pragma once
-#include "scene.hpp"
+#include "src/scene.hpp"
 
 namespace scantrace {
 

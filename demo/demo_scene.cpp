@@ -1,6 +1,6 @@
-#include "demo_scene.hpp"
+#include "demo/demo_scene.hpp"
 
-#include "splitmix64.hpp"
+#include "src/splitmix64.hpp"
 
 #include <algorithm>
 #include <cmath>

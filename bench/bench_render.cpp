@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "io/scene_json.hpp"
 #include "demo/demo_scene.hpp"
+#include "io/scene_json.hpp"
 #include "src/painter.hpp"
 
 namespace {

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "io/scene_json.hpp"
 #include "demo/demo_scene.hpp"
+#include "io/scene_json.hpp"
 #include "src/painter.hpp"
 #include "trace/event_tracer.hpp"
 #include "trace/recorder.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 
 struct Job {
   std::string name;
@@ -19,4 +19,4 @@ struct Job {
 std::vector<double> time_interleaved(const std::vector<Job>& jobs, int rounds,
                                      double min_seconds = 2e-3);
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

@@ -5,7 +5,7 @@
 #include "src/scene.hpp"
 #include "stress/rasterizer.hpp"
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 
 struct Accuracy {
   long long reference_pixels = 0;  // pixels the reference covers, over all fills
@@ -19,4 +19,4 @@ struct Accuracy {
 
 Accuracy measure_accuracy(stress::Rasterizer& rasterizer, const Scene& scene);
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

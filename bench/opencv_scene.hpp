@@ -10,7 +10,7 @@
 
 #include "src/scene.hpp"
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 
 class OpenCvScene {
  public:
@@ -24,4 +24,4 @@ class OpenCvScene {
   std::vector<cv::Scalar> colors_;  // the flat colour (mean of the vertex colours), 8-bit BGR
 };
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

@@ -8,7 +8,7 @@
 
 #include "src/scene.hpp"
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 
 // `count` triangles of mean area `mean_area` px² at random places on a width × height canvas
 // (vertices uniform in a square of side L around a random centre: E[area] = 11/144·L²).
@@ -32,4 +32,4 @@ Scene zero_area_triangles(int count);
 // The course-like field of small triangles with all three colours of each face equal.
 Scene uniform_colour_triangles(std::uint64_t seed, int count);
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

@@ -1,4 +1,4 @@
-#include "cli/bench/allocation_counter.hpp"
+#include "bench/allocation_counter.hpp"
 
 #include <cstdlib>
 #include <new>
@@ -20,11 +20,11 @@ void* allocate_aligned(std::size_t size, std::align_val_t align) {
 }
 }  // namespace
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 long long allocations_so_far() {
   return g_allocations;
 }
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench
 
 // Every form of the global operator new and delete is replaced, so that whatever form allocated a
 // block (std::get_temporary_buffer uses the nothrow one) its release reaches the matching free():

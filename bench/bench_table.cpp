@@ -1,4 +1,4 @@
-#include "cli/bench/bench_table.hpp"
+#include "bench/bench_table.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 
 #include "io/atomic_write.hpp"
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 namespace {
 
 std::string number(std::optional<double> v, const char* format = "%.6g") {
@@ -117,4 +117,4 @@ void write_plot(const std::vector<Measurement>& rows, const std::filesystem::pat
       png, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

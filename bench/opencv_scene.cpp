@@ -1,4 +1,4 @@
-#include "cli/bench/opencv_scene.hpp"
+#include "bench/opencv_scene.hpp"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@
 #include "src/image.hpp"
 #include "src/painter.hpp"
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 namespace {
 constexpr int kShift = 8;  // fractional bits of the vertices, as in stress/opencv_rasterizer.cpp
 }
@@ -36,4 +36,4 @@ void OpenCvScene::render(cv::Mat& image) const {
     cv::fillConvexPoly(image, points_[f].data(), 3, colors_[f], cv::LINE_8, kShift);
 }
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 
 struct Measurement {
   std::string workload;  // "course scene", "small triangles (10 px²)", …
@@ -24,4 +24,4 @@ std::string csv(const std::vector<Measurement>& rows);
 // The runtime-vs-error plot: one point per (workload, variant, shading) with an error.
 void write_plot(const std::vector<Measurement>& rows, const std::filesystem::path& png);
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

@@ -1,11 +1,11 @@
-#include "cli/bench/accuracy.hpp"
+#include "bench/accuracy.hpp"
 
 #include <algorithm>
 
 #include "stress/checks.hpp"
 #include "stress/reference_window.hpp"
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 
 Accuracy measure_accuracy(stress::Rasterizer& rasterizer, const Scene& scene) {
   stress::Checker checker;
@@ -33,4 +33,4 @@ Accuracy measure_accuracy(stress::Rasterizer& rasterizer, const Scene& scene) {
   return a;
 }
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

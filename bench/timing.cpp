@@ -1,9 +1,9 @@
-#include "cli/bench/timing.hpp"
+#include "bench/timing.hpp"
 
 #include <algorithm>
 #include <chrono>
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 namespace {
 
 double seconds_of(const std::function<void()>& run, int repeats) {
@@ -33,4 +33,4 @@ std::vector<double> time_interleaved(const std::vector<Job>& jobs, int rounds, d
   return medians;
 }
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

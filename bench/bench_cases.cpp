@@ -1,4 +1,4 @@
-#include "cli/bench/bench_cases.hpp"
+#include "bench/bench_cases.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 
 #include "src/splitmix64.hpp"
 
-namespace scantrace::cli::bench {
+namespace scantrace::bench {
 namespace {
 
 Scene canvas(int width, int height) {
@@ -146,4 +146,4 @@ Scene uniform_colour_triangles(std::uint64_t seed, int count) {
   return s;
 }
 
-}  // namespace scantrace::cli::bench
+}  // namespace scantrace::bench

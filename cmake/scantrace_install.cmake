@@ -1,6 +1,7 @@
 # `cmake --install build --prefix P`: the scantrace command, the libraries as the CMake package
 # `scantrace` (find_package(scantrace 0.2 CONFIG REQUIRED), targets scantrace::core, ::io, ::trace,
-# ::viz), and their headers under P/include/scantrace/{src,io,trace,viz}/ (README "Installing").
+# ::reference, ::viz), and their headers under P/include/scantrace/{src,reference,io,trace,viz}/
+# (README "Installing").
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -8,7 +9,7 @@ set(SCANTRACE_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/scantrace)
 
 # One export set per library, in dependency order, so that the package config can load only the
 # components whose dependencies are present: a consumer of scantrace::core needs no OpenCV.
-set(scantrace_components core io trace viz)
+set(scantrace_components core reference io trace viz)
 
 foreach(component IN LISTS scantrace_components)
   set(target scantrace_${component})
@@ -31,7 +32,7 @@ endforeach()
 # by their path from the repository root ("src/scene.hpp"): the installed targets therefore put
 # both P/include (for <scantrace/trace/trace.hpp>) and P/include/scantrace on the include path
 # (src/CMakeLists.txt).
-foreach(dir src io trace viz)
+foreach(dir src reference io trace viz)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/scantrace/${dir} COMPONENT development
           FILES_MATCHING PATTERN "*.hpp")

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "src/color.hpp"
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 #include "src/fill_options.hpp"
 #include "src/scene.hpp"
 

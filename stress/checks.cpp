@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 
 namespace scantrace::stress {
 namespace {

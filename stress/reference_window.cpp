@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 
 namespace scantrace::stress {
 

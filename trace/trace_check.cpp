@@ -6,7 +6,7 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 #include "src/fixed_point.hpp"
 #include "trace.hpp"
 

@@ -4,7 +4,7 @@
 // rather than a tautology. The tests compare on the fill's own grid (1/256 px by default).
 #include <span>
 
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 
 namespace sttest {
 

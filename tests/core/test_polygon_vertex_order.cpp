@@ -11,7 +11,7 @@
 #include "double_canvas.hpp"
 #include "random.hpp"
 #include "reference_raster.hpp"
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 #include "src/scanline_fill.hpp"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <random>
 
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 #include "src/scanline_fill.hpp"
 
 namespace {

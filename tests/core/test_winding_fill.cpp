@@ -13,7 +13,7 @@
 #include "counting_canvas.hpp"
 #include "random.hpp"
 #include "raster_compare.hpp"
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 #include "src/scanline_fill.hpp"
 #include "src/winding_fill.hpp"
 

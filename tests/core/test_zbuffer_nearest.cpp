@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "random.hpp"
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 #include "src/painter.hpp"
 
 namespace {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "grade/image_input.hpp"
-#include "src/exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 #include "src/fill_options.hpp"
 #include "src/image.hpp"
 #include "src/scene.hpp"

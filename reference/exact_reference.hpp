@@ -2,17 +2,17 @@
 // The exact reference (library code, deliberately independent of the fill): an independent
 // brute-force rasterizer. For every pixel centre of the canvas it evaluates the
 // polygon's edge functions exactly (128-bit integers on the snapped vertices) and applies the fill
-// rule of docs/design.md §3 literally, as a half-plane test with a tie rule. It shares no code with the
-// scanline fill in src/ (only the plain Vec2 / Color value types), so agreement between the two is
-// evidence rather than a tautology.
+// rule of docs/design.md §3 literally, as a half-plane test with a tie rule. It shares no code with
+// the scanline fill in src/ (only the plain Vec2 / Color value types), so agreement between the two
+// is evidence rather than a tautology.
 #include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
-#include "color.hpp"
-#include "fill_options.hpp"
-#include "vec2.hpp"
+#include "src/color.hpp"
+#include "src/fill_options.hpp"
+#include "src/vec2.hpp"
 
 namespace scantrace::reference {
 

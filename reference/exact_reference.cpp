@@ -1,4 +1,4 @@
-#include "exact_reference.hpp"
+#include "reference/exact_reference.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -224,7 +224,7 @@ bool StepPlayer::key(int code) {
 void StepPlayer::click(cv::Point p) {
   const auto g = replayer_->geometry(index_);
   if (!g) return;
-  const trace::Canvas& c = trace_.header().canvas;
+  const trace::CanvasSize& c = trace_.header().canvas;
   if (const auto px = viz::pixel_at(*g, p, {c.width, c.height})) {
     selected_ = *px;
     message_ = fmt::format("selected pixel ({}, {})", px->x, px->y);

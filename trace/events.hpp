@@ -18,14 +18,14 @@ using i64 = std::int64_t;
 inline constexpr const char* kFormatName = "scantrace-trace";
 inline constexpr int kFormatVersion = 1;
 
-struct Canvas {
+struct CanvasSize {
   int width = 0, height = 0;
 };
 
 struct Header {
   std::string format = kFormatName;
   int version = kFormatVersion;
-  Canvas canvas;
+  CanvasSize canvas;
   std::string shading;    // "flat" | "gouraud"
   std::string fill_rule;  // "top-left" | "closed"
   int subpixel_bits = 8;

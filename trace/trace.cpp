@@ -164,7 +164,7 @@ Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
   if (events.empty() || !std::holds_alternative<Header>(events.front()))
     throw TraceError(name + ": a trace starts with its header");
   // Replay allocates from the canvas size: refuse what no writer could have produced.
-  const Canvas canvas = std::get<Header>(events.front()).canvas;
+  const CanvasSize canvas = std::get<Header>(events.front()).canvas;
   if (canvas.width <= 0 || canvas.height <= 0 ||
       static_cast<long long>(canvas.width) * canvas.height > kMaxCanvasPixels)
     throw TraceError(name + ":1: header: canvas " + std::to_string(canvas.width) + "x" +

@@ -25,7 +25,7 @@ cv::Size checked(cv::Size frame) {
 
 cv::Rect Replayer::state_window(const trace::Trace& trace, const StepPlan& plan,
                                 const FrameComposer& composer) {
-  const trace::Canvas c = trace.header().canvas;
+  const trace::CanvasSize c = trace.header().canvas;
   // Every pixel any frame shows; outside the canvas nothing is ever written.
   std::int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
   for (const Step& s : plan.steps)

@@ -31,7 +31,7 @@ Checked check_cells(const cv::Mat& frame, const viz::ViewGeometry& g, const trac
   const trace::TriangleBegin& b = t.triangle_begin(0);
   const std::vector<Vec2>& poly = b.snapped;
   const viz::PixelBox box = g.visible();
-  const trace::Canvas canvas = t.header().canvas;
+  const trace::CanvasSize canvas = t.header().canvas;
   for (std::int64_t y = std::max<std::int64_t>(box.y0, 0); y <= box.y1 && y < canvas.height; ++y)
     for (std::int64_t x = std::max<std::int64_t>(box.x0, 0); x <= box.x1 && x < canvas.width; ++x) {
       if (std::abs(y - busy_row) <= 1) continue;

@@ -39,12 +39,18 @@ def poll(condition, what, timeout=TIMEOUT):
         time.sleep(0.05)
 
 
+class DisplayRefused(Exception):
+    """The window did not appear: the command waited in vain, or Qt could not connect."""
+
+
 class Display:
-    def __init__(self):
+    def __init__(self, work):
         r, w = os.pipe()
+        # Its messages are kept: a failure to open a window shows them (what the server said).
+        self.log_path = os.path.join(work, "xvfb.log")
         self.process = subprocess.Popen(
             ["Xvfb", "-displayfd", str(w), "-screen", "0", "1024x768x24", "-nolisten", "tcp"],
-            pass_fds=(w,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            pass_fds=(w,), stdout=subprocess.DEVNULL, stderr=open(self.log_path, "w"))
         os.close(w)
         number = b""
         while not number.endswith(b"\n"):
@@ -56,6 +62,10 @@ class Display:
         self.name = ":" + number.decode().strip()
         self.env = dict(os.environ, DISPLAY=self.name)
         self.env.pop("WAYLAND_DISPLAY", None)
+
+    def log(self):
+        lines = open(self.log_path).read().splitlines()
+        return " | ".join(lines[-5:])
 
     def close(self):
         self.process.terminate()
@@ -80,18 +90,21 @@ class Window:
         self.display = display
         self.err_path = os.path.join(cwd, "step.err")
         command = [scantrace, "step", *args]
-        # Once in CI (a loaded 2-core machine) a window never appeared in 120 s, and that run
-        # said nothing more; here it appears in 1-3 s. So a window that is not there after half
-        # the time is reported with what the display and the process show, and the command is
+        # Twice in CI (a loaded 2-core machine, other tests running) a window did not appear: once
+        # after 120 s with nothing said, once because Qt aborted the command at start-up
+        # ("qt.qpa.xcb: could not connect to display :0") although the server's socket accepted
+        # scantrace's own check a moment before. Here windows appear in 1-3 s, hundreds of times.
+        # So a window that does not appear (after half the time, or because Qt could not connect)
+        # is reported with what the display, its server and the process said, and the command is
         # started once more; a second miss fails.
         try:
             self.id = self.launch(command, cwd, TIMEOUT / 2)
-        except TimeoutError as first:
+        except DisplayRefused as first:
             print(f"note: {first}; starting it again", flush=True)
             self.kill()
             try:
                 self.id = self.launch(command, cwd, TIMEOUT)
-            except TimeoutError as second:
+            except DisplayRefused as second:
                 raise AssertionError(f"{first}; and again: {second}") from None
         # The window is mapped before it gets the image's size.
         def geometry():
@@ -105,24 +118,28 @@ class Window:
         display.xdotool("mousemove", "1000", "750")
 
     def launch(self, command, cwd, timeout):
-        """Starts the command and returns its window's id; TimeoutError says what was seen."""
+        """Starts the command and returns its window's id; DisplayRefused says what was seen."""
         self.err = open(self.err_path, "w")
         self.process = subprocess.Popen(command, cwd=cwd, env=self.display.env,
                                         stdout=subprocess.DEVNULL, stderr=self.err)
 
         def window():
             if self.process.poll() is not None:
-                raise AssertionError(f"{' '.join(command[1:])} exited with status "
-                                     f"{self.process.returncode} before its window appeared: "
-                                     f"{self.log()}")
+                what = (f"{' '.join(command[1:])} exited with status {self.process.returncode} "
+                        f"before its window appeared: {self.log()!r}; Xvfb: "
+                        f"{self.display.log()!r}")
+                if "could not connect to display" in self.log():
+                    raise DisplayRefused(what)
+                raise AssertionError(what)
             return self.display.xdotool("search", "--name", "^scantrace step$")
         try:
             return poll(window, "the window", timeout).split()[0]
         except TimeoutError:
             names = self.display.xdotool("search", "--name", ".")
-            raise TimeoutError(f"no window named 'scantrace step' after {timeout:.0f} s for "
-                               f"{' '.join(command[1:])}, still running; the display's windows: "
-                               f"[{' '.join(names.split())}]; its log: {self.log()!r}") from None
+            raise DisplayRefused(f"no window named 'scantrace step' after {timeout:.0f} s for "
+                                 f"{' '.join(command[1:])}, still running; the display's "
+                                 f"windows: [{' '.join(names.split())}]; its log: "
+                                 f"{self.log()!r}; Xvfb: {self.display.log()!r}") from None
 
     def log(self):
         return open(self.err_path).read()
@@ -212,7 +229,7 @@ def main():
     frames = images.decode_sequence(os.path.join(work, "frames", "frame_%05d.png"), total,
                                     WIDTH, FRAME_HEIGHT)
 
-    display = Display()
+    display = Display(work)
     checks = 0
     try:
         w = Window(display, scantrace, ["t.jsonl", "--video-size", f"{WIDTH}x{HEIGHT}",

@@ -17,10 +17,46 @@ namespace scantrace {
 
 namespace detail {
 
+// The triangle's vertices in a canonical order, by (y, x) on the grid, with the outline flag of
+// each of its edges carried along. The edge functions are exact whatever the order, but a Gouraud
+// colour w0·c0 + w1·c1 + w2·c2 is summed in double in vertex order: two listings of one triangle
+// could differ in the last bit, and stored as float32 that bit showed in a stress run (random
+// family, seed 20261123, case 2698). Summing in this order makes the colour a function of the
+// triangle, as flat_color makes the flat one.
+struct CanonicalTriangle {
+  std::array<FixedPoint, 3> v;
+  std::array<Color, 3> colors;
+  std::array<bool, 3> outline;  // edge i runs from v[i] to v[i + 1]
+};
+
+inline CanonicalTriangle canonical_triangle(const std::array<FixedPoint, 3>& v,
+                                            const std::array<Color, 3>& colors,
+                                            std::array<bool, 3> outline) {
+  std::array<int, 3> k{0, 1, 2};
+  const auto before = [&](int a, int b) {
+    return v[a].y != v[b].y ? v[a].y < v[b].y : v[a].x < v[b].x;
+  };
+  if (before(k[1], k[0])) std::swap(k[0], k[1]);
+  if (before(k[2], k[1])) std::swap(k[1], k[2]);
+  if (before(k[1], k[0])) std::swap(k[0], k[1]);
+  CanonicalTriangle t;
+  for (int i = 0; i < 3; ++i) {
+    t.v[i] = v[k[i]];
+    t.colors[i] = colors[k[i]];
+    // The given edge joining vertices a and b is the one that starts at whichever of them the
+    // other follows.
+    const int a = k[i], b = k[(i + 1) % 3];
+    t.outline[i] = outline[b == (a + 1) % 3 ? a : b];
+  }
+  return t;
+}
+
 template <Canvas C>
-FillResult fill_halfspace_triangle(C& canvas, const std::array<FixedPoint, 3>& v,
-                                   const std::array<Color, 3>& colors, const FillOptions& opt,
-                                   Color flat, std::array<bool, 3> outline = {true, true, true}) {
+FillResult fill_halfspace_triangle(C& canvas, const std::array<FixedPoint, 3>& given,
+                                   const std::array<Color, 3>& given_colors, const FillOptions& opt,
+                                   Color flat,
+                                   std::array<bool, 3> given_outline = {true, true, true}) {
+  const auto [v, colors, outline] = canonical_triangle(given, given_colors, given_outline);
   const SubpixelGrid grid(opt.subpixel_bits);
   const i64 s = grid.scale();
   const i128 area2 = static_cast<i128>(v[1].x - v[0].x) * (v[2].y - v[0].y) -

@@ -1,10 +1,6 @@
 // scantrace step (TRACE.jsonl | SCENE | --triangle "…" | --polygon "…") [--video-size WxH]
 //                [--fps N] [--rows-per-step N] [--mode …] [--step N] [--save-dir DIR]
 // Steps through the replay of a trace in an OpenCV HighGUI window, at the user's pace.
-#include <sys/socket.h>
-#include <sys/un.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -28,6 +24,7 @@
 #include "cli/trace_flags.hpp"
 #include "cli/trace_input.hpp"
 #include "cli/validators.hpp"
+#include "cli/x_display.hpp"
 #include "io/interrupt.hpp"
 #include "io/obj_loader.hpp"
 #include "trace/record.hpp"
@@ -55,26 +52,6 @@ bool is_trace_file(const std::string& name) {
   return name.size() > 6 && name.compare(name.size() - 6, 6, ".jsonl") == 0;
 }
 
-// Whether an X server answers on the local socket DISPLAY names (":99", "unix:0.0"). Qt aborts
-// the whole process when it cannot connect, so this is asked before the first window; displays on
-// other hosts are left to Qt.
-bool x_display_reachable(const std::string& display) {
-  const std::size_t colon = display.rfind(':');
-  if (colon == std::string::npos) return false;
-  const std::string host = display.substr(0, colon);
-  if (!host.empty() && host != "unix") return true;
-  const std::string number = display.substr(colon + 1, display.find('.', colon) - colon - 1);
-  const std::string path = "/tmp/.X11-unix/X" + number;
-  const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
-  if (fd < 0) return false;
-  sockaddr_un addr{};
-  addr.sun_family = AF_UNIX;
-  std::strncpy(addr.sun_path, path.c_str(), sizeof addr.sun_path - 1);
-  const bool ok = ::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0;
-  ::close(fd);
-  return ok;
-}
-
 // Throws with one line saying why no window can open, and what to do instead.
 void require_display() {
   const std::string instead =
@@ -89,8 +66,10 @@ void require_display() {
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   if ((!display || !*display) && (!wayland || !*wayland))
     throw std::runtime_error("no display to open a window on (DISPLAY is not set)" + instead);
-  if (display && *display && (!wayland || !*wayland) && !x_display_reachable(display))
-    throw std::runtime_error(std::string("no X server answers on DISPLAY=") + display + instead);
+  if (display && *display && (!wayland || !*wayland))
+    if (const auto refusal = x_display_refusal(display))
+      throw std::runtime_error(std::string("cannot open a window on DISPLAY=") + display + ": " +
+                               *refusal + instead);
 }
 
 trace::Trace input_trace(const StepArgs& args) {

@@ -8,9 +8,11 @@ import ctypes
 import os
 import re
 import signal
+import socket
 import shutil
 import subprocess
 import sys
+import threading
 import time
 
 import numpy as np
@@ -218,6 +220,39 @@ class Window:
             self.err.close()
 
 
+def refused_display_run(scantrace, work):
+    """`scantrace step` against a local X socket whose server closes every connection at once."""
+    os.makedirs("/tmp/.X11-unix", exist_ok=True)
+    number = next(n for n in range(4200, 4300)
+                  if not os.path.exists(f"/tmp/.X11-unix/X{n}") and not os.path.exists(f"/tmp/.X{n}-lock"))
+    path = f"/tmp/.X11-unix/X{number}"
+    server = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    server.bind(path)
+    server.listen(8)
+    stop = threading.Event()
+
+    def hang_up():
+        server.settimeout(0.1)
+        while not stop.is_set():
+            try:
+                client, _ = server.accept()
+                client.close()
+            except OSError:
+                pass
+
+    t = threading.Thread(target=hang_up, daemon=True)
+    t.start()
+    try:
+        env = dict(os.environ, DISPLAY=f":{number}")
+        env.pop("WAYLAND_DISPLAY", None)
+        return run(scantrace, "step", "t.jsonl", cwd=work, env=env, check=False)
+    finally:
+        stop.set()
+        t.join()
+        server.close()
+        os.unlink(path)
+
+
 def main():
     scantrace, work = sys.argv[1], sys.argv[2]
     for tool in ("Xvfb", "xdotool", "ffmpeg"):
@@ -236,6 +271,14 @@ def main():
     assert r.returncode == 1, f"no display: exit status {r.returncode}"
     assert r.stderr.count("\n") == 1 and "DISPLAY" in r.stderr and "-o OUT.html" in r.stderr, \
         r.stderr
+
+    # A server that accepts the socket and then hangs up (what Qt met in CI: "could not connect to
+    # display", status -6): scantrace makes the connection itself first, so this is one line and
+    # exit status 1 too, not Qt's abort.
+    r = refused_display_run(scantrace, work)
+    assert r.returncode == 1, f"refused display: exit status {r.returncode}: {r.stderr!r}"
+    assert r.stderr.count("\n") == 1 and "cannot open a window on DISPLAY=" in r.stderr \
+        and "-o OUT.html" in r.stderr, r.stderr
 
     # The replayer's frames for the window's frame size, one step per scanline: the steps are
     # title, set-up, three edge-table entries, rows 2..27, done, end.

@@ -55,8 +55,8 @@ void describe_row(const Scanline& s) {
   for (int e : s.retired) std::printf(" edge %d has ended and leaves the active list;", e);
   for (int e : s.entered) std::printf(" edge %d starts here and joins the active list;", e);
   if (s.active_points.size() == 2) {
-    const ActivePoint& l = s.active_points[0];
-    const ActivePoint& r = s.active_points[1];
+    const trace::ActivePoint& l = s.active_points[0];
+    const trace::ActivePoint& r = s.active_points[1];
     std::printf(" edge %d crosses at x = %.3f with colour %s, edge %d at x = %.3f with colour %s.",
                 l.edge, l.x, color(l.color).c_str(), r.edge, r.x, color(r.color).c_str());
   }

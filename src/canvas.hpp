@@ -46,9 +46,21 @@ concept DirectCanvas = Canvas<C> && requires(C& c, int y, Color col) {
   typename C::Pixel;
   { C::convert(col) } -> std::same_as<typename C::Pixel>;
   { c.row(y) } -> std::same_as<typename C::Pixel*>;
+  { c.row_stride() } -> std::same_as<std::ptrdiff_t>;  // row(y + 1) − row(y), in pixels
 };
 
-// Adapts an Image<P> whose pixel type converts from Color (P::from).
+// A DirectCanvas's pixel type; int for other canvases (a placeholder the fill never writes).
+template <class C>
+struct DirectPixelOf {
+  using type = int;
+};
+template <DirectCanvas C>
+struct DirectPixelOf<C> {
+  using type = typename C::Pixel;
+};
+template <class C>
+using DirectPixel = typename DirectPixelOf<C>::type;
+
 // A Gouraud span of 8-bit pixels in fixed point: each channel as 255·c in 32.32 bits, stepped by
 // an integer increment and rounded by a shift. Converting doubles to bytes costs two conversions
 // per channel and pixel; this costs an add and a shift, and the compiler can vectorise it. The
@@ -75,6 +87,19 @@ inline void shade_bytes(Bgr8* out, int n, Color c, Color step) {
   }
 }
 
+// Pixels [first, last) in the colours c, c + step, c + 2·step, … (a Gouraud span of the exact
+// method, linear from its first pixel): 8-bit pixels in fixed point (shade_bytes), others
+// converted pixel by pixel.
+template <class P>
+void shade_pixels(P* first, P* last, Color c, Color step) {
+  if constexpr (std::is_same_v<P, Bgr8>) {
+    shade_bytes(first, static_cast<int>(last - first), c, step);
+  } else {
+    for (; first != last; ++first, c += step) *first = P::from(c);
+  }
+}
+
+// Adapts an Image<P> whose pixel type converts from Color (P::from).
 template <class P>
 class ImageCanvas {
  public:
@@ -90,16 +115,8 @@ class ImageCanvas {
 
   static P convert(Color c) { return P::from(c); }
 
-  // Pixels [x_begin, x_end) of row y in the colours c, c + step, c + 2·step, … (a Gouraud span).
-  void shade_span(int y, int x_begin, int x_end, Color c, Color step) {
-    P* row = this->row(y);
-    if constexpr (std::is_same_v<P, Bgr8>) {
-      shade_bytes(row + x_begin, x_end - x_begin, c, step);
-    } else {
-      for (int x = x_begin; x < x_end; ++x, c += step) row[x] = P::from(c);
-    }
-  }
   P* row(int y) { return image_.row(y); }
+  std::ptrdiff_t row_stride() const { return image_.width(); }
 
  private:
   Image<P>& image_;

@@ -35,8 +35,8 @@ enum class WindingRule { even_odd, non_zero };
 enum class Cull { none, back, front };
 
 // Which face is visible where faces overlap (read by render(), not by the fill of one polygon):
-// painter: the course's order — farthest mean depth first, later faces overwrite (docs/design.md §2);
-// zbuffer: per-pixel depth, interpolated over the triangle like a Gouraud colour; the nearest
+// painter: the course's order — farthest mean depth first, later faces overwrite (docs/design.md
+// §2); zbuffer: per-pixel depth, interpolated over the triangle like a Gouraud colour; the nearest
 // (smallest) depth wins, ties keep the face drawn first.
 enum class Visibility { painter, zbuffer };
 

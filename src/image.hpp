@@ -26,9 +26,9 @@ struct Rgb32f {
   friend constexpr bool operator==(Rgb32f, Rgb32f) = default;
 };
 
-// round(255·c) clamped to [0, 255] (docs/design.md §2); NaN becomes 0. For 0 < v < 255 the truncation
-// i = (int)v is floor(v) and v − i is exact, so the tie test is exact too: no libm call, which
-// matters because a Gouraud fill converts every pixel it writes.
+// round(255·c) clamped to [0, 255] (docs/design.md §2); NaN becomes 0. For 0 < v < 255 the
+// truncation i = (int)v is floor(v) and v − i is exact, so the tie test is exact too: no libm call,
+// which matters because a Gouraud fill converts every pixel it writes.
 inline std::uint8_t to_byte(double c) {
   const double v = 255.0 * c;
   if (!(v > 0.0)) return 0;

@@ -16,8 +16,8 @@ namespace scantrace {
 // What narrating rows needs, reusable across polygons (part of the fills' scratch).
 struct RowTraceScratch {
   std::vector<int> entered, retired;
-  std::vector<ActiveEdgeState> active_states;
-  std::vector<ActivePointState> active_points;
+  std::vector<EdgeCrossing> active_states;
+  std::vector<ActivePoint> active_points;
   std::vector<Span> spans;
 };
 
@@ -28,19 +28,19 @@ class RowTrace {
   static constexpr bool kPixels = kTraceHooks && Tracer::max_level >= TraceLevel::pixel;
 
   // `traced`: the tracer wants this polygon at all (wants_triangle).
-  RowTrace(Tracer& tracer, RowTraceScratch& s, int polygon, bool traced)
-      : tracer_(tracer), s_(s), polygon_(polygon), traced_(traced) {}
+  RowTrace(Tracer& tracer, RowTraceScratch& s, int face, bool traced)
+      : tracer_(tracer), s_(s), face_(face), traced_(traced) {}
 
   // Decides whether row y is narrated; called before anything happens on the row.
   void begin_row(i64 y) {
     if constexpr (kRows) {
-      row_ = traced_ && tracer_.wants_scanline(polygon_, y);
+      row_ = traced_ && tracer_.wants_scanline(face_, y);
       if (row_) s_.entered.clear(), s_.retired.clear(), s_.spans.clear();
     }
   }
   bool row() const { return kRows && row_; }
   bool pixels(i64 y) {
-    if constexpr (kPixels) return row_ && tracer_.wants_pixels(polygon_, y);
+    if constexpr (kPixels) return row_ && tracer_.wants_pixels(face_, y);
     return false;
   }
   void entered(const Edge& e) {
@@ -63,10 +63,10 @@ class RowTrace {
   void pixel(const C& canvas, int x, i64 y, Color c, double t) {
     if constexpr (kPixels) {
       if constexpr (DepthTestingCanvas<C> &&
-                    requires { tracer_.pixel(polygon_, x, y, c, t, canvas.depth_test(x)); })
-        tracer_.pixel(polygon_, x, y, c, t, canvas.depth_test(x));
+                    requires { tracer_.pixel(face_, x, y, c, t, canvas.depth_test(x)); })
+        tracer_.pixel(face_, x, y, c, t, canvas.depth_test(x));
       else
-        tracer_.pixel(polygon_, x, y, c, t);
+        tracer_.pixel(face_, x, y, c, t);
     }
   }
 
@@ -89,7 +89,7 @@ class RowTrace {
             {a.at.x(), a.edge.id, gouraud ? a.at.color(a.edge, y, colors, grid) : flat});
       }
       ScanlineStep step;
-      step.triangle = polygon_;
+      step.face = face_;
       step.y = y;
       step.entered = s_.entered;
       step.retired = s_.retired;
@@ -106,7 +106,7 @@ class RowTrace {
  private:
   Tracer& tracer_;
   RowTraceScratch& s_;
-  int polygon_;
+  int face_;
   bool traced_;
   bool row_ = false;
 };

@@ -33,12 +33,13 @@
 
 namespace scantrace {
 
-// One polygon to fill: its vertices (pixels) and one colour per vertex. `triangle` is the index
-// the trace reports (the face index in a scene); `depth` is reported when known.
+// One polygon to fill: its vertices (pixels) and one colour per vertex. `face` is the index the
+// trace reports (the face's position in a scene; 0 for a polygon filled alone; format v1 calls
+// it "triangle" whatever the polygon); `depth` is reported when known.
 struct PolygonInput {
   std::span<const Vec2> points;
   std::span<const Color> colors;
-  int triangle = 0;
+  int face = 0;
   std::optional<double> depth;
   // Z-buffer renders: the depth of each vertex, which the trace records so that a replay can
   // redo every pixel's depth test (src/depth_plane.hpp). Empty otherwise.
@@ -156,18 +157,21 @@ struct ConvexRows : RowRule<C, Tracer> {
   // flat one (the trace still reports Gouraud span colours, which are that colour).
   bool uniform = false;
   FlatRow& flat_row;
+  // The flat colour in the canvas's pixel format, converted once per polygon (DirectCanvas only).
+  DirectPixel<C> flat_pixel{};
 
-  void run(i64 y, const i64 run_last, ActiveEdgeList<Stepper>& active) {
+  // Inlined into the sweep (scanline_sweep.hpp says why).
+  [[gnu::always_inline]] void run(i64 y, const i64 run_last, ActiveEdgeList<Stepper>& active) {
     const bool closed = opt.fill_rule == FillRule::closed;
     const bool gouraud = opt.shading == Shading::gouraud;
     const bool shade = gouraud && !uniform;
     const int width = canvas.width();
-    [[maybe_unused]] const auto flat_pixel = [&] {
-      if constexpr (DirectCanvas<C>)
-        return C::convert(flat);
-      else
-        return 0;
-    }();
+    // A DirectCanvas's rows are reached by stepping a pointer held in a register: after a store
+    // through a byte pointer, canvas.row(y) would reload the image's address and width.
+    [[maybe_unused]] DirectPixel<C>* row = nullptr;
+    [[maybe_unused]] std::ptrdiff_t row_stride = 0;
+    if constexpr (DirectCanvas<C>)
+      row = canvas.row(static_cast<int>(y)), row_stride = canvas.row_stride();
     const std::size_t n_active = active.size();
     const Edge* left = n_active >= 2 ? &active.front().edge : nullptr;
     const Edge* right = n_active >= 2 ? &active.back().edge : nullptr;
@@ -179,6 +183,7 @@ struct ConvexRows : RowRule<C, Tracer> {
       r_color.start(*right, colors, grid);
     }
     rows += run_last - y + 1;
+    i64 written = 0;  // a local, not `pixels`: a member would be reloaded after each byte store
     for (;; ++y) {
       const bool trace_row = trace.row();
       if (trace_row && n_active >= 2) active.front().at = l, active.back().at = r;
@@ -208,7 +213,7 @@ struct ConvexRows : RowRule<C, Tracer> {
         const bool trace_pixels = trace.pixels(y);
         if (!shade) {
           if constexpr (DirectCanvas<C>)
-            flat_row.fill(canvas.row(yi) + xb, canvas.row(yi) + xe, flat_pixel);
+            flat_row.fill(row + xb, row + xe, flat_pixel);
           else
             canvas.fill_span(yi, xb, xe, flat);
           if (trace_pixels)
@@ -219,7 +224,7 @@ struct ConvexRows : RowRule<C, Tracer> {
           // writes it in its pixel format's fastest way (whether the row is traced or not, so that
           // tracing never changes a pixel); the loop below then only narrates.
           constexpr bool kCanvasShades = DirectCanvas<C> && std::is_same_v<Stepper, ExactStepper>;
-          if constexpr (kCanvasShades) canvas.shade_span(yi, xb, xe, shader.c, shader.step);
+          if constexpr (kCanvasShades) shade_pixels(row + xb, row + xe, shader.c, shader.step);
           if (trace_row) span.begin = shader.color();
           if (!kCanvasShades || trace_row) {
             for (int x = xb; x < xe; ++x) {
@@ -231,7 +236,7 @@ struct ConvexRows : RowRule<C, Tracer> {
             }
           }
         }
-        pixels += span.size();
+        written += span.size();
       }
       span.has_colors = has_span && gouraud;
       trace.end_row(y, active, colors, grid, gouraud, flat, false, has_span, span, false);
@@ -240,9 +245,11 @@ struct ConvexRows : RowRule<C, Tracer> {
       for (std::size_t i = n_active >= 2 ? 1 : 0; i + 1 < n_active; ++i) active[i].at.advance();
       if (n_active == 1) active[0].at.advance();
       if (y == run_last) break;
+      if constexpr (DirectCanvas<C>) row += row_stride;
       trace.begin_row(y + 1);
     }
     if (n_active >= 2) active.front().at = l, active.back().at = r;
+    pixels += written;
   }
 };
 
@@ -254,11 +261,11 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
                         Tracer& tracer) {
   constexpr bool kTriangleLevel = kTraceHooks && Tracer::max_level >= TraceLevel::triangle;
   [[maybe_unused]] bool traced = false;
-  if constexpr (kTriangleLevel) traced = tracer.wants_triangle(in.triangle);
+  if constexpr (kTriangleLevel) traced = tracer.wants_triangle(in.face);
 
   auto skip = [&](SkipReason reason) {
     if constexpr (kTriangleLevel)
-      if (traced) tracer.triangle_skipped(in.triangle, reason);
+      if (traced) tracer.triangle_skipped(in.face, reason);
     return FillResult{reason, 0, 0};
   };
 
@@ -288,7 +295,7 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
       opt.shading == Shading::flat || traced ? flat_color(pts, in.colors, s.order) : Color{};
   if constexpr (kTriangleLevel)
     if (traced)
-      tracer.triangle_begin(PolygonSetup{.triangle = in.triangle,
+      tracer.triangle_begin(PolygonSetup{.face = in.face,
                                          .vertices = in.points,
                                          .snapped = pts,
                                          .colors = in.colors,
@@ -304,22 +311,23 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   } else {
     s.table.build(pts, grid, opt.fill_rule);
     if constexpr (kTriangleLevel)
-      if (traced) tracer.edge_table(EdgeTableView{in.triangle, &s.table, pts, grid});
+      if (traced) tracer.edge_table(EdgeTableView{in.face, &s.table, pts, grid});
     const bool uniform =
         opt.shading == Shading::gouraud && std::all_of(in.colors.begin() + 1, in.colors.end(),
                                                        [&](Color c) { return c == in.colors[0]; });
-    RowTrace<Tracer> trace(tracer, s.trace, in.triangle, traced);
+    RowTrace<Tracer> trace(tracer, s.trace, in.face, traced);
     result = with_stepper(opt.method, [&]<class Stepper>() {
+      const Color fill_color = uniform ? in.colors[0] : flat;
       detail::ConvexRows<Stepper, C, Tracer> rule{
-          {canvas, in.colors, grid, opt, uniform ? in.colors[0] : flat, trace},
-          uniform,
-          s.flat_row};
+          {canvas, in.colors, grid, opt, fill_color, trace}, uniform, s.flat_row};
+      if constexpr (DirectCanvas<C>)
+        if (opt.shading == Shading::flat || uniform) rule.flat_pixel = C::convert(fill_color);
       sweep_scanlines(s.table, canvas_rows(canvas), grid, in.colors, s.active<Stepper>(), rule);
       return rule.result();
     });
   }
   if constexpr (kTriangleLevel)
-    if (traced) tracer.triangle_end(in.triangle, result.rows, result.pixels);
+    if (traced) tracer.triangle_end(in.face, result.rows, result.pixels);
   return result;
 }
 

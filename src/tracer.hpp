@@ -9,15 +9,18 @@
 // higher max_level also provides the runtime filters and the hooks of its levels (the concept
 // FillTracer below checks them):
 //
-//   bool wants_triangle(int triangle);            // level >= triangle
+//   bool wants_triangle(int face);                // level >= triangle
 //   void triangle_begin(const PolygonSetup&);
 //   void edge_table(const EdgeTableView&);
-//   void triangle_end(int triangle, i64 rows, i64 pixels);
-//   void triangle_skipped(int triangle, SkipReason);
-//   bool wants_scanline(int triangle, i64 y);     // level >= scanline
+//   void triangle_end(int face, i64 rows, i64 pixels);
+//   void triangle_skipped(int face, SkipReason);
+//   bool wants_scanline(int face, i64 y);         // level >= scanline
 //   void scanline(const ScanlineStep&);
-//   bool wants_pixels(int triangle, i64 y);       // level == pixel
-//   void pixel(int triangle, i64 x, i64 y, Color, double t);
+//   bool wants_pixels(int face, i64 y);           // level == pixel
+//   void pixel(int face, i64 x, i64 y, Color, double t);
+//
+// `face` is the polygon's index (its position in the scene) whatever its vertex count; the hooks
+// keep the names of the trace events they become (format v1's "triangle_begin", …).
 #include <concepts>
 #include <optional>
 #include <span>
@@ -43,7 +46,7 @@ inline constexpr bool kTraceHooks = true;
 enum class TraceLevel { none = 0, triangle = 1, scanline = 2, pixel = 3 };
 
 struct PolygonSetup {
-  int triangle = 0;                // face index (position in the scene)
+  int face = 0;  // the face's index: its position in the scene (trace v1 key "triangle")
   std::span<const Vec2> vertices;  // as given
   std::span<const FixedPoint> snapped;
   std::span<const Color> colors;
@@ -58,20 +61,24 @@ struct PolygonSetup {
 };
 
 struct EdgeTableView {
-  int triangle = 0;
+  int face = 0;
   const EdgeTable* table = nullptr;
   std::span<const FixedPoint> snapped;
   SubpixelGrid grid;
 };
 
-struct ActiveEdgeState {
+// Where an active edge crosses the row (the active edge list's entry as the tracer sees it; the
+// list's own entry, with its stepper, is ActiveEdge<Stepper> in active_edge_list.hpp).
+struct EdgeCrossing {
   int edge = 0;
   double x = 0;     // exact intersection with the row (rounded to double for display)
   i64 ceil_x = 0;   // ceil(x), computed exactly
   int winding = 0;  // general polygons: +1 edge going down, -1 up; 0 = not reported (convex fill)
 };
 
-struct ActivePointState {
+// An active point: an active edge's crossing with the colour interpolated there, as the course
+// draws it.
+struct ActivePoint {
   double x = 0;
   int edge = 0;
   Color color;  // interpolated along the edge (Gouraud) or the flat colour
@@ -79,11 +86,11 @@ struct ActivePointState {
 
 // One row of the sweep as a tracer sees it: the active edge list and the row's spans.
 struct ScanlineStep {
-  int triangle = 0;
+  int face = 0;
   i64 y = 0;
   std::span<const int> entered, retired;  // edge ids that entered / retired on this row
-  std::span<const ActiveEdgeState> active_edges;
-  std::span<const ActivePointState> active_points;
+  std::span<const EdgeCrossing> active_edges;
+  std::span<const ActivePoint> active_points;
   // The row's span (a convex polygon has at most one; for a general polygon the first of
   // `intervals`, for readers that know one span per row). span.has_colors under Gouraud.
   bool has_span = false;

@@ -137,18 +137,18 @@ struct WindingRows : RowRule<C, Tracer> {
 // holes are just more contours — under non-zero they must run the other way round to be holes),
 // with one colour per vertex in `colors`, the contours' vertices one after another. Edge i of the
 // trace runs from vertex i (in that global numbering) to the next vertex of its contour.
-// `polygon` is the index the trace reports. Methods exact (default), double and float; the
+// `face` is the index the trace reports. Methods exact (default), double and float; the
 // halfspace method and the closed fill rule are convex-only and rejected.
 template <Canvas C, FillTracer Tracer = NoTracer>
 FillResult fill_polygon_contours(C& canvas, std::span<const std::vector<Vec2>> contours,
                                  std::span<const Color> colors, const FillOptions& opt,
-                                 WindingScratch& s, Tracer& tracer, int polygon = 0) {
+                                 WindingScratch& s, Tracer& tracer, int face = 0) {
   constexpr bool kTriangleLevel = kTraceHooks && Tracer::max_level >= TraceLevel::triangle;
   [[maybe_unused]] bool traced = false;
-  if constexpr (kTriangleLevel) traced = tracer.wants_triangle(polygon);
+  if constexpr (kTriangleLevel) traced = tracer.wants_triangle(face);
   auto skip = [&](SkipReason reason) {
     if constexpr (kTriangleLevel)
-      if (traced) tracer.triangle_skipped(polygon, reason);
+      if (traced) tracer.triangle_skipped(face, reason);
     return FillResult{reason, 0, 0};
   };
 
@@ -178,21 +178,21 @@ FillResult fill_polygon_contours(C& canvas, std::span<const std::vector<Vec2>> c
       opt.shading == Shading::flat || traced ? flat_color(s.snapped, colors, s.order) : Color{};
   if constexpr (kTriangleLevel)
     if (traced) {
-      PolygonSetup setup{polygon, s.points, s.snapped, colors, std::nullopt, flat, &opt, grid};
+      PolygonSetup setup{face, s.points, s.snapped, colors, std::nullopt, flat, &opt, grid};
       setup.contour_sizes = s.sizes;
       tracer.triangle_begin(setup);
     }
   s.table.build_contours(s.snapped, s.sizes, grid, FillRule::top_left);
   if constexpr (kTriangleLevel)
-    if (traced) tracer.edge_table(EdgeTableView{polygon, &s.table, s.snapped, grid});
-  RowTrace<Tracer> trace(tracer, s.trace, polygon, traced);
+    if (traced) tracer.edge_table(EdgeTableView{face, &s.table, s.snapped, grid});
+  RowTrace<Tracer> trace(tracer, s.trace, face, traced);
   const FillResult result = with_stepper(opt.method, [&]<class Stepper>() {
     winding_detail::WindingRows<Stepper, C, Tracer> rule{{canvas, colors, grid, opt, flat, trace}};
     sweep_scanlines(s.table, canvas_rows(canvas), grid, colors, s.active<Stepper>(), rule);
     return rule.result();
   });
   if constexpr (kTriangleLevel)
-    if (traced) tracer.triangle_end(polygon, result.rows, result.pixels);
+    if (traced) tracer.triangle_end(face, result.rows, result.pixels);
   return result;
 }
 

@@ -17,7 +17,7 @@ Header make_header(int width, int height, const FillOptions& options, TraceLevel
 
 TriangleBegin to_event(const PolygonSetup& s) {
   TriangleBegin e;
-  e.triangle = s.triangle;
+  e.triangle = s.face;
   e.vertices.assign(s.vertices.begin(), s.vertices.end());
   for (const FixedPoint& p : s.snapped) e.snapped.push_back(s.grid.to_pixels(p));
   e.colors.assign(s.colors.begin(), s.colors.end());
@@ -34,7 +34,7 @@ TriangleBegin to_event(const PolygonSetup& s) {
 
 EdgeTableEvent to_event(const EdgeTableView& v) {
   EdgeTableEvent t;
-  t.triangle = v.triangle;
+  t.triangle = v.face;
   for (const Edge& e : v.table->edges()) {
     EdgeEntry x;
     x.edge = e.id;
@@ -62,15 +62,15 @@ EdgeTableEvent to_event(const EdgeTableView& v) {
 
 Scanline to_event(const ScanlineStep& s) {
   Scanline e;
-  e.triangle = s.triangle;
+  e.triangle = s.face;
   e.y = s.y;
   e.entered.assign(s.entered.begin(), s.entered.end());
   e.retired.assign(s.retired.begin(), s.retired.end());
-  for (const ActiveEdgeState& a : s.active_edges) {
+  for (const EdgeCrossing& a : s.active_edges) {
     e.active_edges.push_back({a.edge, a.x});
     if (a.winding != 0) e.active_edges.back().winding = a.winding;
   }
-  for (const scantrace::ActivePointState& p : s.active_points)
+  for (const scantrace::ActivePoint& p : s.active_points)
     e.active_points.push_back({p.x, p.edge, p.color});
   if (s.has_span) e.span = Span{s.span.x_begin, s.span.x_end};
   if (s.has_span && s.span.has_colors) e.span_colors = SpanColors{s.span.begin, s.span.end};

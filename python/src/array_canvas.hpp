@@ -32,15 +32,12 @@ class ArrayCanvas {
   int width() const { return width_; }
   int height() const { return height_; }
   P* row(int y) { return pixels_ + static_cast<std::size_t>(y) * width_; }
+  std::ptrdiff_t row_stride() const { return width_; }
   static P convert(Color c) { return P::from(c); }
   void fill_span(int y, int x_begin, int x_end, Color c) {
     scantrace::fill_pixels(row(y) + x_begin, row(y) + x_end, convert(c));
   }
   void set(int x, int y, Color c) { row(y)[x] = convert(c); }
-  void shade_span(int y, int x_begin, int x_end, Color c, Color step) {
-    P* r = row(y);
-    for (int x = x_begin; x < x_end; ++x, c += step) r[x] = P::from(c);
-  }
   // Every pixel set to `c` (the background before a render).
   void clear(Color c) {
     const std::size_t n = static_cast<std::size_t>(width_) * height_;

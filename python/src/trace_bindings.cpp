@@ -136,11 +136,12 @@ void bind_events(py::module_& m) {
         return "ActiveEdge(edge=" + std::to_string(e.edge) +
                ", x=" + py::repr(py::float_(e.x)).cast<std::string>() + ")";
       });
-  py::class_<ActivePoint>(m, "ActivePoint", "An active point: x, its edge and interpolated colour.")
-      .def_readonly("x", &ActivePoint::x)
-      .def_readonly("edge", &ActivePoint::edge)
-      .def_readonly("color", &ActivePoint::color)
-      .def("__repr__", [](const ActivePoint& p) {
+  py::class_<scantrace::trace::ActivePoint>(m, "ActivePoint",
+                                            "An active point: x, its edge and interpolated colour.")
+      .def_readonly("x", &scantrace::trace::ActivePoint::x)
+      .def_readonly("edge", &scantrace::trace::ActivePoint::edge)
+      .def_readonly("color", &scantrace::trace::ActivePoint::color)
+      .def("__repr__", [](const scantrace::trace::ActivePoint& p) {
         return "ActivePoint(x=" + py::repr(py::float_(p.x)).cast<std::string>() +
                ", edge=" + std::to_string(p.edge) +
                ", color=" + py::repr(py::cast(p.color)).cast<std::string>() + ")";

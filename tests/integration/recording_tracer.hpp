@@ -13,8 +13,8 @@ struct RecordedScanline {
   int triangle = 0;
   i64 y = 0;
   std::vector<int> entered, retired;
-  std::vector<ActiveEdgeState> active_edges;
-  std::vector<ActivePointState> active_points;
+  std::vector<EdgeCrossing> active_edges;
+  std::vector<ActivePoint> active_points;
   bool has_span = false;
   i64 x_begin = 0, x_end = 0;
   bool has_span_colors = false;
@@ -41,12 +41,12 @@ struct RecordingTracer {
   bool wants_triangle(int t) const { return only.empty() || only.count(t) > 0; }
   bool wants_scanline(int, i64) const { return true; }
   bool wants_pixels(int, i64) const { return true; }
-  void triangle_begin(const PolygonSetup& s) { begun.push_back(s.triangle); }
-  void edge_table(const EdgeTableView& v) { edge_tables[v.triangle] = v.table->edges(); }
+  void triangle_begin(const PolygonSetup& s) { begun.push_back(s.face); }
+  void edge_table(const EdgeTableView& v) { edge_tables[v.face] = v.table->edges(); }
   void triangle_end(int t, i64, i64) { ended.push_back(t); }
   void triangle_skipped(int t, SkipReason r) { skipped[t] = r; }
   void scanline(const ScanlineStep& s) {
-    scanlines.push_back({s.triangle,
+    scanlines.push_back({s.face,
                          s.y,
                          {s.entered.begin(), s.entered.end()},
                          {s.retired.begin(), s.retired.end()},

@@ -48,7 +48,7 @@ TEST_CASE("a convex polygon's trace lists every edge and two active edges per ro
     CAPTURE(s->y);
     REQUIRE(s->active_edges.size() == 2);
     // The active points' colours are the vertex colours interpolated along each edge.
-    for (const ActivePoint& p : s->active_points) {
+    for (const trace::ActivePoint& p : s->active_points) {
       const Vec2 a = points[p.edge], b = points[(p.edge + 1) % 7];
       const double w = (static_cast<double>(s->y) - a.y) / (b.y - a.y);
       const Color want = colors[p.edge] * (1 - w) + colors[(p.edge + 1) % 7] * w;

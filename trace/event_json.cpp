@@ -113,7 +113,7 @@ ojson encode(const EdgeTableEvent& e) {
 
 ojson encode(const Scanline& s) {
   ojson active = ojson::array(), points = ojson::array();
-  for (const ActiveEdge& a : s.active_edges) {
+  for (const EdgeCrossing& a : s.active_edges) {
     ojson e = {{"edge", a.edge}, {"x", a.x}};
     if (a.winding) e["winding"] = *a.winding;
     active.push_back(e);
@@ -220,7 +220,7 @@ Scanline decode_scanline(const json& j) {
   s.entered = integers(j.at("entered"));
   s.retired = integers(j.at("retired"));
   for (const json& a : j.at("active_edges")) {
-    ActiveEdge e{integer<int>(a.at("edge")), a.at("x").get<double>()};
+    EdgeCrossing e{integer<int>(a.at("edge")), a.at("x").get<double>()};
     if (a.contains("winding")) e.winding = integer<int>(a["winding"]);
     s.active_edges.push_back(e);
   }

@@ -66,7 +66,7 @@ Scanline to_event(const ScanlineStep& s) {
   e.y = s.y;
   e.entered.assign(s.entered.begin(), s.entered.end());
   e.retired.assign(s.retired.begin(), s.retired.end());
-  for (const EdgeCrossing& a : s.active_edges) {
+  for (const scantrace::EdgeCrossing& a : s.active_edges) {
     e.active_edges.push_back({a.edge, a.x});
     if (a.winding != 0) e.active_edges.back().winding = a.winding;
   }

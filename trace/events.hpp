@@ -79,11 +79,12 @@ struct EdgeTableEvent {
   std::vector<HorizontalEntry> horizontal;
 };
 
-struct ActiveEdge {
+// The record of an EdgeCrossing (src/tracer.hpp): where an active edge crosses the row.
+struct EdgeCrossing {
   int edge = 0;
   double x = 0;  // the exact intersection with the row, rounded to double
   std::optional<int> winding = std::nullopt;  // general polygons: +1 going down, -1 up
-  friend bool operator==(const ActiveEdge&, const ActiveEdge&) = default;
+  friend bool operator==(const EdgeCrossing&, const EdgeCrossing&) = default;
 };
 
 struct ActivePoint {
@@ -116,7 +117,7 @@ struct Scanline {
   int triangle = 0;
   i64 y = 0;
   std::vector<int> entered, retired;
-  std::vector<ActiveEdge> active_edges;
+  std::vector<EdgeCrossing> active_edges;
   std::vector<ActivePoint> active_points;  // sorted by x
   std::optional<Span> span;
   std::optional<SpanColors> span_colors;  // Gouraud

@@ -1,7 +1,7 @@
 #pragma once
-// The streaming sink: one JSON object per line, header first, footer last (docs/design.md §5). Lines
-// are flushed at the end of every triangle, so a trace cut short by a crash is readable up to the
-// last finished triangle, and its missing footer says that it is incomplete.
+// The streaming sink: one JSON object per line, header first, footer last (docs/design.md §5).
+// Lines are flushed at the end of every triangle, so a trace cut short by a crash is readable up to
+// the last finished triangle, and its missing footer says that it is incomplete.
 #include <cstdint>
 #include <filesystem>
 #include <memory>

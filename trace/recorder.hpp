@@ -11,7 +11,9 @@ namespace scantrace::trace {
 
 class Recorder {
  public:
-  explicit Recorder(const Header& header) { events_.emplace_back(std::in_place_type<Header>, header); }
+  explicit Recorder(const Header& header) {
+    events_.emplace_back(std::in_place_type<Header>, header);
+  }
   void write(const Event& e) { events_.push_back(e); }
   Trace finish(const Footer& footer) {
     events_.emplace_back(std::in_place_type<Footer>, footer);

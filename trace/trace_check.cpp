@@ -356,7 +356,7 @@ class Checker {
       }
       if (e.last_row == r.y - 1 && r.y - 1 >= s.y_first) want_retired.push_back(e.edge);
     }
-    for (const ActiveEdge& a : r.active_edges) {
+    for (const EdgeCrossing& a : r.active_edges) {
       finite(a.x, row + ": active edge " + std::to_string(a.edge) + " x");
       active.push_back(a.edge);
     }
@@ -454,7 +454,7 @@ class Checker {
       const GridPoint a = s.grid[edge], b = s.grid[s.next[edge]];
       return a.y < b.y ? crossing(a, b, r.y, scale_) : crossing(b, a, r.y, scale_);
     };
-    for (const ActiveEdge& a : r.active_edges)
+    for (const EdgeCrossing& a : r.active_edges)
       if (const double x = cross(a.edge).x(); a.x != x)
         fail(row + ": active edge " + std::to_string(a.edge) + " at x " + str(a.x) +
              ", but the edge crosses the row at " + str(x));

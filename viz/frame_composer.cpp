@@ -136,7 +136,7 @@ void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step,
   }
   if (row) {
     view.scanline(row->y);
-    for (const trace::ActiveEdge& a : row->active_edges)
+    for (const trace::EdgeCrossing& a : row->active_edges)
       if (const trace::EdgeEntry* e = find_edge(table, a.edge))
         view.edge(e->from, e->to, e->edge, true);
     view.spans(*row);

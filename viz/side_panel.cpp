@@ -54,7 +54,7 @@ void edge_table(PanelWriter& w, const EdgeTableEvent& table, const TriangleBegin
     r.highlighted = i == newest;
     if (row)
       r.muted = std::none_of(row->active_edges.begin(), row->active_edges.end(),
-                             [&](const trace::ActiveEdge& a) { return a.edge == e.edge; });
+                             [&](const trace::EdgeCrossing& a) { return a.edge == e.edge; });
     rows.push_back(r);
   }
   w.table({{"edge", false}, {"y_min"}, {"y_max"}, {"x at y_min"}, {"dx/dy"}, {"active rows"}},
@@ -209,7 +209,7 @@ void polygon_scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& s
          TextStyle::strong);
   std::vector<TableRow> aet;
   int winding = 0;
-  for (const trace::ActiveEdge& a : row.active_edges) {
+  for (const trace::EdgeCrossing& a : row.active_edges) {
     const EdgeEntry* e = find_edge(table, a.edge);
     const int d = a.winding.value_or(0);
     winding += d;
@@ -266,7 +266,7 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
   }
   w.line(fmt::format("Active edge table at y = {}", row.y), TextStyle::strong);
   std::vector<TableRow> aet;
-  for (const trace::ActiveEdge& a : row.active_edges) {
+  for (const trace::EdgeCrossing& a : row.active_edges) {
     TableRow r;
     const EdgeEntry* e = find_edge(table, a.edge);
     r.cells = {edge_name(a.edge, b), fixed(a.x, 3), e ? number(e->dx_dy, 4) : "?",
@@ -315,9 +315,9 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
   // A worked instance with this row's numbers: the previous row's x plus dx/dy.
   if (!row.active_edges.empty())
     if (const Scanline* prev = find_scanline(t, step.triangle, row.y - 1)) {
-      const trace::ActiveEdge& a = row.active_edges.front();
+      const trace::EdgeCrossing& a = row.active_edges.front();
       const EdgeEntry* e = find_edge(table, a.edge);
-      for (const trace::ActiveEdge& p : prev->active_edges)
+      for (const trace::EdgeCrossing& p : prev->active_edges)
         if (e && p.edge == a.edge)
           f.push_back(fmt::format("      e{}: {} + {} = {}", a.edge, fixed(p.x, 3),
                                   number(e->dx_dy, 4), fixed(a.x, 3)));

@@ -59,7 +59,7 @@ void draw_inset(cv::Mat& frame, const cv::Rect& r, double cell, const Typography
   view.grid();
   if (b) view.outline(*b, palette::kOutline, 1);
   view.scanline(row.y, false);
-  for (const trace::ActiveEdge& a : row.active_edges)
+  for (const trace::EdgeCrossing& a : row.active_edges)
     if (const trace::EdgeEntry* e = find_edge(table, a.edge))
       view.edge(e->from, e->to, e->edge, true);
   view.spans(row);

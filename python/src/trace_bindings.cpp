@@ -129,13 +129,16 @@ void bind_events(py::module_& m) {
       .def_readonly("triangle", &EdgeTableEvent::triangle)
       .def_readonly("edges", &EdgeTableEvent::edges)
       .def_readonly("horizontal", &EdgeTableEvent::horizontal);
-  py::class_<ActiveEdge>(m, "ActiveEdge", "An active edge on a row: its exact intersection x.")
-      .def_readonly("edge", &ActiveEdge::edge)
-      .def_readonly("x", &ActiveEdge::x)
-      .def("__repr__", [](const ActiveEdge& e) {
-        return "ActiveEdge(edge=" + std::to_string(e.edge) +
+  py::class_<scantrace::trace::EdgeCrossing>(
+      m, "EdgeCrossing", "Where an active edge crosses a row: its edge and exact intersection x.")
+      .def_readonly("edge", &scantrace::trace::EdgeCrossing::edge)
+      .def_readonly("x", &scantrace::trace::EdgeCrossing::x)
+      .def("__repr__", [](const scantrace::trace::EdgeCrossing& e) {
+        return "EdgeCrossing(edge=" + std::to_string(e.edge) +
                ", x=" + py::repr(py::float_(e.x)).cast<std::string>() + ")";
       });
+  // Its name until the one-sweep redesign, kept so that scripts using it still run.
+  m.attr("ActiveEdge") = m.attr("EdgeCrossing");
   py::class_<scantrace::trace::ActivePoint>(m, "ActivePoint",
                                             "An active point: x, its edge and interpolated colour.")
       .def_readonly("x", &scantrace::trace::ActivePoint::x)

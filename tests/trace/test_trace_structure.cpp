@@ -24,7 +24,7 @@ void check_bookkeeping(const Trace& trace, int t) {
     for (int e : s->retired) CHECK(active.erase(e) == 1);
     for (int e : s->entered) CHECK(active.insert(e).second);
     std::set<int> listed;
-    for (const ActiveEdge& a : s->active_edges) listed.insert(a.edge);
+    for (const trace::EdgeCrossing& a : s->active_edges) listed.insert(a.edge);
     CHECK(listed == active);
     for (std::size_t i = 1; i < s->active_points.size(); ++i)
       CHECK(s->active_points[i - 1].x <= s->active_points[i].x);
@@ -45,7 +45,7 @@ TEST_CASE("horizontal edges are listed aside and never active", "[trace]") {
     CHECK(v[flat_edge].y == v[(flat_edge + 1) % 3].y);
     CHECK(table.horizontal[0].y == v[flat_edge].y);
     for (const Scanline* s : trace.scanlines(0))
-      for (const ActiveEdge& a : s->active_edges) CHECK(a.edge != flat_edge);
+      for (const trace::EdgeCrossing& a : s->active_edges) CHECK(a.edge != flat_edge);
     check_bookkeeping(trace, 0);
   }
 }

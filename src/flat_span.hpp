@@ -43,7 +43,12 @@ class FlatRow {
   void fill(P* first, P* last, P value) {
     static_assert(std::is_trivially_copyable_v<P>);
     const std::ptrdiff_t n = last - first;
-    if (n <= kShortSpan) return fill_pixels(first, last, value);  // its store loop
+    // fill_pixels's store loop, written out again: called from here it is not inlined, and a
+    // small flat triangle then costs 3,694 instructions instead of 3,512 (callgrind).
+    if (n <= kShortSpan) {
+      for (; first != last; ++first) *first = value;
+      return;
+    }
     if (pixel_size_ != sizeof(P) || std::memcmp(bytes_.data(), &value, sizeof(P)) != 0) {
       pixel_size_ = sizeof(P);
       if (bytes_.size() < sizeof(P)) bytes_.resize(sizeof(P));

@@ -87,15 +87,15 @@ inline void shade_bytes(Bgr8* out, int n, Color c, Color step) {
   }
 }
 
-// Pixels [first, last) in the colours c, c + step, c + 2·step, … (a Gouraud span of the exact
-// method, linear from its first pixel): 8-bit pixels in fixed point (shade_bytes), others
-// converted pixel by pixel.
+// Pixels [x_begin, x_end) of `row` in the colours c, c + step, c + 2·step, … (a Gouraud span of
+// the exact method, linear from its first pixel): 8-bit pixels in fixed point (shade_bytes),
+// others converted pixel by pixel.
 template <class P>
-void shade_pixels(P* first, P* last, Color c, Color step) {
+void shade_pixels(P* row, int x_begin, int x_end, Color c, Color step) {
   if constexpr (std::is_same_v<P, Bgr8>) {
-    shade_bytes(first, static_cast<int>(last - first), c, step);
+    shade_bytes(row + x_begin, x_end - x_begin, c, step);
   } else {
-    for (; first != last; ++first, c += step) *first = P::from(c);
+    for (int x = x_begin; x < x_end; ++x, c += step) row[x] = P::from(c);
   }
 }
 

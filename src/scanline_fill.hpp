@@ -224,7 +224,7 @@ struct ConvexRows : RowRule<C, Tracer> {
           // writes it in its pixel format's fastest way (whether the row is traced or not, so that
           // tracing never changes a pixel); the loop below then only narrates.
           constexpr bool kCanvasShades = DirectCanvas<C> && std::is_same_v<Stepper, ExactStepper>;
-          if constexpr (kCanvasShades) shade_pixels(row + xb, row + xe, shader.c, shader.step);
+          if constexpr (kCanvasShades) shade_pixels(row, xb, xe, shader.c, shader.step);
           if (trace_row) span.begin = shader.color();
           if (!kCanvasShades || trace_row) {
             for (int x = xb; x < xe; ++x) {

@@ -113,8 +113,8 @@ void FrameComposer::title_bar(cv::Mat& frame, const Step& step, std::size_t inde
              TextStyle::strong, palette::kTitleText);
 }
 
-void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step,
-                                   const CanvasState& state) const {
+void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step, const CanvasState& state,
+                                   std::vector<PlacedBox>* placed) const {
   const ViewGeometry g = *geometry(step);
   GridView view(frame, g, type_, canvas_);
   view.cells(state);
@@ -141,11 +141,23 @@ void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step,
         view.edge(e->from, e->to, e->edge, true);
     view.spans(*row);
   }
-  if (b) view.vertices(*b);
-  if (row) view.active_points(*row);
+  // Markers first, then the labels that matter most for the step: the row's x values, its y,
+  // the vertices; the zoom insets go where none of them is.
+  if (b) view.vertex_markers(*b);
+  if (row) {
+    view.active_point_markers(*row);
+    view.active_point_labels(*row);
+    view.scanline_label(row->y);
+  }
+  if (b) view.vertex_labels(*b);
+  std::vector<PlacedBox> insets;
   if (row && !view.grid_visible())
-    draw_zoom_insets(frame, g, type_, canvas_, state, b, table, *row);
+    insets = draw_zoom_insets(frame, g, type_, canvas_, state, b, table, *row, view.placement());
   cv::rectangle(frame, g.view(), palette::kPanelBorder, 1);
+  if (placed) {
+    *placed = view.placement().boxes();
+    placed->insert(placed->end(), insets.begin(), insets.end());
+  }
 
   const int legend = legend_height(type_, LegendKind::triangle);
   cv::Rect text = layout_.panel;
@@ -170,7 +182,8 @@ void FrameComposer::scene_frame(cv::Mat& frame, const Step& step, const CanvasSt
   draw_legend(frame, layout_.panel, type_, LegendKind::scene);
 }
 
-void FrameComposer::card_picture(cv::Mat& frame, const Step& step, const CanvasState& state) const {
+void FrameComposer::card_picture(cv::Mat& frame, const Step& step, const CanvasState& state,
+                                 std::vector<PlacedBox>* placed) const {
   const cv::Rect area = card_picture_area(size_, type_);
   const bool one = plan_.mode == ReplayMode::triangles && plan_.order.size() == 1;
   const ViewGeometry g = *geometry(step);
@@ -191,20 +204,22 @@ void FrameComposer::card_picture(cv::Mat& frame, const Step& step, const CanvasS
   if (one)
     if (const trace::TriangleBegin* b = find_begin(trace_, plan_.order.front())) view.vertices(*b);
   cv::rectangle(frame, area, palette::kPanelBorder, 1);
+  if (placed) *placed = view.placement().boxes();
 }
 
-cv::Mat FrameComposer::compose(const Step& step, std::size_t index,
-                               const CanvasState& state) const {
+cv::Mat FrameComposer::compose(const Step& step, std::size_t index, const CanvasState& state,
+                               std::vector<PlacedBox>* placed) const {
   cv::Mat frame(size_, CV_8UC3, palette::kFrame);
+  if (placed) placed->clear();
   CardInfo info{source_, plan_.rows_per_step, state.writes(), state.overwrites(), state.rejected()};
   switch (step.kind) {
     case StepKind::title:
       draw_title_card(frame, type_, trace_, plan_, info);
-      card_picture(frame, step, state);
+      card_picture(frame, step, state, placed);
       return frame;
     case StepKind::end:
       draw_end_card(frame, type_, trace_, plan_, info);
-      card_picture(frame, step, state);
+      card_picture(frame, step, state, placed);
       return frame;
     case StepKind::painter_batch:
     case StepKind::scene_done:
@@ -213,7 +228,7 @@ cv::Mat FrameComposer::compose(const Step& step, std::size_t index,
       return frame;
     default:
       title_bar(frame, step, index);
-      triangle_frame(frame, step, state);
+      triangle_frame(frame, step, state, placed);
       return frame;
   }
 }

@@ -3,6 +3,7 @@
 // panel and the legend — or a title or end card.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -10,6 +11,7 @@
 #include "viz/canvas_state.hpp"
 #include "viz/cards.hpp"
 #include "viz/frame_layout.hpp"
+#include "viz/label_placement.hpp"
 #include "viz/replay_steps.hpp"
 #include "viz/scene_view.hpp"
 #include "viz/typography.hpp"
@@ -22,17 +24,21 @@ class FrameComposer {
   FrameComposer(const trace::Trace& trace, const StepPlan& plan, cv::Size frame,
                 std::string source);
 
-  // The frame of `step` (number `index` in the plan) with the pixels of `state`.
-  cv::Mat compose(const Step& step, std::size_t index, const CanvasState& state) const;
+  // The frame of `step` (number `index` in the plan) with the pixels of `state`. `placed`, when
+  // given, receives where the markers, labels and zoom insets on the canvas view were drawn.
+  cv::Mat compose(const Step& step, std::size_t index, const CanvasState& state,
+                  std::vector<PlacedBox>* placed = nullptr) const;
   // Where the canvas is shown for `step` (nullopt: a card, no canvas).
   std::optional<ViewGeometry> geometry(const Step& step) const;
   const FrameLayout& layout() const { return layout_; }
 
  private:
   void title_bar(cv::Mat& frame, const Step& step, std::size_t index) const;
-  void triangle_frame(cv::Mat& frame, const Step& step, const CanvasState& state) const;
+  void triangle_frame(cv::Mat& frame, const Step& step, const CanvasState& state,
+                      std::vector<PlacedBox>* placed) const;
   void scene_frame(cv::Mat& frame, const Step& step, const CanvasState& state) const;
-  void card_picture(cv::Mat& frame, const Step& step, const CanvasState& state) const;
+  void card_picture(cv::Mat& frame, const Step& step, const CanvasState& state,
+                    std::vector<PlacedBox>* placed) const;
 
   const trace::Trace& trace_;
   const StepPlan& plan_;

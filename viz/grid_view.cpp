@@ -29,17 +29,26 @@ bool is_dark(const cv::Vec3b& bgr) {
 }  // namespace
 
 GridView::GridView(cv::Mat& frame, const ViewGeometry& geometry, const Typography& type,
-                   cv::Size canvas)
-    : frame_(frame), geometry_(geometry), type_(type), canvas_(canvas) {}
+                   cv::Size canvas, int layer)
+    : frame_(frame),
+      geometry_(geometry),
+      type_(type),
+      canvas_(canvas),
+      placement_(geometry.view(), layer) {}
 
-cv::Point GridView::inside(cv::Point p, cv::Size s) const {
-  const cv::Rect& v = geometry_.view();
-  // Room for the label's box: its margin and the descenders below the measured ascent.
-  const int m = type_.px(6);
-  s.height += type_.px(6);
-  p.x = std::clamp(p.x, v.x + m, std::max(v.x + m, v.x + v.width - s.width - m));
-  p.y = std::clamp(p.y, v.y + m, std::max(v.y + m, v.y + v.height - s.height - m));
-  return p;
+void GridView::label(const std::string& text, TextStyle style,
+                     const std::vector<cv::Rect>& candidates, const cv::Scalar& box,
+                     std::optional<cv::Scalar> border) {
+  const std::optional<cv::Rect> spot = placement_.place(PlacedKind::label, candidates, text);
+  if (!spot) return;
+  const cv::Point offset = -type_.boxed_area(text, {0, 0}, style, border.has_value()).tl();
+  type_.draw_boxed(frame_, text, spot->tl() + offset, style, palette::kText, box, border);
+}
+
+std::vector<cv::Rect> GridView::around(const std::string& text, TextStyle style, bool bold_border,
+                                       cv::Point2d p, int radius, cv::Point2d preferred) const {
+  const cv::Size s = type_.boxed_area(text, {0, 0}, style, bold_border).size();
+  return boxes_around(p, radius, s, preferred, type_.px(3), s.height / 2);
 }
 
 void GridView::cells(const CanvasState& state, std::optional<Color> background) {
@@ -127,52 +136,80 @@ void GridView::edge(Vec2 from, Vec2 to, int id, bool active) {
 }
 
 void GridView::vertices(const trace::TriangleBegin& triangle) {
-  const std::vector<Vec2>& p = triangle.snapped.empty() ? triangle.vertices : triangle.snapped;
+  vertex_markers(triangle);
+  vertex_labels(triangle);
+}
+
+namespace {
+
+constexpr double kVertexRadius = 7, kPointRadius = 6, kRing = 2;  // design pixels
+
+const std::vector<Vec2>& corners_of(const trace::TriangleBegin& t) {
+  return t.snapped.empty() ? t.vertices : t.snapped;
+}
+
+cv::Point rounded(cv::Point2d p) {
+  return {static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y))};
+}
+
+}  // namespace
+
+void GridView::vertex_markers(const trace::TriangleBegin& triangle) {
+  const std::vector<Vec2>& p = corners_of(triangle);
+  const int r = type_.px(kVertexRadius), ring = r + type_.px(kRing);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const cv::Point q = rounded(at(p[i].x, p[i].y));
+    if (!geometry_.view().contains(q)) continue;
+    const Color col = i < triangle.colors.size() ? triangle.colors[i] : Color{};
+    cv::circle(frame_, q, ring, palette::kHalo, cv::FILLED, cv::LINE_AA);
+    cv::circle(frame_, q, r, to_scalar(col), cv::FILLED, cv::LINE_AA);
+    placement_.mark(PlacedKind::vertex, marker_box(q, ring), fmt::format("v{}", i));
+  }
+}
+
+void GridView::vertex_labels(const trace::TriangleBegin& triangle) {
+  const std::vector<Vec2>& p = corners_of(triangle);
   if (p.empty()) return;
   Vec2 centre{0, 0};
   for (const Vec2& v : p) centre = {centre.x + v.x / p.size(), centre.y + v.y / p.size()};
   const cv::Point2d c = at(centre.x, centre.y);
-  const int r = type_.px(7);
+  const int ring = type_.px(kVertexRadius) + type_.px(kRing);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const cv::Point2d q = at(p[i].x, p[i].y);
-    if (!geometry_.view().contains(cv::Point(static_cast<int>(q.x), static_cast<int>(q.y))))
-      continue;
-    const Color col = i < triangle.colors.size() ? triangle.colors[i] : Color{};
-    const cv::Point qi(static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)));
-    cv::circle(frame_, qi, r + type_.px(2), palette::kHalo, cv::FILLED, cv::LINE_AA);
-    cv::circle(frame_, qi, r, to_scalar(col), cv::FILLED, cv::LINE_AA);
-    const std::string label = fmt::format("v{} {}", i, point(p[i]));
-    const cv::Size s = type_.measure(label, TextStyle::body);
-    // Away from the triangle's centre, so the label does not cover the triangle.
-    cv::Point2d d = q - c;
-    const double len = std::hypot(d.x, d.y);
-    d = len > 0 ? d * (1.0 / len) : cv::Point2d(0, -1);
-    const double reach = r + type_.px(10);
-    cv::Point topleft(static_cast<int>(q.x + d.x * reach -
-                                       (d.x < -0.3  ? s.width
-                                        : d.x > 0.3 ? 0
-                                                    : s.width / 2)),
-                      static_cast<int>(q.y + d.y * reach -
-                                       (d.y < -0.3  ? s.height
-                                        : d.y > 0.3 ? 0
-                                                    : s.height / 2)));
-    type_.draw_boxed(frame_, label, inside(topleft, s), TextStyle::body, palette::kText,
-                     palette::kLabelBox);
+    if (!geometry_.view().contains(rounded(q))) continue;
+    // Away from the polygon's centre first, so the label does not cover the polygon.
+    const cv::Point2d away = q == c ? cv::Point2d(0, -1) : q - c;
+    const std::string text = fmt::format("v{} {}", i, point(p[i]));
+    label(text, TextStyle::body, around(text, TextStyle::body, false, q, ring, away),
+          palette::kLabelBox);
   }
 }
 
-void GridView::scanline(std::int64_t y, bool labelled) {
+void GridView::scanline(std::int64_t y) {
   const cv::Rect& v = geometry_.view();
   const double w = at(0, static_cast<double>(y)).y;
   draw_segment_with_halo(frame_, {static_cast<double>(v.x), w},
                          {static_cast<double>(v.x + v.width), w}, v, palette::kScanline,
                          type_.px(2), palette::kHalo, type_.px(1));
-  if (!labelled) return;
-  const std::string label = fmt::format("y = {}", y);
-  const cv::Size s = type_.measure(label, TextStyle::strong);
-  type_.draw_boxed(frame_, label,
-                   inside({v.x + type_.px(6), static_cast<int>(w) - s.height / 2}, s),
-                   TextStyle::strong, palette::kText, palette::kScanline);
+}
+
+void GridView::scanline_label(std::int64_t y) {
+  const cv::Rect& v = geometry_.view();
+  const double w = at(0, static_cast<double>(y)).y;
+  const std::string text = fmt::format("y = {}", y);
+  const cv::Size s = type_.boxed_area(text, {0, 0}, TextStyle::strong).size();
+  // On the row at the view's left edge, where the eye looks for it; then the right edge, then
+  // above and below the row, then along it.
+  const int m = type_.px(4);
+  const std::vector<int> xs{v.x + m, v.x + v.width - m - s.width, v.x + v.width / 4 - s.width / 2,
+                            v.x + v.width / 2 - s.width / 2, v.x + 3 * v.width / 4 - s.width / 2};
+  std::vector<cv::Rect> candidates;
+  for (const int dy : {0, -1, 1, -2, 2, -3, 3})
+    for (std::size_t i = 0; i < xs.size(); ++i)
+      if (i < 2 || dy == 0 || std::abs(dy) == 3)
+        candidates.emplace_back(xs[i], static_cast<int>(w) - s.height / 2 + dy * s.height, s.width,
+                                s.height);
+  label(text, TextStyle::strong, candidates, palette::kScanline);
 }
 
 void GridView::span(std::int64_t y, const trace::Span& span) {
@@ -193,28 +230,38 @@ void GridView::span(std::int64_t y, const trace::Span& span) {
 }
 
 void GridView::active_points(const trace::Scanline& row) {
+  active_point_markers(row);
+  active_point_labels(row);
+}
+
+void GridView::active_point_markers(const trace::Scanline& row) {
+  const int r = type_.px(kPointRadius), ring = r + type_.px(kRing);
+  for (const trace::ActivePoint& p : row.active_points) {
+    const cv::Point q = rounded(at(p.x, static_cast<double>(row.y)));
+    if (!geometry_.view().contains(q)) continue;
+    cv::circle(frame_, q, ring, palette::edge_colour(p.edge), cv::FILLED, cv::LINE_AA);
+    cv::circle(frame_, q, r, to_scalar(p.color), cv::FILLED, cv::LINE_AA);
+    placement_.mark(PlacedKind::active_point, marker_box(q, ring), fmt::format("e{}", p.edge));
+  }
+}
+
+void GridView::active_point_labels(const trace::Scanline& row) {
   const std::size_t n = row.active_points.size();
-  const int r = type_.px(6);
+  const int ring = type_.px(kPointRadius) + type_.px(kRing);
   for (std::size_t i = 0; i < n; ++i) {
     const trace::ActivePoint& p = row.active_points[i];
     const cv::Point2d q = at(p.x, static_cast<double>(row.y));
-    const cv::Point qi(static_cast<int>(std::lround(q.x)), static_cast<int>(std::lround(q.y)));
-    if (!geometry_.view().contains(qi)) continue;
-    cv::circle(frame_, qi, r + type_.px(2), palette::edge_colour(p.edge), cv::FILLED, cv::LINE_AA);
-    cv::circle(frame_, qi, r, to_scalar(p.color), cv::FILLED, cv::LINE_AA);
+    if (!geometry_.view().contains(rounded(q))) continue;
     // The leftmost label goes left of its point, the rightmost right of it, so the two x values
-    // of a row never overlap even where the points meet at a vertex. With more points (general
+    // of a row read apart even where the points meet at a vertex. With more points (general
     // polygons) the ones between alternate above and below the row.
-    const std::string label = fmt::format("x = {}", number(p.x, 2));
-    const cv::Size s = type_.measure(label, TextStyle::strong);
-    const int gap = r + type_.px(6);
-    int left = static_cast<int>(q.x) - s.width / 2;
-    if (n >= 2 && i == 0) left = static_cast<int>(q.x) - gap - s.width;
-    if (n >= 2 && i == n - 1) left = static_cast<int>(q.x) + gap;
-    const bool below = n > 2 && i > 0 && i + 1 < n && i % 2 == 1;
-    const int top = below ? static_cast<int>(q.y) + gap : static_cast<int>(q.y) - gap - s.height;
-    type_.draw_boxed(frame_, label, inside({left, top}, s), TextStyle::strong, palette::kText,
-                     palette::kLabelBox, palette::edge_colour(p.edge));
+    cv::Point2d preferred(0, -1);
+    if (n >= 2 && i == 0) preferred = {-1, -1};
+    if (n >= 2 && i == n - 1) preferred = {1, -1};
+    if (n > 2 && i > 0 && i + 1 < n && i % 2 == 1) preferred = {0, 1};
+    const std::string text = fmt::format("x = {}", number(p.x, 2));
+    label(text, TextStyle::strong, around(text, TextStyle::strong, true, q, ring, preferred),
+          palette::kLabelBox, palette::edge_colour(p.edge));
   }
 }
 

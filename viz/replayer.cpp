@@ -90,7 +90,7 @@ void Replayer::rewind(std::size_t index) {
   applied_ = it->first;
 }
 
-cv::Mat Replayer::frame(std::size_t index) {
+cv::Mat Replayer::frame(std::size_t index, std::vector<PlacedBox>* placed) {
   if (index >= plan_.steps.size())
     throw std::out_of_range(
         fmt::format("step {} is beyond the replay's {} steps", index + 1, plan_.steps.size()));
@@ -101,7 +101,7 @@ cv::Mat Replayer::frame(std::size_t index) {
       checkpoints_.emplace(applied_, state_.clone());
     apply(plan_.steps[applied_]);
   }
-  cv::Mat f = composer_.compose(plan_.steps[index], index, state_);
+  cv::Mat f = composer_.compose(plan_.steps[index], index, state_, placed);
   if (marked_)
     if (const auto g = geometry(index)) mark_pixel(f, *g, *marked_);
   return f;

@@ -33,8 +33,9 @@ class Replayer {
   const std::vector<Step>& steps() const { return plan_.steps; }
   cv::Size frame_size() const { return size_; }
 
-  // The frame of step `index` (CV_8UC3, BGR, frame_size()), in any order.
-  cv::Mat frame(std::size_t index);
+  // The frame of step `index` (CV_8UC3, BGR, frame_size()), in any order; `placed`, when given,
+  // receives where its markers, labels and zoom insets were drawn.
+  cv::Mat frame(std::size_t index, std::vector<PlacedBox>* placed = nullptr);
   // Where canvas pixels appear on the frames of step `index` (nullopt on a card).
   std::optional<ViewGeometry> geometry(std::size_t index) const;
   const CanvasState& state() const { return state_; }

@@ -90,9 +90,19 @@ void Typography::draw_boxed(cv::Mat& image, const std::string& text, cv::Point t
   const int m = px(3);
   const cv::Rect r(top_left.x - m, top_left.y - m, width(text, style) + 2 * m,
                    box_height(style) + 2 * m);
+  // Keep in step with boxed_area.
   cv::rectangle(image, r, box, cv::FILLED);
   cv::rectangle(image, r, border.value_or(colour), border ? px(2) : 1, cv::LINE_AA);
   draw(image, text, top_left, style, colour);
+}
+
+cv::Rect Typography::boxed_area(const std::string& text, cv::Point top_left, TextStyle style,
+                                bool bold_border) const {
+  // draw_boxed's box is `m` around the text; its border line is centred on the box's edge and
+  // anti-aliased one pixel wider.
+  const int out = px(3) + (bold_border ? px(2) / 2 + 1 : 1);
+  return {top_left.x - out, top_left.y - out, width(text, style) + 2 * out,
+          box_height(style) + 2 * out};
 }
 
 std::vector<std::string> Typography::wrap(const std::string& text, TextStyle style,

@@ -35,6 +35,10 @@ class Typography {
   void draw_boxed(cv::Mat& image, const std::string& text, cv::Point top_left, TextStyle style,
                   const cv::Scalar& colour, const cv::Scalar& box,
                   std::optional<cv::Scalar> border = std::nullopt) const;
+  // The frame area draw_boxed covers, box, border and its anti-aliased edge included: what a
+  // label must keep clear of other marks.
+  cv::Rect boxed_area(const std::string& text, cv::Point top_left, TextStyle style,
+                      bool bold_border = false) const;
   // Splits `text` at spaces into lines no wider than `max_width`. A '~' is a space that does not
   // break ("ceil(y_max)~-~1"); the lines returned have it replaced.
   std::vector<std::string> wrap(const std::string& text, TextStyle style, int max_width) const;

@@ -1,0 +1,68 @@
+#include "viz/label_placement.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace scantrace::viz {
+
+void Placement::mark(PlacedKind kind, const cv::Rect& box, std::string text) {
+  const cv::Rect clipped = box & area_;
+  if (!clipped.empty()) boxes_.push_back({kind, clipped, std::move(text), layer_});
+}
+
+bool Placement::free(const cv::Rect& box) const {
+  if ((box & area_) != box) return false;
+  return std::none_of(boxes_.begin(), boxes_.end(),
+                      [&](const PlacedBox& b) { return !(b.box & box).empty(); });
+}
+
+std::optional<cv::Rect> Placement::place(PlacedKind kind, std::span<const cv::Rect> candidates,
+                                         std::string text) {
+  for (cv::Rect c : candidates) {
+    // A box near the view's edge slides inside rather than being given up: it may then cover its
+    // own marker, which free() refuses like any other.
+    c.x = std::clamp(c.x, area_.x, std::max(area_.x, area_.x + area_.width - c.width));
+    c.y = std::clamp(c.y, area_.y, std::max(area_.y, area_.y + area_.height - c.height));
+    if (free(c)) {
+      boxes_.push_back({kind, c, std::move(text), layer_});
+      return c;
+    }
+  }
+  return std::nullopt;
+}
+
+std::vector<cv::Rect> boxes_around(cv::Point2d p, int radius, cv::Size size, cv::Point2d preferred,
+                                   int gap, int step, int rings) {
+  std::array<cv::Point, 8> directions{cv::Point{-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}, {0, 1},
+                                      {-1, 1},           {-1, 0}};
+  std::stable_sort(directions.begin(), directions.end(), [&](cv::Point a, cv::Point b) {
+    const auto score = [&](cv::Point d) {
+      return (d.x * preferred.x + d.y * preferred.y) / std::hypot(double(d.x), double(d.y));
+    };
+    return score(a) > score(b);
+  });
+  std::vector<cv::Rect> out;
+  for (int ring = 0; ring < rings; ++ring) {
+    const double reach = radius + gap + ring * step;
+    for (const cv::Point d : directions) {
+      const double x = d.x < 0   ? p.x - reach - size.width
+                       : d.x > 0 ? p.x + reach
+                                 : p.x - size.width / 2.0;
+      const double y = d.y < 0   ? p.y - reach - size.height
+                       : d.y > 0 ? p.y + reach
+                                 : p.y - size.height / 2.0;
+      out.emplace_back(static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y)), size.width,
+                       size.height);
+    }
+  }
+  return out;
+}
+
+cv::Rect marker_box(cv::Point2d p, int radius) {
+  const int cx = static_cast<int>(std::lround(p.x)), cy = static_cast<int>(std::lround(p.y));
+  const int r = radius + 1;
+  return {cx - r, cy - r, 2 * r + 1, 2 * r + 1};
+}
+
+}  // namespace scantrace::viz

@@ -23,8 +23,10 @@ std::string step_label(const StepPlan& plan, const Step& s) {
     case StepKind::triangle_skipped:
       return fmt::format("triangle {}: skipped", s.triangle);
     case StepKind::painter_batch:
-      return fmt::format("painter: triangles {}-{} of {} (triangle {})", s.first + 1, s.last + 1,
-                         plan.order.size(), s.triangle);
+      // Positions in the drawing order, not face numbers (those are the trace's "triangle"
+      // indices): the highlighted face is named as such.
+      return fmt::format("painter: drawn {}-{} of {} (highlighted: triangle {})", s.first + 1,
+                         s.last + 1, plan.order.size(), s.triangle);
     case StepKind::scene_done:
       return "the finished image";
     case StepKind::end:

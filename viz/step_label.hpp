@@ -1,6 +1,7 @@
 #pragma once
 // One line naming a replay step, for lists of steps (the HTML player's index, the window's
-// title): "scanline y = 80 (61 of 380)", "edge table: entry 2", "painter: triangles 1-100".
+// title): "scanline y = 80 (61 of 380)", "edge table: entry 2", "painter: drawn 1-100 of 437
+// (highlighted: triangle 12)" (positions in the drawing order, then a face).
 #include <cstddef>
 #include <string>
 

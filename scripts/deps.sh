@@ -9,9 +9,10 @@ set -euo pipefail
 # The demo's packages: the compiler, CMake, and the libraries the `scantrace` target links.
 # (pkg-config finds libmatio-dev, the MATLAB .mat reader, which has no CMake package.)
 # (libxcb1-dev: `scantrace step` makes the X connection itself before HighGUI's Qt would abort on
-# a refused one, cli/x_display.hpp.)
+# a refused one, cli/x_display.hpp.) (libhwy-dev: Google Highway, the core's SIMD Gouraud spans,
+# src/shade_bytes.hpp.)
 demo_packages=(cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libopencv-dev
-               libcli11-dev libtinyobjloader-dev libmatio-dev libxcb1-dev)
+               libcli11-dev libtinyobjloader-dev libmatio-dev libxcb1-dev libhwy-dev)
 
 # THE FULL LIST (the test command, CI): every package, the demo's included; append new ones here.
 # ffmpeg provides ffprobe, with which the tests check the codec of the videos `replay` writes;
@@ -20,7 +21,7 @@ packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 l
           libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev clang-14 libfuzzer-14-dev
           ccache
           pybind11-dev python3-dev python3-numpy python3-pytest)
-packages+=(pkg-config libmatio-dev libxcb1-dev)
+packages+=(pkg-config libmatio-dev libxcb1-dev libhwy-dev)
 # Stepping through replays: Qt's headers for the window's focus fix (cli/highgui_focus.hpp), and
 # for the tests a virtual display, xdotool and headless chromium.
 packages+=(qtbase5-dev xvfb xdotool chromium)

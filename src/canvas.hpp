@@ -11,6 +11,7 @@
 #include "color.hpp"
 #include "flat_span.hpp"
 #include "image.hpp"
+#include "shade_bytes.hpp"
 
 namespace scantrace {
 
@@ -60,32 +61,6 @@ struct DirectPixelOf<C> {
 };
 template <class C>
 using DirectPixel = typename DirectPixelOf<C>::type;
-
-// A Gouraud span of 8-bit pixels in fixed point: each channel as 255·c in 32.32 bits, stepped by
-// an integer increment and rounded by a shift. Converting doubles to bytes costs two conversions
-// per channel and pixel; this costs an add and a shift, and the compiler can vectorise it. The
-// ends are clamped to [0, 255] first, and every pixel lies between them (the increment is
-// truncated toward zero), so no pixel can wrap around; the truncations stay below 2^-32 of a level
-// per pixel, i.e. below 1e-8 in colour over the longest span.
-inline void shade_bytes(Bgr8* out, int n, Color c, Color step) {
-  if (n <= 0) return;
-  constexpr double kOne = 4294967296.0;  // 2^32
-  const auto fixed = [](double v) {
-    const double x = 255.0 * kOne * v;
-    return static_cast<std::int64_t>(x > 0.0 ? (x < 255.0 * kOne ? x : 255.0 * kOne) : 0.0);
-  };
-  const Color last = c + step * static_cast<double>(n - 1);
-  const std::int64_t r0 = fixed(c.r), g0 = fixed(c.g), b0 = fixed(c.b);
-  const std::int64_t dr = n > 1 ? (fixed(last.r) - r0) / (n - 1) : 0;
-  const std::int64_t dg = n > 1 ? (fixed(last.g) - g0) / (n - 1) : 0;
-  const std::int64_t db = n > 1 ? (fixed(last.b) - b0) / (n - 1) : 0;
-  constexpr std::int64_t kHalf = std::int64_t{1} << 31;
-  for (int k = 0; k < n; ++k) {
-    out[k].r = static_cast<std::uint8_t>((r0 + k * dr + kHalf) >> 32);
-    out[k].g = static_cast<std::uint8_t>((g0 + k * dg + kHalf) >> 32);
-    out[k].b = static_cast<std::uint8_t>((b0 + k * db + kHalf) >> 32);
-  }
-}
 
 // Pixels [x_begin, x_end) of `row` in the colours c, c + step, c + 2·step, … (a Gouraud span of
 // the exact method, linear from its first pixel): 8-bit pixels in fixed point (shade_bytes),

@@ -1,7 +1,7 @@
 #pragma once
 // OpenCV's cv::fillConvexPoly as a stress rasterizer, measured on the same cases as the library's
 // methods (docs/accuracy.md). A library of its own (scantrace_stress_opencv), so that the stress
-// generator itself stays standard library only, like the core it checks.
+// generator itself stays standard library only.
 #include <memory>
 
 #include "stress/rasterizer.hpp"

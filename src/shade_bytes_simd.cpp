@@ -89,48 +89,48 @@ HWY_AFTER_NAMESPACE();
 namespace scantrace {
 namespace {
 
+#if defined(__x86_64__) || defined(__i386__)
 // F16C from CPUID leaf 1 (clang's __builtin_cpu_supports does not know the name).
 int has_f16c() {
-#if defined(__x86_64__) || defined(__i386__)
   unsigned a = 0, b = 0, c = 0, d = 0;
   return __get_cpuid(1, &a, &b, &c, &d) && (c & bit_F16C) != 0;
-#else
-  return 0;
-#endif
 }
 
 // Whether every __builtin_cpu_supports(...) given is nonzero (it takes only string literals).
 bool has(std::initializer_list<int> features) {
   return std::all_of(features.begin(), features.end(), [](int f) { return f != 0; });
 }
+#endif
 
 std::vector<SimdKernel> supported_kernels() {
-  // Best first; each target needs the features Highway compiles it with.
+  // Best first; each target needs the features Highway compiles it with, each the previous one's
+  // and more (hwy/ops/set_macros-inl.h).
+#if defined(__x86_64__) || defined(__i386__)
+  const bool ssse3 = __builtin_cpu_supports("ssse3");
+  const bool sse4 =
+      ssse3 && has({__builtin_cpu_supports("sse4.1"), __builtin_cpu_supports("sse4.2"),
+                    __builtin_cpu_supports("pclmul"), __builtin_cpu_supports("aes")});
+  const bool avx2 = sse4 && has({__builtin_cpu_supports("avx"), __builtin_cpu_supports("avx2"),
+                                 __builtin_cpu_supports("bmi"), __builtin_cpu_supports("bmi2"),
+                                 __builtin_cpu_supports("fma"), has_f16c()});
+  const bool avx3 =
+      avx2 && has({__builtin_cpu_supports("avx512f"), __builtin_cpu_supports("avx512vl"),
+                   __builtin_cpu_supports("avx512dq"), __builtin_cpu_supports("avx512bw")});
+#else
+  [[maybe_unused]] const bool ssse3 = false, sse4 = false, avx2 = false, avx3 = false;
+#endif
   std::vector<SimdKernel> k;
 #if HWY_TARGETS & HWY_AVX3
-  if (has({__builtin_cpu_supports("avx512f"), __builtin_cpu_supports("avx512vl"),
-           __builtin_cpu_supports("avx512dq"), __builtin_cpu_supports("avx512bw"),
-           __builtin_cpu_supports("avx2"), __builtin_cpu_supports("bmi"),
-           __builtin_cpu_supports("bmi2"), __builtin_cpu_supports("fma"), has_f16c(),
-           __builtin_cpu_supports("pclmul"), __builtin_cpu_supports("aes"),
-           __builtin_cpu_supports("sse4.2")}))
-    k.push_back({"AVX3 (AVX-512)", &N_AVX3::ShadeBytes});
+  if (avx3) k.push_back({"AVX3 (AVX-512)", &N_AVX3::ShadeBytes});
 #endif
 #if HWY_TARGETS & HWY_AVX2
-  if (has({__builtin_cpu_supports("avx2"), __builtin_cpu_supports("bmi"),
-           __builtin_cpu_supports("bmi2"), __builtin_cpu_supports("fma"), has_f16c(),
-           __builtin_cpu_supports("pclmul"), __builtin_cpu_supports("aes"),
-           __builtin_cpu_supports("sse4.2")}))
-    k.push_back({"AVX2", &N_AVX2::ShadeBytes});
+  if (avx2) k.push_back({"AVX2", &N_AVX2::ShadeBytes});
 #endif
 #if HWY_TARGETS & HWY_SSE4
-  if (has({__builtin_cpu_supports("sse4.1"), __builtin_cpu_supports("sse4.2"),
-           __builtin_cpu_supports("pclmul"), __builtin_cpu_supports("aes"),
-           __builtin_cpu_supports("ssse3")}))
-    k.push_back({"SSE4", &N_SSE4::ShadeBytes});
+  if (sse4) k.push_back({"SSE4", &N_SSE4::ShadeBytes});
 #endif
 #if HWY_TARGETS & HWY_SSSE3
-  if (__builtin_cpu_supports("ssse3")) k.push_back({"SSSE3", &N_SSSE3::ShadeBytes});
+  if (ssse3) k.push_back({"SSSE3", &N_SSSE3::ShadeBytes});
 #endif
 #if HWY_TARGETS & HWY_NEON
   k.push_back({"NEON", &N_NEON::ShadeBytes});  // every AArch64 CPU has it

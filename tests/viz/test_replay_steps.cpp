@@ -5,6 +5,7 @@
 #include "src/scene.hpp"
 #include "viz/replay.hpp"
 #include "viz/replay_steps.hpp"
+#include "viz/step_label.hpp"
 #include "viz_test_support.hpp"
 
 using namespace scantrace;
@@ -142,6 +143,27 @@ TEST_CASE("a scene replays as the painter's algorithm in a bounded number of ste
       frames += static_cast<std::size_t>(viz::frames_for(s, defaults.fps, defaults.hold));
     CHECK(frames <= 300);
   }
+}
+
+TEST_CASE(
+    "a painter's step label names positions in the drawing order, then the face it highlights",
+    "[viz][steps]") {
+  // In strip(n) the face drawn at position p (0-based) is face n-1-p, so positions and face
+  // numbers differ everywhere but the middle: a label mixing them up cannot pass.
+  const int n = 250;
+  const trace::Trace t = trace::record_scene(strip(n), FillOptions{});
+  const viz::StepPlan plan = viz::plan_steps(t);
+  int batches = 0;
+  for (const viz::Step& s : plan.steps) {
+    if (s.kind != StepKind::painter_batch) continue;
+    ++batches;
+    const auto first = static_cast<int>(s.first) + 1, last = static_cast<int>(s.last) + 1;
+    const std::string expected = "painter: drawn " + std::to_string(first) + "-" +
+                                 std::to_string(last) + " of " + std::to_string(n) +
+                                 " (highlighted: triangle " + std::to_string(n - last) + ")";
+    CHECK(viz::step_label(plan, s) == expected);
+  }
+  CHECK(batches > 1);
 }
 
 TEST_CASE("step ranges", "[viz][steps]") {

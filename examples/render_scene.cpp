@@ -17,9 +17,12 @@ int main(int argc, char** argv) {
   }
   try {
     const Scene scene = load_scene(argv[1]);
+    // One image and one scratch for both renders: the second reuses their storage and
+    // allocates nothing (render(scene, options) would return a fresh image each time).
+    RgbImage image;
+    RenderScratch scratch;
     for (Shading shading : {Shading::flat, Shading::gouraud}) {
-      RenderStats stats;
-      const RgbImage image = render(scene, FillOptions{.shading = shading}, &stats);
+      const RenderStats stats = render(image, scene, FillOptions{.shading = shading}, scratch);
       const std::string out = std::string(argv[2]) + "_" + to_string(shading) + ".png";
       write_png(image, out);
       std::printf("%s: %lld triangles drawn, %lld skipped, %lld pixels -> %s\n", to_string(shading),

@@ -48,18 +48,22 @@ inline std::vector<std::vector<int>> faces_by_band(const Scene& scene,
 
 }  // namespace detail
 
-// The scene rendered with `threads` threads (0: one per core); equal, pixel for pixel, to
-// render<P>(scene, opt). Statistics count a face as filled when any band filled part of it.
-template <class P = Rgb32f>
-Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads = 0,
-                         RenderStats* stats = nullptr) {
+// The scene rendered into the caller's `image` (as render(image, scene, opt, scratch) does) with
+// `threads` threads (0: one per core); equal, pixel for pixel, to the single-threaded render.
+// Statistics count a face as filled when any band filled part of it. `scratch` holds the depths
+// and the order; each thread has a fill scratch of its own.
+template <class P>
+RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptions& opt,
+                            int threads, RenderScratch& scratch) {
   // The z-buffer keeps depth per pixel across faces drawn in scene order: a band could be
   // z-buffered just the same, but that render is not parallelised yet.
-  if (opt.visibility == Visibility::zbuffer) return render<P>(scene, opt, stats);
+  if (opt.visibility == Visibility::zbuffer) return render(image, scene, opt, scratch);
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  Image<P> image(scene.width, scene.height, P::from(scene.background));
-  const std::vector<double> depth = face_depths(scene);
-  const std::vector<int> order = painter_order(depth);
+  image.reset(scene.width, scene.height, P::from(scene.background));
+  face_depths(scene, scratch.depth);
+  painter_order(scratch.depth, scratch.order, scratch.sort);
+  const std::vector<double>& depth = scratch.depth;
+  const std::vector<int>& order = scratch.order;
   // Four bands per thread balance the load; bands of at least 16 rows keep the per-band set-up
   // (and the faces listed in two bands) small.
   const int bands = std::clamp(scene.height / 16, 1, 4 * threads);
@@ -92,14 +96,23 @@ Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads
     for (int t = 1; t < threads; ++t) pool.emplace_back(work);
     work();
   }
-  if (stats) {
-    *stats = {};
-    for (char f : filled)
-      (f == 1   ? stats->triangles_filled
-       : f == 2 ? stats->triangles_culled
-                : stats->triangles_skipped) += 1;
-    for (long long p : pixels) stats->pixels += p;
-  }
+  RenderStats stats;
+  for (char f : filled)
+    (f == 1   ? stats.triangles_filled
+     : f == 2 ? stats.triangles_culled
+              : stats.triangles_skipped) += 1;
+  for (long long p : pixels) stats.pixels += p;
+  return stats;
+}
+
+// The same on a fresh image of the scene's size.
+template <class P = Rgb32f>
+Image<P> render_parallel(const Scene& scene, const FillOptions& opt, int threads = 0,
+                         RenderStats* stats = nullptr) {
+  Image<P> image;
+  RenderScratch scratch;
+  const RenderStats s = render_parallel(image, scene, opt, threads, scratch);
+  if (stats) *stats = s;
   return image;
 }
 

@@ -7,12 +7,17 @@
 
 namespace scantrace {
 
-std::vector<double> face_depths(const Scene& scene) {
-  std::vector<double> d(scene.faces.size());
+void face_depths(const Scene& scene, std::vector<double>& d) {
+  d.resize(scene.faces.size());
   for (std::size_t f = 0; f < d.size(); ++f) {
     const auto& face = scene.faces[f];
     d[f] = (scene.depth[face[0]] + scene.depth[face[1]] + scene.depth[face[2]]) / 3.0;
   }
+}
+
+std::vector<double> face_depths(const Scene& scene) {
+  std::vector<double> d;
+  face_depths(scene, d);
   return d;
 }
 
@@ -31,23 +36,30 @@ std::uint64_t farthest_first_key(double d) {
 
 }  // namespace
 
-std::vector<int> painter_order(const std::vector<double>& d) {
+void painter_order(std::span<const double> d, std::vector<int>& order, PainterSortBuffers& buf) {
   // A least-significant-digit radix sort of the keys, 11 bits per pass: it is stable, so faces of
   // equal depth keep their order with no tie-break, and unlike a comparison sort it has no
   // data-dependent branches (on the course scene std::sort's mispredictions made the sort an eighth
   // of the render). Passes whose digit is the same for every key are skipped.
   constexpr int kBits = 11, kPasses = 6, kBuckets = 1 << kBits;
   const std::size_t n = d.size();
-  std::vector<std::uint64_t> key(n), key_tmp(n);
-  std::vector<int> order(n), order_tmp(n);
-  std::vector<std::array<std::uint32_t, kBuckets>> count(kPasses);
+  std::vector<std::uint64_t>&key = buf.key, &key_tmp = buf.key_tmp;
+  std::vector<int>& order_tmp = buf.order_tmp;
+  key.resize(n);
+  key_tmp.resize(n);
+  order.resize(n);
+  order_tmp.resize(n);
+  buf.count.assign(std::size_t{kPasses} * kBuckets, 0);
+  const auto count = [&](int pass) {
+    return std::span<std::uint32_t, kBuckets>(buf.count.data() + pass * kBuckets, kBuckets);
+  };
   for (std::size_t f = 0; f < n; ++f) {
     key[f] = farthest_first_key(d[f]);
     order[f] = static_cast<int>(f);
-    for (int p = 0; p < kPasses; ++p) ++count[p][(key[f] >> (p * kBits)) & (kBuckets - 1)];
+    for (int p = 0; p < kPasses; ++p) ++count(p)[(key[f] >> (p * kBits)) & (kBuckets - 1)];
   }
   for (int p = 0; p < kPasses; ++p) {
-    auto& c = count[p];
+    const auto c = count(p);
     if (n == 0 || c[(key[0] >> (p * kBits)) & (kBuckets - 1)] == n) continue;
     std::uint32_t sum = 0;
     for (std::uint32_t& bucket : c) sum += std::exchange(bucket, sum);
@@ -59,6 +71,12 @@ std::vector<int> painter_order(const std::vector<double>& d) {
     key.swap(key_tmp);
     order.swap(order_tmp);
   }
+}
+
+std::vector<int> painter_order(const std::vector<double>& d) {
+  std::vector<int> order;
+  PainterSortBuffers buffers;
+  painter_order(d, order, buffers);
   return order;
 }
 

@@ -2,6 +2,8 @@
 // The course's render: every face of the scene filled in painter's order (docs/design.md §2), or,
 // when FillOptions::visibility asks for it, in face order through a depth buffer
 // (zbuffer_canvas.hpp).
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "scanline_fill.hpp"
@@ -14,6 +16,28 @@ namespace scantrace {
 // faces of equal depth keep their order in the scene (stable), so the result is reproducible.
 std::vector<double> face_depths(const Scene& scene);
 std::vector<int> painter_order(const std::vector<double>& face_depths);
+
+// The radix sort's buffers (keys, a second copy of keys and indices, digit counts), kept by a
+// caller who sorts again so that a sort of as many faces allocates nothing.
+struct PainterSortBuffers {
+  std::vector<std::uint64_t> key, key_tmp;
+  std::vector<int> order_tmp;
+  std::vector<std::uint32_t> count;
+};
+void face_depths(const Scene& scene, std::vector<double>& depth);
+void painter_order(std::span<const double> face_depths, std::vector<int>& order,
+                   PainterSortBuffers& buffers);
+
+// Everything a render needs besides the image: the face depths, the painter's order and its sort
+// buffers, and the fill's scratch. A caller that renders more than once (the bench, an animation,
+// a viewer) keeps one, and a warm render then allocates nothing (the z-buffer's depth plane
+// excepted).
+struct RenderScratch {
+  std::vector<double> depth;
+  std::vector<int> order;
+  PainterSortBuffers sort;
+  FillScratch fill;
+};
 
 struct RenderStats {
   long long triangles_filled = 0;
@@ -32,35 +56,72 @@ struct RenderStats {
 // Fills the faces of `scene` onto `canvas` (which the caller has cleared to the background).
 // The scene must be valid (see validate()).
 template <Canvas C, FillTracer Tracer = NoTracer>
-RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt, Tracer& tracer) {
-  const std::vector<double> depth = face_depths(scene);
-  FillScratch scratch;
+RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt,
+                        RenderScratch& scratch, Tracer& tracer) {
+  face_depths(scene, scratch.depth);
+  painter_order(scratch.depth, scratch.order, scratch.sort);
   RenderStats stats;
-  for (int f : painter_order(depth)) {
+  for (int f : scratch.order) {
     const FaceCorners c = corners_of(scene, scene.faces[f]);
-    stats.count(
-        fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f]}, opt, scratch, tracer));
+    stats.count(fill_polygon(canvas, PolygonInput{c.points, c.colors, f, scratch.depth[f]}, opt,
+                             scratch.fill, tracer));
   }
   return stats;
+}
+
+template <Canvas C, FillTracer Tracer = NoTracer>
+RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt, Tracer& tracer) {
+  RenderScratch scratch;
+  return render_into(canvas, scene, opt, scratch, tracer);
 }
 
 // The faces in scene order through the depth buffer of `canvas`: no sort, and the order does not
 // matter except for exact depth ties (the first face drawn keeps the pixel).
 template <class P, FillTracer Tracer = NoTracer>
 RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
-                                const FillOptions& opt, Tracer& tracer) {
-  const std::vector<double> depth = face_depths(scene);
+                                const FillOptions& opt, RenderScratch& scratch, Tracer& tracer) {
+  face_depths(scene, scratch.depth);
   const SubpixelGrid grid(opt.subpixel_bits);
-  FillScratch scratch;
   RenderStats stats;
   for (int f = 0; f < static_cast<int>(scene.faces.size()); ++f) {
     const FaceCorners c = corners_of(scene, scene.faces[f]);
     const std::array<double, 3> d = corner_depths(scene, scene.faces[f]);
     if (grid.valid()) canvas.begin_triangle(c.points, d, grid);
-    stats.count(fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f], d}, opt, scratch,
-                             tracer));
+    stats.count(fill_polygon(canvas, PolygonInput{c.points, c.colors, f, scratch.depth[f], d}, opt,
+                             scratch.fill, tracer));
   }
   return stats;
+}
+
+template <class P, FillTracer Tracer = NoTracer>
+RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
+                                const FillOptions& opt, Tracer& tracer) {
+  RenderScratch scratch;
+  return render_zbuffer_into(canvas, scene, opt, scratch, tracer);
+}
+
+// The scene into the caller's `image`, which becomes the scene's size and is cleared to its
+// background, keeping its storage when the size is unchanged (Image::reset). With the same
+// `scratch` every time, a render after the first allocates nothing (the z-buffer's depth plane
+// excepted): what an animation, a viewer or a benchmark wants.
+template <class P, FillTracer Tracer = NoTracer>
+RenderStats render(Image<P>& image, const Scene& scene, const FillOptions& opt,
+                   RenderScratch& scratch, Tracer& tracer) {
+  image.reset(scene.width, scene.height, P::from(scene.background));
+  if (opt.visibility == Visibility::zbuffer) {
+    // Only a pixel-level trace reads the per-pixel outcomes of the depth test.
+    ZBufferCanvas<P> canvas(image, kTraceHooks && Tracer::max_level >= TraceLevel::pixel);
+    return render_zbuffer_into(canvas, scene, opt, scratch, tracer);
+  }
+  ImageCanvas<P> canvas(image);
+  return render_into(canvas, scene, opt, scratch, tracer);
+}
+
+template <class P>
+RenderStats render(Image<P>& image, const Scene& scene, const FillOptions& opt,
+                   RenderScratch& scratch) {
+  NoTracer none;
+  return render(image, scene, opt, scratch, none);
 }
 
 // The scene on a fresh canvas of its size and background colour, in pixels of type P: Rgb32f is
@@ -68,16 +129,9 @@ RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
 template <class P = Rgb32f, FillTracer Tracer = NoTracer>
 Image<P> render(const Scene& scene, const FillOptions& opt, Tracer& tracer,
                 RenderStats* stats = nullptr) {
-  Image<P> image(scene.width, scene.height, P::from(scene.background));
-  RenderStats s;
-  if (opt.visibility == Visibility::zbuffer) {
-    // Only a pixel-level trace reads the per-pixel outcomes of the depth test.
-    ZBufferCanvas<P> canvas(image, kTraceHooks && Tracer::max_level >= TraceLevel::pixel);
-    s = render_zbuffer_into(canvas, scene, opt, tracer);
-  } else {
-    ImageCanvas<P> canvas(image);
-    s = render_into(canvas, scene, opt, tracer);
-  }
+  Image<P> image;
+  RenderScratch scratch;
+  const RenderStats s = render(image, scene, opt, scratch, tracer);
   if (stats) *stats = s;
   return image;
 }

@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
-#include "src/band_render.hpp"
 #include "demo/demo_scene.hpp"
+#include "src/band_render.hpp"
 #include "src/splitmix64.hpp"
 
 namespace {
@@ -55,4 +55,36 @@ TEST_CASE("band render: bit-identical to the single-threaded render", "[band]") 
         }
         CHECK(render_parallel<Rgb32f>(scene, opt, 2) == render<Rgb32f>(scene, opt));
       }
+}
+
+TEST_CASE("a render into the caller's image equals a fresh render, whatever the image held",
+          "[band][painter]") {
+  // One image and one scratch for every render, as the bench and an animation keep them: the
+  // scenes change size (the storage is replaced) and repeat a size (it is kept, and must be
+  // cleared: none of these scenes covers its whole canvas), and the depths, the order and the
+  // fill's scratch carry over from a different scene each time.
+  const Scene scenes[] = {overlapping_scene(7, 300, 211, 2000), overlapping_scene(8, 64, 17, 300),
+                          overlapping_scene(9, 64, 17, 40), demo_scene(),
+                          overlapping_scene(10, 300, 211, 500)};
+  Bgr8Image image(5, 5, Bgr8{1, 2, 3});
+  RgbImage float_image;
+  RenderScratch scratch;
+  for (int pass = 0; pass < 2; ++pass)
+    for (const Scene& scene : scenes)
+      for (Visibility visibility : {Visibility::painter, Visibility::zbuffer})
+        for (Shading shading : {Shading::flat, Shading::gouraud}) {
+          const FillOptions opt{.shading = shading, .visibility = visibility};
+          INFO(scene.width << "x" << scene.height << ", " << scene.faces.size() << " faces, "
+                           << to_string(shading) << ", " << to_string(visibility));
+          RenderStats fresh_stats;
+          const Bgr8Image fresh = render<Bgr8>(scene, opt, &fresh_stats);
+          const RenderStats stats = render(image, scene, opt, scratch);
+          CHECK(image == fresh);
+          CHECK(stats.pixels == fresh_stats.pixels);
+          CHECK(stats.triangles_filled == fresh_stats.triangles_filled);
+          CHECK(render_parallel(image, scene, opt, 2, scratch).pixels == fresh_stats.pixels);
+          CHECK(image == fresh);
+          render(float_image, scene, opt, scratch);
+          CHECK(float_image == render<Rgb32f>(scene, opt));
+        }
 }

@@ -178,6 +178,8 @@ TEST_CASE("validate accepts a good scene and names the first bad element", "[sce
 TEST_CASE("painter_order equals a stable sort on awkward depths", "[painter]") {
   // Independent check of the radix sort: std::stable_sort with the comparison the course states.
   sttest::Rng rng(0x7001);
+  std::vector<int> order;
+  scantrace::PainterSortBuffers buffers;
   const double specials[] = {0.0,
                              -0.0,
                              1e-310,
@@ -197,5 +199,9 @@ TEST_CASE("painter_order equals a stable sort on awkward depths", "[painter]") {
     std::iota(expected.begin(), expected.end(), 0);
     std::stable_sort(expected.begin(), expected.end(), [&](int a, int b) { return d[a] > d[b]; });
     CHECK(scantrace::painter_order(d) == expected);
+    // The same sort into buffers kept from the previous rounds (of other sizes and keys): what a
+    // render with a kept RenderScratch does. Stale keys or counts would show here.
+    scantrace::painter_order(d, order, buffers);
+    CHECK(order == expected);
   }
 }

@@ -98,8 +98,8 @@ Command add_render_command(CLI::App& app) {
   add_model_flags(*cmd, args->model, false);
   cmd->add_option("--threads", args->threads,
                   "threads drawing horizontal bands of the image (0: one per\n"
-                  "core); the image is bit-identical to the one-thread render.\n"
-                  "The z-buffer render runs on one thread")
+                  "core), painter's or z-buffered; the image is bit-identical\n"
+                  "to the one-thread render")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();
   cmd->footer(

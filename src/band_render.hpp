@@ -1,9 +1,10 @@
 #pragma once
-// The painter's render on several threads. The image is cut into horizontal bands; each thread
-// takes bands in turn and draws, into its band only, every face that reaches it, in the full
-// painter's order. A pixel belongs to exactly one band and receives exactly the same sequence of
-// writes as in the single-threaded render, so the result is bit-identical: parallelism changes
-// who draws a pixel, never what is drawn on it or in which order.
+// The render on several threads. The image is cut into horizontal bands; each thread takes bands
+// in turn and draws, into its band only, every face that reaches it, in the full painter's order
+// (or, z-buffered, in scene order through the band's rows of one shared depth buffer). A pixel
+// belongs to exactly one band and receives exactly the same sequence of writes (and depth tests)
+// as in the single-threaded render, so the result is bit-identical: parallelism changes who draws
+// a pixel, never what is drawn on it or in which order.
 //
 // Why bands and not faces: faces overlap, and the painter's order between overlapping faces is
 // the whole point, so splitting the face list would need locks or a merge; bands need neither.
@@ -12,6 +13,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <thread>
 #include <vector>
 
@@ -50,20 +53,28 @@ inline std::vector<std::vector<int>> faces_by_band(const Scene& scene,
 
 // The scene rendered into the caller's `image` (as render(image, scene, opt, scratch) does) with
 // `threads` threads (0: one per core); equal, pixel for pixel, to the single-threaded render.
-// Statistics count a face as filled when any band filled part of it. `scratch` holds the depths
-// and the order; each thread has a fill scratch of its own.
+// Statistics count a face as filled when any band filled part of it. `scratch` holds the depths,
+// the order and the z-buffer; each thread has a fill scratch of its own.
 template <class P>
 RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptions& opt,
                             int threads, RenderScratch& scratch) {
-  // The z-buffer keeps depth per pixel across faces drawn in scene order: a band could be
-  // z-buffered just the same, but that render is not parallelised yet.
-  if (opt.visibility == Visibility::zbuffer) return render(image, scene, opt, scratch);
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   image.reset(scene.width, scene.height, P::from(scene.background));
   face_depths(scene, scratch.depth);
-  painter_order(scratch.depth, scratch.order, scratch.sort);
+  // The z-buffer draws in scene order, and a pixel's depth tests then come in that order in its
+  // band as in the whole image: the same writes, so the same image, as with the painter's order.
+  const bool zbuffer = opt.visibility == Visibility::zbuffer;
+  if (zbuffer) {
+    scratch.order.resize(scene.faces.size());
+    std::iota(scratch.order.begin(), scratch.order.end(), 0);
+    scratch.zbuffer.assign(static_cast<std::size_t>(scene.width) * scene.height,
+                           std::numeric_limits<double>::infinity());
+  } else {
+    painter_order(scratch.depth, scratch.order, scratch.sort);
+  }
   const std::vector<double>& depth = scratch.depth;
   const std::vector<int>& order = scratch.order;
+  const SubpixelGrid grid(opt.subpixel_bits);
   // Four bands per thread balance the load; bands of at least 16 rows keep the per-band set-up
   // (and the faces listed in two bands) small.
   const int bands = std::clamp(scene.height / 16, 1, 4 * threads);
@@ -77,24 +88,38 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
   std::vector<long long> pixels(bands, 0);
   std::atomic<int> next_band{0};
   const auto work = [&] {
-    FillScratch scratch;
+    FillScratch fill;  // each thread its own
     NoTracer none;
     for (int b; (b = next_band.fetch_add(1)) < bands;) {
-      BandCanvas<P> canvas(image, {b * band_height, std::min(scene.height, (b + 1) * band_height)});
+      const RowBand rows{b * band_height, std::min(scene.height, (b + 1) * band_height)};
       // Counted in a local and stored once per band: the threads' counters share a cache line,
       // and a store per face bounced it between the cores (the 1200² scene's two-thread
       // speed-up was 1.2-1.36 with it). The flags are relaxed stores for the same reason: the
       // join orders them before they are read.
       long long band_pixels = 0;
-      for (int f : by_band[b]) {
-        const FaceCorners c = corners_of(scene, scene.faces[f]);
-        const FillResult r =
-            fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f]}, opt, scratch, none);
+      const auto count = [&](int f, const FillResult& r) {
         if (r.skipped == SkipReason::none)
           std::atomic_ref<char>(filled[f]).store(1, std::memory_order_relaxed);
         if (r.skipped == SkipReason::culled)
           std::atomic_ref<char>(filled[f]).store(2, std::memory_order_relaxed);
         band_pixels += r.pixels;
+      };
+      if (zbuffer) {
+        ZBufferCanvas<P> canvas(image, scratch.zbuffer, rows);
+        for (int f : by_band[b]) {
+          const FaceCorners c = corners_of(scene, scene.faces[f]);
+          const std::array<double, 3> d = corner_depths(scene, scene.faces[f]);
+          if (grid.valid()) canvas.begin_triangle(c.points, d, grid);
+          count(f, fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f], d}, opt, fill,
+                                none));
+        }
+      } else {
+        BandCanvas<P> canvas(image, rows);
+        for (int f : by_band[b]) {
+          const FaceCorners c = corners_of(scene, scene.faces[f]);
+          count(f, fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f]}, opt, fill,
+                                none));
+        }
       }
       pixels[b] = band_pixels;
     }

@@ -3,6 +3,7 @@
 // when FillOptions::visibility asks for it, in face order through a depth buffer
 // (zbuffer_canvas.hpp).
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -29,14 +30,14 @@ void painter_order(std::span<const double> face_depths, std::vector<int>& order,
                    PainterSortBuffers& buffers);
 
 // Everything a render needs besides the image: the face depths, the painter's order and its sort
-// buffers, and the fill's scratch. A caller that renders more than once (the bench, an animation,
-// a viewer) keeps one, and a warm render then allocates nothing (the z-buffer's depth plane
-// excepted).
+// buffers, the fill's scratch and the z-buffer. A caller that renders more than once (the bench,
+// an animation, a viewer) keeps one, and a warm render then allocates nothing.
 struct RenderScratch {
   std::vector<double> depth;
   std::vector<int> order;
   PainterSortBuffers sort;
   FillScratch fill;
+  std::vector<double> zbuffer;  // Visibility::zbuffer: the depth per pixel
 };
 
 struct RenderStats {
@@ -102,15 +103,18 @@ RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
 
 // The scene into the caller's `image`, which becomes the scene's size and is cleared to its
 // background, keeping its storage when the size is unchanged (Image::reset). With the same
-// `scratch` every time, a render after the first allocates nothing (the z-buffer's depth plane
-// excepted): what an animation, a viewer or a benchmark wants.
+// `scratch` every time, a render after the first allocates nothing: what an animation, a viewer
+// or a benchmark wants.
 template <class P, FillTracer Tracer = NoTracer>
 RenderStats render(Image<P>& image, const Scene& scene, const FillOptions& opt,
                    RenderScratch& scratch, Tracer& tracer) {
   image.reset(scene.width, scene.height, P::from(scene.background));
   if (opt.visibility == Visibility::zbuffer) {
+    scratch.zbuffer.assign(static_cast<std::size_t>(scene.width) * scene.height,
+                           std::numeric_limits<double>::infinity());
     // Only a pixel-level trace reads the per-pixel outcomes of the depth test.
-    ZBufferCanvas<P> canvas(image, kTraceHooks && Tracer::max_level >= TraceLevel::pixel);
+    ZBufferCanvas<P> canvas(image, scratch.zbuffer, {0, scene.height},
+                            kTraceHooks && Tracer::max_level >= TraceLevel::pixel);
     return render_zbuffer_into(canvas, scene, opt, scratch, tracer);
   }
   ImageCanvas<P> canvas(image);

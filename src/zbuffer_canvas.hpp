@@ -30,12 +30,28 @@ class ZBufferCanvas {
   // pixel-level trace asks; an untraced render leaves it off).
   ZBufferCanvas(Image<P>& image, bool log_tests = false)
       : image_(image),
-        depth_(static_cast<std::size_t>(image.width()) * image.height(),
-               std::numeric_limits<double>::infinity()),
+        own_(static_cast<std::size_t>(image.width()) * image.height(),
+             std::numeric_limits<double>::infinity()),
+        depth_(own_),
+        band_{0, image.height()},
         log_(log_tests ? static_cast<std::size_t>(image.width()) : 0) {}
+
+  // The rows `band` of `image`, with its depth buffer `depth` (width × height values, row-major,
+  // +infinity where nothing is drawn yet) kept by the caller: a render that keeps it allocates
+  // nothing, and bands on several threads share one buffer, each writing only its own rows
+  // (band_render.hpp).
+  ZBufferCanvas(Image<P>& image, std::span<double> depth, RowBand band, bool log_tests = false)
+      : image_(image),
+        depth_(depth),
+        band_(band),
+        log_(log_tests ? static_cast<std::size_t>(image.width()) : 0) {}
+
+  ZBufferCanvas(const ZBufferCanvas&) = delete;  // depth_ may point into own_
+  ZBufferCanvas& operator=(const ZBufferCanvas&) = delete;
 
   int width() const { return image_.width(); }
   int height() const { return image_.height(); }
+  RowBand rows() const { return band_; }
 
   // Sets up the depth plane of the next triangle from its vertices (pixels, snapped to `grid`
   // as the fill will snap them) and their depths.
@@ -77,7 +93,9 @@ class ZBufferCanvas {
   }
 
   Image<P>& image_;
-  std::vector<double> depth_;
+  std::vector<double> own_;  // the depth buffer, unless the caller keeps it
+  std::span<double> depth_;
+  RowBand band_;
   std::vector<DepthTest> log_;
   DepthPlane plane_;
 };

@@ -1,5 +1,6 @@
 // The parallel band render draws exactly what the single-threaded render draws: every band
-// receives the same writes in the same painter's order, so the images are equal bit for bit.
+// receives the same writes in the same painter's order (z-buffered: the same depth tests in scene
+// order), so the images are equal bit for bit.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -41,20 +42,21 @@ TEST_CASE("band render: bit-identical to the single-threaded render", "[band]") 
                           overlapping_scene(8, 64, 17, 300)};
   for (const Scene& scene : scenes)
     for (Shading shading : {Shading::flat, Shading::gouraud})
-      for (FillRule rule : {FillRule::top_left, FillRule::closed}) {
-        const FillOptions opt{.shading = shading, .fill_rule = rule};
-        RenderStats one, many;
-        const Bgr8Image expected = render<Bgr8>(scene, opt, &one);
-        for (int threads : {1, 2, 3, 7}) {
-          INFO(scene.faces.size() << " faces, " << threads << " threads, " << to_string(shading)
-                                  << ", " << to_string(rule));
-          CHECK(render_parallel<Bgr8>(scene, opt, threads, &many) == expected);
-          CHECK(many.pixels == one.pixels);
-          CHECK(many.triangles_filled == one.triangles_filled);
-          CHECK(many.triangles_skipped == one.triangles_skipped);
+      for (FillRule rule : {FillRule::top_left, FillRule::closed})
+        for (Visibility visibility : {Visibility::painter, Visibility::zbuffer}) {
+          const FillOptions opt{.shading = shading, .fill_rule = rule, .visibility = visibility};
+          RenderStats one, many;
+          const Bgr8Image expected = render<Bgr8>(scene, opt, &one);
+          for (int threads : {1, 2, 3, 7}) {
+            INFO(scene.faces.size() << " faces, " << threads << " threads, " << to_string(shading)
+                                    << ", " << to_string(rule) << ", " << to_string(visibility));
+            CHECK(render_parallel<Bgr8>(scene, opt, threads, &many) == expected);
+            CHECK(many.pixels == one.pixels);
+            CHECK(many.triangles_filled == one.triangles_filled);
+            CHECK(many.triangles_skipped == one.triangles_skipped);
+          }
+          CHECK(render_parallel<Rgb32f>(scene, opt, 2) == render<Rgb32f>(scene, opt));
         }
-        CHECK(render_parallel<Rgb32f>(scene, opt, 2) == render<Rgb32f>(scene, opt));
-      }
 }
 
 TEST_CASE("a render into the caller's image equals a fresh render, whatever the image held",

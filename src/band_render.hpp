@@ -14,7 +14,6 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <thread>
 #include <vector>
 
@@ -60,21 +59,15 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
                             int threads, RenderScratch& scratch) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   image.reset(scene.width, scene.height, P::from(scene.background));
-  face_depths(scene, scratch.depth);
   // The z-buffer draws in scene order, and a pixel's depth tests then come in that order in its
   // band as in the whole image: the same writes, so the same image, as with the painter's order.
   const bool zbuffer = opt.visibility == Visibility::zbuffer;
-  if (zbuffer) {
-    scratch.order.resize(scene.faces.size());
-    std::iota(scratch.order.begin(), scratch.order.end(), 0);
+  drawing_order(scene, opt.visibility, scratch);
+  if (zbuffer)
     scratch.zbuffer.assign(static_cast<std::size_t>(scene.width) * scene.height,
                            std::numeric_limits<double>::infinity());
-  } else {
-    painter_order(scratch.depth, scratch.order, scratch.sort);
-  }
   const std::vector<double>& depth = scratch.depth;
   const std::vector<int>& order = scratch.order;
-  const SubpixelGrid grid(opt.subpixel_bits);
   // Four bands per thread balance the load; bands of at least 16 rows keep the per-band set-up
   // (and the faces listed in two bands) small.
   const int bands = std::clamp(scene.height / 16, 1, 4 * threads);
@@ -106,20 +99,10 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
       };
       if (zbuffer) {
         ZBufferCanvas<P> canvas(image, scratch.zbuffer, rows);
-        for (int f : by_band[b]) {
-          const FaceCorners c = corners_of(scene, scene.faces[f]);
-          const std::array<double, 3> d = corner_depths(scene, scene.faces[f]);
-          if (grid.valid()) canvas.begin_triangle(c.points, d, grid);
-          count(f, fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f], d}, opt, fill,
-                                none));
-        }
+        fill_faces(canvas, scene, by_band[b], depth, opt, fill, none, count);
       } else {
         BandCanvas<P> canvas(image, rows);
-        for (int f : by_band[b]) {
-          const FaceCorners c = corners_of(scene, scene.faces[f]);
-          count(f, fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f]}, opt, fill,
-                                none));
-        }
+        fill_faces(canvas, scene, by_band[b], depth, opt, fill, none, count);
       }
       pixels[b] = band_pixels;
     }

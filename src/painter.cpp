@@ -3,6 +3,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <numeric>
 #include <utility>
 
 namespace scantrace {
@@ -70,6 +71,16 @@ void painter_order(std::span<const double> d, std::vector<int>& order, PainterSo
     }
     key.swap(key_tmp);
     order.swap(order_tmp);
+  }
+}
+
+void drawing_order(const Scene& scene, Visibility visibility, RenderScratch& scratch) {
+  face_depths(scene, scratch.depth);
+  if (visibility == Visibility::zbuffer) {
+    scratch.order.resize(scene.faces.size());
+    std::iota(scratch.order.begin(), scratch.order.end(), 0);
+  } else {
+    painter_order(scratch.depth, scratch.order, scratch.sort);
   }
 }
 

@@ -54,19 +54,49 @@ struct RenderStats {
   }
 };
 
+// The order a render draws in, into scratch.order, with the face depths into scratch.depth: the
+// painter's (farthest first), or for the z-buffer the scene's.
+void drawing_order(const Scene& scene, Visibility visibility, RenderScratch& scratch);
+
+// A canvas with a depth buffer (zbuffer_canvas.hpp): each face's depth plane is set up before it
+// is filled.
+template <class C>
+concept DepthBufferedCanvas = requires(C& c, std::span<const Vec2> v, std::span<const double> d,
+                                       const SubpixelGrid& g) {
+  c.begin_triangle(v, d, g);
+};
+
+// The faces listed in `faces`, in that order, filled onto `canvas`; `done(face, result)` sees
+// each result. The one face loop of every render: the whole image or a band of it
+// (band_render.hpp), painter's or z-buffered.
+template <Canvas C, FillTracer Tracer, class Done>
+void fill_faces(C& canvas, const Scene& scene, std::span<const int> faces,
+                std::span<const double> depth, const FillOptions& opt, FillScratch& scratch,
+                Tracer& tracer, Done&& done) {
+  const SubpixelGrid grid(opt.subpixel_bits);
+  for (int f : faces) {
+    const FaceCorners c = corners_of(scene, scene.faces[f]);
+    if constexpr (DepthBufferedCanvas<C>) {
+      const std::array<double, 3> d = corner_depths(scene, scene.faces[f]);
+      if (grid.valid()) canvas.begin_triangle(c.points, d, grid);
+      done(f, fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f], d}, opt, scratch,
+                           tracer));
+    } else {
+      done(f, fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f]}, opt, scratch,
+                           tracer));
+    }
+  }
+}
+
 // Fills the faces of `scene` onto `canvas` (which the caller has cleared to the background).
 // The scene must be valid (see validate()).
 template <Canvas C, FillTracer Tracer = NoTracer>
 RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt,
                         RenderScratch& scratch, Tracer& tracer) {
-  face_depths(scene, scratch.depth);
-  painter_order(scratch.depth, scratch.order, scratch.sort);
+  drawing_order(scene, Visibility::painter, scratch);
   RenderStats stats;
-  for (int f : scratch.order) {
-    const FaceCorners c = corners_of(scene, scene.faces[f]);
-    stats.count(fill_polygon(canvas, PolygonInput{c.points, c.colors, f, scratch.depth[f]}, opt,
-                             scratch.fill, tracer));
-  }
+  fill_faces(canvas, scene, scratch.order, scratch.depth, opt, scratch.fill, tracer,
+             [&](int, const FillResult& r) { stats.count(r); });
   return stats;
 }
 
@@ -81,16 +111,10 @@ RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt, T
 template <class P, FillTracer Tracer = NoTracer>
 RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
                                 const FillOptions& opt, RenderScratch& scratch, Tracer& tracer) {
-  face_depths(scene, scratch.depth);
-  const SubpixelGrid grid(opt.subpixel_bits);
+  drawing_order(scene, Visibility::zbuffer, scratch);
   RenderStats stats;
-  for (int f = 0; f < static_cast<int>(scene.faces.size()); ++f) {
-    const FaceCorners c = corners_of(scene, scene.faces[f]);
-    const std::array<double, 3> d = corner_depths(scene, scene.faces[f]);
-    if (grid.valid()) canvas.begin_triangle(c.points, d, grid);
-    stats.count(fill_polygon(canvas, PolygonInput{c.points, c.colors, f, scratch.depth[f], d}, opt,
-                             scratch.fill, tracer));
-  }
+  fill_faces(canvas, scene, scratch.order, scratch.depth, opt, scratch.fill, tracer,
+             [&](int, const FillResult& r) { stats.count(r); });
   return stats;
 }
 

@@ -13,9 +13,9 @@
 
 #include "cli/commands.hpp"
 #include "cli/stopwatch.hpp"
-#include "io/scene_json.hpp"
 #include "demo/demo_mesh.hpp"
 #include "demo/demo_scene.hpp"
+#include "io/scene_json.hpp"
 #include "src/painter.hpp"
 #include "src/shade_mesh.hpp"
 #include "trace/record.hpp"

@@ -29,6 +29,7 @@ struct RenderArgs {
   FillFlags fill;
   ModelFlags model;
   int threads = 1;
+  bool near_to_far = false;  // --occlusion
 };
 
 std::filesystem::path output_path(const RenderArgs& args) {
@@ -40,7 +41,8 @@ void run_render(const RenderArgs& args) {
   const std::filesystem::path out = output_path(args);
   const Stopwatch load_clock;
   const bool model = is_obj_file(args.scene);
-  const FillOptions options = args.model.apply(args.fill.options(), model);
+  FillOptions options = args.model.apply(args.fill.options(), model);
+  if (args.near_to_far) options.occlusion = Occlusion::near_to_far;
   Scene scene = model ? args.model.load_model(args.scene, options.shading)
                       : load_scene_file(args.scene, args.fill.clamp_colors);
   if (!model) apply_canvas_size(scene, args.model.size);  // --size overrides the file's canvas
@@ -74,6 +76,15 @@ void run_render(const RenderArgs& args) {
           ? " (zero area after snapping, no pixel centre inside, or off the canvas)"
           : "",
       stats.pixels, render_ms, load_ms, out.string());
+  if (stats.path == Occlusion::near_to_far)
+    spdlog::info(
+        "near to far: {} faces hidden ({} rejected before set-up), {} pixel writes clipped from "
+        "the spans of the rest; each pixel written once",
+        stats.triangles_hidden, stats.triangles_rejected, stats.pixels_clipped);
+  else if (options.visibility == Visibility::painter)
+    spdlog::info(
+        "far to near: every face painted over the farther ones, the course's algorithm "
+        "(--occlusion draws near to far and skips what is hidden: the same image)");
 }
 
 }  // namespace
@@ -102,6 +113,13 @@ Command add_render_command(CLI::App& app) {
                   "to the one-thread render")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();
+  cmd->add_flag("--occlusion", args->near_to_far,
+                "draw near to far: the painter's order reversed, each\n"
+                "pixel written once by the face the painter leaves on it,\n"
+                "faces whose box is already covered skipped before their\n"
+                "set-up, the background last. The same image, bit for bit;\n"
+                "faster when most faces are hidden (the course scene), slower\n"
+                "when few are (docs/performance.md), hence not the default");
   cmd->footer(
       "Examples:\n"
       "  scantrace render scene.json                     writes ./scene.png\n"

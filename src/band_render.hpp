@@ -23,10 +23,12 @@ namespace scantrace {
 
 namespace detail {
 
-// The bands each face may touch, from its vertices' rows widened by one pixel on each side: a
-// face can only own rows within [ceil(y_min), floor(y_max)] of its snapped vertices, and
-// snapping moves a vertex by less than a pixel. Faces that cannot touch a band are not even set
-// up by that band's thread.
+// The bands each face may touch: rows floor(y_min) … ceil(y_max) of its vertices. A face can only
+// own rows within [ceil(y_min'), floor(y_max')] of its snapped vertices, and snapping moves a
+// vertex by at most half a pixel (so ceil(y_min') ≥ floor(y_min)). These are the rows the
+// near-to-far render's box test reads too (OcclusionCanvas::begin_face), so every band that lists a
+// face holds part of that box. Faces that cannot touch a band are not even set up by that band's
+// thread.
 inline std::vector<std::vector<int>> faces_by_band(const Scene& scene,
                                                    const std::vector<int>& order, int band_height,
                                                    int bands) {
@@ -38,14 +40,60 @@ inline std::vector<std::vector<int>> faces_by_band(const Scene& scene,
       y_min = std::min(y_min, scene.vertices[face[k]].y);
       y_max = std::max(y_max, scene.vertices[face[k]].y);
     }
-    if (!(y_max >= -1.0) || !(y_min <= scene.height + 1.0)) continue;  // also NaN: never filled
+    // Rows floor(y_min) … ceil(y_max) miss the canvas; also NaN: never filled.
+    if (!(y_max > -1.0) || !(y_min < scene.height)) continue;
     // Clamped before converting: a vertex may lie a billion pixels away.
-    const double lo = std::max(y_min - 1.0, 0.0), hi = std::min(y_max + 1.0, scene.height - 1.0);
+    const double lo = std::max(y_min, 0.0), hi = std::min(y_max, scene.height - 1.0);
     const int first = std::min(static_cast<int>(lo) / band_height, bands - 1);
     const int last = std::min(static_cast<int>(std::ceil(hi)) / band_height, bands - 1);
     for (int b = first; b <= last; ++b) by_band[b].push_back(f);
   }
   return by_band;
+}
+
+// What one band saw of a face in the near-to-far render, as bits: a face is counted once, as the
+// whole-image render counts it. A band sees only its rows, and a face may be off a band that
+// lists it (the lists are conservative) or hidden in one band and seen in another: seen anywhere
+// makes it filled; culled, or skipped for a reason of its own (degenerate, too small), is the
+// same in every band that sets it up; hidden only counts when no band saw a pixel of it, and it
+// was rejected before set-up when no band set it up and found it hidden.
+enum NearToFarSeen : char {
+  seen_filled = 1,
+  seen_culled = 2,
+  seen_skipped = 4,    // a reason of the face's own
+  seen_clipped = 8,    // set up, every pixel covered
+  seen_rejected = 16,  // rejected before set-up
+  seen_off_band = 32,  // off the band's rows
+};
+
+inline char near_to_far_seen(const FillResult& r, long long visible) {
+  switch (r.skipped) {
+    case SkipReason::none:  // owning no pixel of the band is not owning none of the image
+      return visible > 0 ? seen_filled : r.pixels > 0 ? seen_clipped : seen_off_band;
+    case SkipReason::culled:
+      return seen_culled;
+    case SkipReason::hidden:
+      return seen_rejected;
+    case SkipReason::offscreen:
+      return seen_off_band;
+    default:
+      return seen_skipped;
+  }
+}
+
+inline void count_near_to_far(RenderStats& stats, char seen) {
+  if (seen & seen_filled) {
+    ++stats.triangles_filled;
+  } else if (seen & seen_culled) {
+    ++stats.triangles_culled;
+  } else if (seen & seen_skipped) {
+    ++stats.triangles_skipped;
+  } else if (seen & (seen_clipped | seen_rejected)) {
+    ++stats.triangles_hidden;
+    if (!(seen & seen_clipped)) ++stats.triangles_rejected;
+  } else {
+    ++stats.triangles_skipped;
+  }
 }
 
 }  // namespace detail
@@ -58,11 +106,20 @@ template <class P>
 RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptions& opt,
                             int threads, RenderScratch& scratch) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  image.reset(scene.width, scene.height, P::from(scene.background));
   // The z-buffer draws in scene order, and a pixel's depth tests then come in that order in its
   // band as in the whole image: the same writes, so the same image, as with the painter's order.
+  // Near to far, each band keeps its rows of one coverage mask, and a face meets in a band the
+  // coverage of the same nearer faces as in the whole image.
   const bool zbuffer = opt.visibility == Visibility::zbuffer;
-  drawing_order(scene, opt.visibility, scratch);
+  const bool near_to_far = !zbuffer && opt.occlusion == Occlusion::near_to_far;
+  if (near_to_far) {
+    image.reshape(scene.width, scene.height);
+    scratch.coverage.reset(scene.width, scene.height);
+  } else {
+    image.reset(scene.width, scene.height, P::from(scene.background));
+  }
+  drawing_order(scene, opt.visibility, scratch,
+                near_to_far ? Occlusion::near_to_far : Occlusion::far_to_near);
   if (zbuffer)
     scratch.zbuffer.assign(static_cast<std::size_t>(scene.width) * scene.height,
                            std::numeric_limits<double>::infinity());
@@ -78,7 +135,7 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
   // Per face: 1 when some band filled part of it, 2 when culled (every band that sets it up culls
   // it), 0 otherwise. Bands only ever store these values, so concurrent stores agree.
   std::vector<char> filled(scene.faces.size(), 0);
-  std::vector<long long> pixels(bands, 0);
+  std::vector<long long> pixels(bands, 0), clipped(bands, 0);
   std::atomic<int> next_band{0};
   const auto work = [&] {
     FillScratch fill;  // each thread its own
@@ -97,7 +154,19 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
           std::atomic_ref<char>(filled[f]).store(2, std::memory_order_relaxed);
         band_pixels += r.pixels;
       };
-      if (zbuffer) {
+      long long band_clipped = 0;
+      // Near to far, what each band saw of a face, as bits (detail::NearToFarSeen) joined with
+      // relaxed or-s: which band sees a face first is up to the threads.
+      const auto seen = [&](int f, const FillResult& r, long long visible) {
+        std::atomic_ref<char>(filled[f]).fetch_or(detail::near_to_far_seen(r, visible),
+                                                  std::memory_order_relaxed);
+        band_pixels += visible;
+        if (r.skipped == SkipReason::none) band_clipped += r.pixels - visible;
+      };
+      if (near_to_far) {
+        OcclusionCanvas<P> canvas(image, scratch.coverage, rows);
+        fill_near_to_far(canvas, scene, by_band[b], depth, opt, fill, seen);
+      } else if (zbuffer) {
         ZBufferCanvas<P> canvas(image, scratch.zbuffer, rows);
         fill_faces(canvas, scene, by_band[b], depth, opt, fill, none, count);
       } else {
@@ -105,6 +174,7 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
         fill_faces(canvas, scene, by_band[b], depth, opt, fill, none, count);
       }
       pixels[b] = band_pixels;
+      clipped[b] = band_clipped;
     }
   };
   {
@@ -113,11 +183,17 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
     work();
   }
   RenderStats stats;
-  for (char f : filled)
-    (f == 1   ? stats.triangles_filled
-     : f == 2 ? stats.triangles_culled
-              : stats.triangles_skipped) += 1;
+  if (near_to_far) {
+    stats.path = Occlusion::near_to_far;
+    for (char f : filled) detail::count_near_to_far(stats, f);
+  } else {
+    for (char f : filled)
+      (f == 1   ? stats.triangles_filled
+       : f == 2 ? stats.triangles_culled
+                : stats.triangles_skipped) += 1;
+  }
   for (long long p : pixels) stats.pixels += p;
+  for (long long p : clipped) stats.pixels_clipped += p;
   return stats;
 }
 

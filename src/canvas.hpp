@@ -74,6 +74,40 @@ void shade_pixels(P* row, int x_begin, int x_end, Color c, Color step) {
   }
 }
 
+// A span of shade_pixels written in parts, in increasing order: pixels [a, b) of the span
+// [x_begin, x_end), each with the same bits shade_pixels gives it. A span partly hidden by nearer
+// faces (occlusion_canvas.hpp) writes only its visible runs; the colour is still the one of the
+// whole span at that pixel, or the image would depend on what was hidden.
+template <class P>
+class ShadedSpan {
+ public:
+  ShadedSpan(int x_begin, int /*x_end*/, Color c, Color step) : x_(x_begin), c_(c), step_(step) {}
+  void write(P* row, int a, int b) {
+    // shade_pixels adds the step once per pixel; skipped pixels take the same additions, since
+    // c + k·step rounds differently from k additions.
+    for (; x_ < a; ++x_) c_ += step_;
+    for (; x_ < b; ++x_, c_ += step_) row[x_] = P::from(c_);
+  }
+
+ private:
+  int x_;
+  Color c_, step_;
+};
+
+template <>
+class ShadedSpan<Bgr8> {
+ public:
+  // The ramps of the whole span, begun later for each part: pixel k of the span is the same
+  // integer expression whichever part draws it.
+  ShadedSpan(int x_begin, int x_end, Color c, Color step)
+      : x_begin_(x_begin), ramps_(x_end - x_begin, c, step) {}
+  void write(Bgr8* row, int a, int b) { shade_ramps(row + a, b - a, ramps_.skip(a - x_begin_)); }
+
+ private:
+  int x_begin_;
+  ByteRamps ramps_;
+};
+
 // Adapts an Image<P> whose pixel type converts from Color (P::from).
 template <class P>
 class ImageCanvas {

@@ -33,6 +33,10 @@ const char* to_string(Visibility v) {
   return v == Visibility::zbuffer ? "zbuffer" : "painter";
 }
 
+const char* to_string(Occlusion o) {
+  return o == Occlusion::far_to_near ? "far-to-near" : "near-to-far";
+}
+
 bool parse_method(const char* name, Method& out) {
   for (Method m : {Method::exact, Method::float32, Method::double64, Method::halfspace})
     if (std::strcmp(name, to_string(m)) == 0) {

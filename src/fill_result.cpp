@@ -18,6 +18,8 @@ const char* to_string(SkipReason r) {
       return "offscreen";
     case SkipReason::culled:
       return "culled";
+    case SkipReason::hidden:
+      return "hidden";
   }
   return "unknown";
 }

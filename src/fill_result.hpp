@@ -12,6 +12,7 @@ enum class SkipReason {
   no_pixel_centre,   // its bounding box holds no pixel centre: too small to own a pixel
   offscreen,         // no row or no column of its bounding box is on the canvas
   culled,            // facing away (or towards) the viewer, as FillOptions::cull asks
+  hidden,            // its box is all covered by nearer faces (the near-to-far render, painter.hpp)
 };
 const char* to_string(SkipReason r);
 

@@ -98,12 +98,17 @@ class Image {
   // the first-touch page faults of a fresh one (for a 4096² 8-bit image those cost several times
   // the clear itself).
   void reset(int width, int height, P fill) {
+    reshape(width, height);
+    fill_all(fill);
+  }
+  // The same without the clear: the pixels are left as they are (or unwritten, when the storage
+  // is new), for a caller that writes every pixel itself (the near-to-far render, painter.hpp).
+  void reshape(int width, int height) {
     const std::size_t size = static_cast<std::size_t>(width) * height;
     if (size != size_ || !pixels_) pixels_ = allocate(size);
     width_ = width;
     height_ = height;
     size_ = size;
-    fill_all(fill);
   }
 
   // Sets every pixel to `value`. Clearing is part of every render, and a pixel of 3 bytes or 12

@@ -1,5 +1,6 @@
 #include "painter.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -74,13 +75,18 @@ void painter_order(std::span<const double> d, std::vector<int>& order, PainterSo
   }
 }
 
-void drawing_order(const Scene& scene, Visibility visibility, RenderScratch& scratch) {
+void drawing_order(const Scene& scene, Visibility visibility, RenderScratch& scratch,
+                   Occlusion occlusion) {
   face_depths(scene, scratch.depth);
   if (visibility == Visibility::zbuffer) {
     scratch.order.resize(scene.faces.size());
     std::iota(scratch.order.begin(), scratch.order.end(), 0);
   } else {
     painter_order(scratch.depth, scratch.order, scratch.sort);
+    // Reversed, not sorted nearest first: faces of equal depth must come in reverse scene order,
+    // so that the one the painter paints last (and keeps) is the one drawn first here.
+    if (occlusion == Occlusion::near_to_far)
+      std::reverse(scratch.order.begin(), scratch.order.end());
   }
 }
 

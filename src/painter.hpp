@@ -2,11 +2,15 @@
 // The course's render: every face of the scene filled in painter's order (docs/design.md §2), or,
 // when FillOptions::visibility asks for it, in face order through a depth buffer
 // (zbuffer_canvas.hpp).
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <vector>
 
+#include "coverage_mask.hpp"
+#include "occlusion_canvas.hpp"
 #include "scanline_fill.hpp"
 #include "scene.hpp"
 #include "zbuffer_canvas.hpp"
@@ -38,13 +42,30 @@ struct RenderScratch {
   PainterSortBuffers sort;
   FillScratch fill;
   std::vector<double> zbuffer;  // Visibility::zbuffer: the depth per pixel
+  CoverageMask coverage;        // Occlusion::near_to_far: the pixels already final
 };
 
 struct RenderStats {
-  long long triangles_filled = 0;
-  long long triangles_skipped = 0;  // for any reason but culling
+  long long triangles_filled = 0;   // near to far: those of which a pixel is seen
+  long long triangles_skipped = 0;  // for any reason but culling and being hidden (near to far:
+                                    // also a face that owns no pixel)
   long long triangles_culled = 0;   // FillOptions::cull
-  long long pixels = 0;             // written by the fill (z-buffer: before the depth test)
+  // Pixels written by the fill: far to near, every pixel of every face, so that a pixel painted
+  // over counts each time; near to far, each pixel once; z-buffer, before the depth test.
+  long long pixels = 0;
+
+  // Which way the painter's render ran (FillOptions::occlusion; a traced render is far to near).
+  Occlusion path = Occlusion::far_to_near;
+  // Near to far: faces of which no pixel is seen, all hidden by nearer faces; of them, those
+  // rejected from their bounding box before any set-up; and the pixels of the faces that were set
+  // up that nearer faces already covered, which the fill clipped away (the writes it saved, not
+  // counting the rejected faces, whose pixels are never counted). A face that owns no pixel (a
+  // sliver between pixel centres) is hidden when the box test rejects it and skipped when it is
+  // set up; the parallel render tests each band's part of the box, so with several threads the
+  // two counts may trade such faces (their sum, and every other count, is the same).
+  long long triangles_hidden = 0;
+  long long triangles_rejected = 0;
+  long long pixels_clipped = 0;
 
   void count(const FillResult& r) {
     (r.skipped == SkipReason::none     ? triangles_filled
@@ -52,11 +73,26 @@ struct RenderStats {
                                        : triangles_skipped) += 1;
     pixels += r.pixels;
   }
+  // A face of the near-to-far render, of which `visible` pixels were written.
+  void count(const FillResult& r, long long visible) {
+    if (r.skipped == SkipReason::hidden) {
+      ++triangles_hidden, ++triangles_rejected;
+    } else if (r.skipped == SkipReason::none) {
+      // A face that owns no pixel (a sliver between pixel centres) draws nothing: skipped.
+      ++(visible > 0 ? triangles_filled : r.pixels > 0 ? triangles_hidden : triangles_skipped);
+      pixels += visible;
+      pixels_clipped += r.pixels - visible;
+    } else {
+      count(r);
+    }
+  }
 };
 
 // The order a render draws in, into scratch.order, with the face depths into scratch.depth: the
-// painter's (farthest first), or for the z-buffer the scene's.
-void drawing_order(const Scene& scene, Visibility visibility, RenderScratch& scratch);
+// painter's (farthest first; nearest first, the same order reversed, for the near-to-far render),
+// or for the z-buffer the scene's.
+void drawing_order(const Scene& scene, Visibility visibility, RenderScratch& scratch,
+                   Occlusion occlusion = Occlusion::far_to_near);
 
 // A canvas with a depth buffer (zbuffer_canvas.hpp): each face's depth plane is set up before it
 // is filled.
@@ -75,6 +111,17 @@ void fill_faces(C& canvas, const Scene& scene, std::span<const int> faces,
                 Tracer& tracer, Done&& done) {
   const SubpixelGrid grid(opt.subpixel_bits);
   for (int f : faces) {
+    if constexpr (CoverageCanvas<C>) {
+      // Near to far: a face whose box nearer faces already cover is not set up at all.
+      const auto& face = scene.faces[f];
+      const Vec2 a = scene.vertices[face[0]], b = scene.vertices[face[1]],
+                 d = scene.vertices[face[2]];
+      if (!canvas.begin_face(std::min({a.x, b.x, d.x}), std::min({a.y, b.y, d.y}),
+                             std::max({a.x, b.x, d.x}), std::max({a.y, b.y, d.y}))) {
+        done(f, FillResult{SkipReason::hidden, 0, 0});
+        continue;
+      }
+    }
     const FaceCorners c = corners_of(scene, scene.faces[f]);
     if constexpr (DepthBufferedCanvas<C>) {
       const std::array<double, 3> d = corner_depths(scene, scene.faces[f]);
@@ -86,6 +133,22 @@ void fill_faces(C& canvas, const Scene& scene, std::span<const int> faces,
                            tracer));
     }
   }
+}
+
+// The faces listed in `faces` (nearest first) onto an OcclusionCanvas, then the background where
+// none drew; `done(face, result, visible)` sees each result with the pixels it wrote.
+template <class P, class Done>
+void fill_near_to_far(OcclusionCanvas<P>& canvas, const Scene& scene, std::span<const int> faces,
+                      std::span<const double> depth, const FillOptions& opt, FillScratch& scratch,
+                      Done&& done) {
+  NoTracer none;
+  long long seen = canvas.written();
+  fill_faces(canvas, scene, faces, depth, opt, scratch, none, [&](int f, const FillResult& r) {
+    const long long now = canvas.written();
+    done(f, r, now - seen);
+    seen = now;
+  });
+  canvas.finish(P::from(scene.background));
 }
 
 // Fills the faces of `scene` onto `canvas` (which the caller has cleared to the background).
@@ -132,6 +195,20 @@ RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
 template <class P, FillTracer Tracer = NoTracer>
 RenderStats render(Image<P>& image, const Scene& scene, const FillOptions& opt,
                    RenderScratch& scratch, Tracer& tracer) {
+  if constexpr (std::is_same_v<Tracer, NoTracer>) {
+    if (opt.visibility == Visibility::painter && opt.occlusion == Occlusion::near_to_far) {
+      image.reshape(scene.width, scene.height);  // every pixel is written: no clear
+      scratch.coverage.reset(scene.width, scene.height);
+      drawing_order(scene, Visibility::painter, scratch, Occlusion::near_to_far);
+      OcclusionCanvas<P> canvas(image, scratch.coverage, {0, scene.height});
+      RenderStats stats;
+      stats.path = Occlusion::near_to_far;
+      fill_near_to_far(
+          canvas, scene, scratch.order, scratch.depth, opt, scratch.fill,
+          [&](int, const FillResult& r, long long visible) { stats.count(r, visible); });
+      return stats;
+    }
+  }
   image.reset(scene.width, scene.height, P::from(scene.background));
   if (opt.visibility == Visibility::zbuffer) {
     scratch.zbuffer.assign(static_cast<std::size_t>(scene.width) * scene.height,

@@ -24,6 +24,7 @@
 #include "flat_color.hpp"
 #include "flat_span.hpp"
 #include "halfspace_fill.hpp"
+#include "occlusion_canvas.hpp"
 #include "row_rule.hpp"
 #include "row_trace.hpp"
 #include "scanline_sweep.hpp"
@@ -207,12 +208,24 @@ struct ConvexRows : RowRule<C, Tracer> {
         }
       }
       span.begin = span.end = flat;
-      if (has_span) {
-        const int yi = static_cast<int>(y), xb = static_cast<int>(span.x_begin),
-                  xe = static_cast<int>(span.x_end);
+      const int yi = static_cast<int>(y), xb = static_cast<int>(span.x_begin),
+                xe = static_cast<int>(span.x_end);
+      // The near-to-far render (occlusion_canvas.hpp): a Gouraud span all covered by nearer faces
+      // costs neither its colours nor a store (a flat one is clipped by claim() alone). It still
+      // counts in `written`, the pixels the face owns.
+      bool hidden = false;
+      if constexpr (CoverageCanvas<C>)
+        hidden = shade && has_span && canvas.clipping() && canvas.covered(yi, xb, xe);
+      if (has_span && !hidden) {
         const bool trace_pixels = trace.pixels(y);
         if (!shade) {
-          if constexpr (DirectCanvas<C>)
+          if constexpr (CoverageCanvas<C>) {
+            if (canvas.clipping())
+              canvas.claim(yi, xb, xe,
+                           [&](int a, int b) { flat_row.fill(row + a, row + b, flat_pixel); });
+            else
+              canvas.mark(yi, xb, xe), flat_row.fill(row + xb, row + xe, flat_pixel);
+          } else if constexpr (DirectCanvas<C>)
             flat_row.fill(row + xb, row + xe, flat_pixel);
           else
             canvas.fill_span(yi, xb, xe, flat);
@@ -224,7 +237,17 @@ struct ConvexRows : RowRule<C, Tracer> {
           // writes it in its pixel format's fastest way (whether the row is traced or not, so that
           // tracing never changes a pixel); the loop below then only narrates.
           constexpr bool kCanvasShades = DirectCanvas<C> && std::is_same_v<Stepper, ExactStepper>;
-          if constexpr (kCanvasShades) shade_pixels(row, xb, xe, shader.c, shader.step);
+          if constexpr (kCanvasShades && CoverageCanvas<C>) {
+            if (canvas.clipping()) {
+              ShadedSpan<DirectPixel<C>> part(xb, xe, shader.c, shader.step);
+              canvas.claim(yi, xb, xe, [&](int a, int b) { part.write(row, a, b); });
+            } else {
+              canvas.mark(yi, xb, xe);
+              shade_pixels(row, xb, xe, shader.c, shader.step);
+            }
+          } else if constexpr (kCanvasShades) {
+            shade_pixels(row, xb, xe, shader.c, shader.step);
+          }
           if (trace_row) span.begin = shader.color();
           if (!kCanvasShades || trace_row) {
             for (int x = xb; x < xe; ++x) {
@@ -236,8 +259,8 @@ struct ConvexRows : RowRule<C, Tracer> {
             }
           }
         }
-        written += span.size();
       }
+      if (has_span) written += span.size();
       span.has_colors = has_span && gouraud;
       trace.end_row(y, active, colors, grid, gouraud, flat, false, has_span, span, false);
       l.advance();

@@ -27,6 +27,9 @@ struct ByteRamp {
     const std::int64_t a = fixed(first), b = fixed(last);
     return {a, n > 1 ? (b - a) / (n - 1) : 0};
   }
+  // The same ramp begun k pixels later: pixel j of it is pixel k + j of this one, bit for bit
+  // (a span drawn in parts, canvas.hpp's ShadedSpan).
+  ByteRamp skip(int k) const { return {start + k * step, step}; }
   std::uint8_t at(int k) const {
     return static_cast<std::uint8_t>((start + k * step + (std::int64_t{1} << 31)) >> 32);
   }
@@ -55,14 +58,30 @@ std::span<const SimdKernel> shade_bytes_kernels();
 // From this length on a span goes to the SIMD kernel (measured: bench/, docs/performance.md).
 inline constexpr int kSimdSpan = 48;
 
-inline void shade_bytes(Bgr8* out, int n, Color c, Color step) {
-  if (n <= 0) return;
-  const Color last = c + step * static_cast<double>(n - 1);
-  const ByteRamp r = ByteRamp::between(c.r, last.r, n), g = ByteRamp::between(c.g, last.g, n),
-                 b = ByteRamp::between(c.b, last.b, n);
+// The three ramps of a span of n pixels coloured c, c + step, …
+struct ByteRamps {
+  ByteRamp r, g, b;
+  ByteRamps(int n, Color c, Color step) {
+    const Color last = c + step * static_cast<double>(n - 1);
+    r = ByteRamp::between(c.r, last.r, n);
+    g = ByteRamp::between(c.g, last.g, n);
+    b = ByteRamp::between(c.b, last.b, n);
+  }
+  ByteRamps(const ByteRamp& r, const ByteRamp& g, const ByteRamp& b) : r(r), g(g), b(b) {}
+  ByteRamps skip(int k) const { return {r.skip(k), g.skip(k), b.skip(k)}; }
+};
+
+// Pixels [0, n) of `out` from their ramps.
+inline void shade_ramps(Bgr8* out, int n, const ByteRamps& ramps) {
+  const auto& [r, g, b] = ramps;
   if (n >= kSimdSpan) [[unlikely]]
     return shade_bytes_simd(out, n, r, g, b);
   for (int k = 0; k < n; ++k) out[k] = {b.at(k), g.at(k), r.at(k)};
+}
+
+inline void shade_bytes(Bgr8* out, int n, Color c, Color step) {
+  if (n <= 0) return;
+  shade_ramps(out, n, ByteRamps(n, c, step));
 }
 
 }  // namespace scantrace

@@ -67,37 +67,50 @@ TEST_CASE("painter's order: farthest first, ties in face order", "[painter]") {
 }
 
 // Hand-computed coverage (top-left rule): blue owns x + y <= 7, red owns x, y >= 2 with
-// x + y <= 10. Where both do, the nearer red is drawn last and wins.
+// x + y <= 10. Where both do (x, y >= 2 with x + y <= 7: 10 pixels), the nearer red is drawn
+// last and wins; near to far it is drawn first, and blue's 10 pixels there are clipped away.
 TEST_CASE("render: the nearer triangle wins where they overlap", "[painter]") {
-  for (const scantrace::Shading shading : {scantrace::Shading::flat, scantrace::Shading::gouraud}) {
-    scantrace::RenderStats stats;
-    const scantrace::RgbImage img =
-        scantrace::render(overlapping_pair(), {shading, scantrace::FillRule::top_left}, &stats);
-    REQUIRE(img.width() == 10);
-    REQUIRE(img.height() == 10);
-    CHECK(is(img(3, 3), kRed));    // both
-    CHECK(is(img(5, 2), kRed));    // both: red's top edge is inclusive
-    CHECK(is(img(2, 5), kRed));    // both: red's left edge is inclusive
-    CHECK(is(img(2, 6), kRed));    // red only: blue's diagonal (a right edge) excludes it
-    CHECK(is(img(0, 0), kBlue));   // blue only
-    CHECK(is(img(1, 6), kBlue));   // blue only
-    CHECK(is(img(7, 0), kBlue));   // blue only
-    CHECK(is(img(8, 0), kWhite));  // on blue's right vertex: excluded
-    CHECK(is(img(5, 6), kWhite));  // on red's diagonal (a right edge)
-    CHECK(is(img(9, 9), kWhite));
-    int red = 0, blue = 0, white = 0;
-    for (int y = 0; y < 10; ++y)
-      for (int x = 0; x < 10; ++x) {
-        const bool in_blue = x + y <= 7, in_red = x >= 2 && y >= 2 && x + y <= 10;
-        red += in_red && is(img(x, y), kRed);
-        blue += in_blue && !in_red && is(img(x, y), kBlue);
-        white += !in_blue && !in_red && is(img(x, y), kWhite);
+  using scantrace::Occlusion;
+  for (const scantrace::Shading shading : {scantrace::Shading::flat, scantrace::Shading::gouraud})
+    for (const Occlusion occlusion : {Occlusion::far_to_near, Occlusion::near_to_far}) {
+      INFO(scantrace::to_string(occlusion));
+      scantrace::RenderStats stats;
+      const scantrace::RgbImage img = scantrace::render(
+          overlapping_pair(),
+          {.shading = shading, .fill_rule = scantrace::FillRule::top_left, .occlusion = occlusion},
+          &stats);
+      REQUIRE(img.width() == 10);
+      REQUIRE(img.height() == 10);
+      CHECK(is(img(3, 3), kRed));    // both
+      CHECK(is(img(5, 2), kRed));    // both: red's top edge is inclusive
+      CHECK(is(img(2, 5), kRed));    // both: red's left edge is inclusive
+      CHECK(is(img(2, 6), kRed));    // red only: blue's diagonal (a right edge) excludes it
+      CHECK(is(img(0, 0), kBlue));   // blue only
+      CHECK(is(img(1, 6), kBlue));   // blue only
+      CHECK(is(img(7, 0), kBlue));   // blue only
+      CHECK(is(img(8, 0), kWhite));  // on blue's right vertex: excluded
+      CHECK(is(img(5, 6), kWhite));  // on red's diagonal (a right edge)
+      CHECK(is(img(9, 9), kWhite));
+      int red = 0, blue = 0, white = 0;
+      for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 10; ++x) {
+          const bool in_blue = x + y <= 7, in_red = x >= 2 && y >= 2 && x + y <= 10;
+          red += in_red && is(img(x, y), kRed);
+          blue += in_blue && !in_red && is(img(x, y), kBlue);
+          white += !in_blue && !in_red && is(img(x, y), kWhite);
+        }
+      CHECK(red + blue + white == 100);
+      CHECK(stats.triangles_filled == 2);
+      CHECK(stats.triangles_skipped == 0);
+      CHECK(stats.path == occlusion);
+      if (occlusion == Occlusion::far_to_near) {
+        CHECK(stats.pixels == 36 + 28);
+      } else {
+        CHECK(stats.pixels == 36 + 28 - 10);
+        CHECK(stats.pixels_clipped == 10);
+        CHECK(stats.triangles_hidden == 0);
       }
-    CHECK(red + blue + white == 100);
-    CHECK(stats.triangles_filled == 2);
-    CHECK(stats.triangles_skipped == 0);
-    CHECK(stats.pixels == 36 + 28);
-  }
+    }
 }
 
 TEST_CASE("render: swapping the depths swaps the winner", "[painter]") {

@@ -1,0 +1,115 @@
+#pragma once
+// The canvas of the near-to-far render (painter.hpp): faces come nearest first, and each pixel
+// keeps the first colour written to it. That is the painter's image, without its overdraw: the
+// painter's order reversed (ties included, so equal depths keep the same winner) makes the face
+// that the painter would paint last the first one here.
+//
+// Spans are clipped against a CoverageMask before any pixel is computed: the fill asks whether a
+// span is all covered before it sets up the span's colours, and writes only the runs the mask
+// gives back. A face whose bounding box is all covered is rejected before its set-up, and one
+// whose box nothing covers is drawn without clipping (begin_face()).
+// The background is written last, only where no face drew (finish()).
+#include <algorithm>
+#include <cmath>
+#include <concepts>
+
+#include "canvas.hpp"
+#include "coverage_mask.hpp"
+
+namespace scantrace {
+
+// A canvas that writes a pixel only the first time: the fill clips its spans against it
+// (scanline_fill.hpp) and the render loop asks it to reject hidden faces (painter.hpp).
+template <class C>
+concept CoverageCanvas = DirectCanvas<C> && requires(C& c, int y, int x, double v) {
+  { c.covered(y, x, x) } -> std::same_as<bool>;
+  c.claim(y, x, x, [](int, int) {});
+  { c.begin_face(v, v, v, v) } -> std::same_as<bool>;
+  { c.clipping() } -> std::same_as<bool>;
+  c.mark(y, x, x);
+};
+
+// Rows `band` of an image and of one coverage mask of the image's size (all the rows, or a band
+// of the parallel render: bands own disjoint rows, so they share the mask without contention).
+template <class P>
+class OcclusionCanvas : public BandCanvas<P> {
+ public:
+  using BandCanvas<P>::row, BandCanvas<P>::convert, BandCanvas<P>::rows, BandCanvas<P>::width;
+
+  OcclusionCanvas(Image<P>& image, CoverageMask& mask, RowBand band)
+      : BandCanvas<P>(image, band), mask_(mask) {}
+
+  // Pixels [x_begin, x_end) of row y that nothing covers yet, as visit(a, b) per run.
+  template <class Visit>
+  [[gnu::always_inline]] void claim(int y, int x_begin, int x_end, Visit&& visit) {
+    written_ += mask_.claim(y, x_begin, x_end, visit);
+  }
+  bool covered(int y, int x_begin, int x_end) const { return mask_.covered(y, x_begin, x_end); }
+
+  // The fills that write through the canvas (other methods than the exact one, the half-space
+  // fill) are clipped here, pixel run by pixel run.
+  void fill_span(int y, int x_begin, int x_end, Color c) {
+    const P p = convert(c);
+    if (!clipping_) {
+      mark(y, x_begin, x_end);
+      return fill_pixels(row(y) + x_begin, row(y) + x_end, p);
+    }
+    claim(y, x_begin, x_end, [&](int a, int b) { fill_pixels(row(y) + a, row(y) + b, p); });
+  }
+  void set(int x, int y, Color c) {
+    if (!clipping_) {
+      mark(y, x, x + 1);
+      row(y)[x] = convert(c);
+      return;
+    }
+    claim(y, x, x + 1, [&](int, int) { row(y)[x] = convert(c); });
+  }
+
+  // Decides how the next face is drawn from its bounding box (vertex coordinates, before
+  // snapping): false when every pixel it could own in this band is covered already, and it is not
+  // drawn at all; otherwise, whether its spans must be clipped (clipping()): a face whose box
+  // nothing covers yet writes its spans whole and only marks them, which is all a scene that hides
+  // nothing pays for the bookkeeping. Snapping moves a vertex by at most half a pixel, and a face
+  // owns pixel centres inside its snapped box, so columns floor(x_min) … ceil(x_max) and rows
+  // floor(y_min) … ceil(y_max) hold all of them under either fill rule (and a convex face owns
+  // each pixel once, so its own spans never overlap). A box that misses the band is drawn, with
+  // clipping: the fill's own set-up then says why the face draws nothing.
+  bool begin_face(double x_min, double y_min, double x_max, double y_max) {
+    const RowBand band = rows();
+    clipping_ = true;
+    // Also a NaN box; the clamps keep a vertex far off the canvas from overflowing an int.
+    if (!(x_max > -1.0 && x_min < width() && y_max > band.begin - 1.0 && y_min < band.end))
+      return true;
+    const int x0 = static_cast<int>(std::floor(std::max(x_min, 0.0)));
+    const int x1 = static_cast<int>(std::ceil(std::min(x_max, width() - 1.0)));
+    const int y0 = static_cast<int>(std::floor(std::max(y_min, double(band.begin))));
+    const int y1 = static_cast<int>(std::ceil(std::min(y_max, band.end - 1.0)));
+    const CoverageMask::Cover c = mask_.cover(y0, y1 + 1, x0, x1 + 1);
+    clipping_ = c != CoverageMask::Cover::none;
+    return c != CoverageMask::Cover::all;
+  }
+  bool clipping() const { return clipping_; }
+  // Pixels [x_begin, x_end) of row y, written whole by a face that needs no clipping.
+  void mark(int y, int x_begin, int x_end) {
+    mask_.mark(y, x_begin, x_end);
+    written_ += x_end - x_begin;
+  }
+
+  // The background on every pixel of the band that no face drew.
+  void finish(P background) {
+    const RowBand band = rows();
+    for (int y = band.begin; y < band.end; ++y)
+      mask_.claim(y, 0, width(),
+                  [&](int a, int b) { fill_pixels(row(y) + a, row(y) + b, background); });
+  }
+
+  // Pixels written by faces so far (each once).
+  long long written() const { return written_; }
+
+ private:
+  CoverageMask& mask_;
+  long long written_ = 0;
+  bool clipping_ = true;  // the current face's (begin_face)
+};
+
+}  // namespace scantrace

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <concepts>
+#include <cstddef>
+#include <cstdint>
 
 #include "canvas.hpp"
 #include "coverage_mask.hpp"
@@ -21,12 +23,12 @@ namespace scantrace {
 // A canvas that writes a pixel only the first time: the fill clips its spans against it
 // (scanline_fill.hpp) and the render loop asks it to reject hidden faces (painter.hpp).
 template <class C>
-concept CoverageCanvas = DirectCanvas<C> && requires(C& c, int y, int x, double v) {
-  { c.covered(y, x, x) } -> std::same_as<bool>;
-  c.claim(y, x, x, [](int, int) {});
+concept CoverageCanvas = DirectCanvas<C> && requires(C& c, int y, long long n, double v) {
   { c.begin_face(v, v, v, v) } -> std::same_as<bool>;
   { c.clipping() } -> std::same_as<bool>;
-  c.mark(y, x, x);
+  { c.coverage_row(y) } -> std::same_as<std::uint64_t*>;  // CoverageMask::row
+  { c.coverage_stride() } -> std::same_as<std::ptrdiff_t>;
+  c.add_written(n);
 };
 
 // Rows `band` of an image and of one coverage mask of the image's size (all the rows, or a band
@@ -39,12 +41,17 @@ class OcclusionCanvas : public BandCanvas<P> {
   OcclusionCanvas(Image<P>& image, CoverageMask& mask, RowBand band)
       : BandCanvas<P>(image, band), mask_(mask) {}
 
+  // The sweep (scanline_fill.hpp) clips its spans against the mask's rows itself, with the
+  // CoverageMask's static functions, and reports the pixels it wrote.
+  std::uint64_t* coverage_row(int y) { return mask_.row(y); }
+  std::ptrdiff_t coverage_stride() const { return mask_.stride(); }
+  void add_written(long long pixels) { written_ += pixels; }
+
   // Pixels [x_begin, x_end) of row y that nothing covers yet, as visit(a, b) per run.
   template <class Visit>
-  [[gnu::always_inline]] void claim(int y, int x_begin, int x_end, Visit&& visit) {
+  void claim(int y, int x_begin, int x_end, Visit&& visit) {
     written_ += mask_.claim(y, x_begin, x_end, visit);
   }
-  bool covered(int y, int x_begin, int x_end) const { return mask_.covered(y, x_begin, x_end); }
 
   // The fills that write through the canvas (other methods than the exact one, the half-space
   // fill) are clipped here, pixel run by pixel run.
@@ -80,10 +87,16 @@ class OcclusionCanvas : public BandCanvas<P> {
     // Also a NaN box; the clamps keep a vertex far off the canvas from overflowing an int.
     if (!(x_max > -1.0 && x_min < width() && y_max > band.begin - 1.0 && y_min < band.end))
       return true;
-    const int x0 = static_cast<int>(std::floor(std::max(x_min, 0.0)));
-    const int x1 = static_cast<int>(std::ceil(std::min(x_max, width() - 1.0)));
-    const int y0 = static_cast<int>(std::floor(std::max(y_min, double(band.begin))));
-    const int y1 = static_cast<int>(std::ceil(std::min(y_max, band.end - 1.0)));
+    // floor and ceil by truncation (std::floor is a call on baseline x86-64): the lower ends are
+    // clamped to ≥ 0 and the upper ones lie above −1, where truncating is rounding toward zero.
+    const auto ceil = [](double v) {
+      const int t = static_cast<int>(v);
+      return t + (static_cast<double>(t) < v);
+    };
+    const int x0 = static_cast<int>(std::max(x_min, 0.0));
+    const int x1 = ceil(std::min(x_max, width() - 1.0));
+    const int y0 = static_cast<int>(std::max(y_min, double(band.begin)));
+    const int y1 = ceil(std::min(y_max, band.end - 1.0));
     const CoverageMask::Cover c = mask_.cover(y0, y1 + 1, x0, x1 + 1);
     clipping_ = c != CoverageMask::Cover::none;
     return c != CoverageMask::Cover::all;

@@ -173,6 +173,15 @@ struct ConvexRows : RowRule<C, Tracer> {
     [[maybe_unused]] std::ptrdiff_t row_stride = 0;
     if constexpr (DirectCanvas<C>)
       row = canvas.row(static_cast<int>(y)), row_stride = canvas.row_stride();
+    // Near to far (occlusion_canvas.hpp): the coverage mask's row, stepped like the image's, and
+    // whether this face's spans need clipping at all (its box may be all uncovered).
+    [[maybe_unused]] std::uint64_t* cover = nullptr;
+    [[maybe_unused]] std::ptrdiff_t cover_stride = 0;
+    [[maybe_unused]] bool clip = false;
+    [[maybe_unused]] i64 claimed = 0;
+    if constexpr (CoverageCanvas<C>)
+      cover = canvas.coverage_row(static_cast<int>(y)), cover_stride = canvas.coverage_stride(),
+      clip = canvas.clipping();
     const std::size_t n_active = active.size();
     const Edge* left = n_active >= 2 ? &active.front().edge : nullptr;
     const Edge* right = n_active >= 2 ? &active.back().edge : nullptr;
@@ -215,16 +224,20 @@ struct ConvexRows : RowRule<C, Tracer> {
       // counts in `written`, the pixels the face owns.
       bool hidden = false;
       if constexpr (CoverageCanvas<C>)
-        hidden = shade && has_span && canvas.clipping() && canvas.covered(yi, xb, xe);
+        hidden = shade && has_span && clip && CoverageMask::covered(cover, xb, xe);
       if (has_span && !hidden) {
         const bool trace_pixels = trace.pixels(y);
         if (!shade) {
           if constexpr (CoverageCanvas<C>) {
-            if (canvas.clipping())
-              canvas.claim(yi, xb, xe,
-                           [&](int a, int b) { flat_row.fill(row + a, row + b, flat_pixel); });
-            else
-              canvas.mark(yi, xb, xe), flat_row.fill(row + xb, row + xe, flat_pixel);
+            if (clip) {
+              claimed += CoverageMask::claim(cover, xb, xe, [&](int a, int b) {
+                flat_row.fill(row + a, row + b, flat_pixel);
+              });
+            } else {
+              CoverageMask::mark(cover, xb, xe);
+              claimed += xe - xb;
+              flat_row.fill(row + xb, row + xe, flat_pixel);
+            }
           } else if constexpr (DirectCanvas<C>)
             flat_row.fill(row + xb, row + xe, flat_pixel);
           else
@@ -238,11 +251,13 @@ struct ConvexRows : RowRule<C, Tracer> {
           // tracing never changes a pixel); the loop below then only narrates.
           constexpr bool kCanvasShades = DirectCanvas<C> && std::is_same_v<Stepper, ExactStepper>;
           if constexpr (kCanvasShades && CoverageCanvas<C>) {
-            if (canvas.clipping()) {
+            if (clip) {
               ShadedSpan<DirectPixel<C>> part(xb, xe, shader.c, shader.step);
-              canvas.claim(yi, xb, xe, [&](int a, int b) { part.write(row, a, b); });
+              claimed +=
+                  CoverageMask::claim(cover, xb, xe, [&](int a, int b) { part.write(row, a, b); });
             } else {
-              canvas.mark(yi, xb, xe);
+              CoverageMask::mark(cover, xb, xe);
+              claimed += xe - xb;
               shade_pixels(row, xb, xe, shader.c, shader.step);
             }
           } else if constexpr (kCanvasShades) {
@@ -269,10 +284,12 @@ struct ConvexRows : RowRule<C, Tracer> {
       if (n_active == 1) active[0].at.advance();
       if (y == run_last) break;
       if constexpr (DirectCanvas<C>) row += row_stride;
+      if constexpr (CoverageCanvas<C>) cover += cover_stride;
       trace.begin_row(y + 1);
     }
     if (n_active >= 2) active.front().at = l, active.back().at = r;
     pixels += written;
+    if constexpr (CoverageCanvas<C>) canvas.add_written(claimed);
   }
 };
 

@@ -241,3 +241,62 @@ TEST_CASE("near to far: hidden faces and clipped pixels, counted from the exact 
     }
   }
 }
+
+TEST_CASE("near to far: the box test rejects a face only when every pixel it owns is covered",
+          "[occlusion]") {
+  // Vertices on, just below and just above whole pixels, where snapping moves a vertex onto the
+  // next pixel centre: a face may then own the column floor(x_min) or the row ceil(y_max), the
+  // edges of the box the test reads. For each face, every pixel of a 16² canvas is covered but one
+  // of the pixels the face owns (by the exact reference): the test must not reject it. With all
+  // covered, it must.
+  SplitMix64 rng(1919);
+  const double nudges[] = {0.0, 1e-3, -1e-3, 1.0 / 1024, -1.0 / 1024, 0.5, 0.3};
+  const auto coordinate = [&] {
+    return std::floor(rng.uniform(2, 13)) + nudges[static_cast<int>(rng.uniform(0, 7 - 1e-9))];
+  };
+  Bgr8Image image;
+  image.reshape(16, 16);
+  CoverageMask mask;
+  int faces_checked = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const std::array<Vec2, 3> v{Vec2{coordinate(), coordinate()}, Vec2{coordinate(), coordinate()},
+                                Vec2{coordinate(), coordinate()}};
+    for (FillRule rule : {FillRule::top_left, FillRule::closed}) {
+      const sttest::RefPolygon p(v, kDefaultSubpixelBits);
+      if (p.degenerate()) continue;
+      std::vector<std::pair<int, int>> owned;
+      for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+          if (p.covers(x, y, rule)) owned.push_back({x, y});
+      const double x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
+      const double y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
+      for (const auto& [ux, uy] : owned) {
+        INFO("(" << v[0].x << ", " << v[0].y << ") (" << v[1].x << ", " << v[1].y << ") (" << v[2].x
+                 << ", " << v[2].y << "), " << to_string(rule) << ", pixel " << ux << ", " << uy
+                 << " left uncovered");
+        mask.reset(16, 16);
+        for (int y = 0; y < 16; ++y)
+          if (y == uy) {
+            mask.mark(y, 0, ux);
+            mask.mark(y, ux + 1, 16);
+          } else {
+            mask.mark(y, 0, 16);
+          }
+        OcclusionCanvas<Bgr8> canvas(image, mask, {0, 16});
+        CHECK(canvas.begin_face(x0, y0, x1, y1));
+        CHECK(canvas.clipping());
+        ++faces_checked;
+      }
+      mask.reset(16, 16);
+      for (int y = 0; y < 16; ++y) mask.mark(y, 0, 16);
+      OcclusionCanvas<Bgr8> covered(image, mask, {0, 16});
+      CHECK_FALSE(covered.begin_face(x0, y0, x1, y1));
+      // And on an empty canvas, the face is drawn without clipping.
+      mask.reset(16, 16);
+      OcclusionCanvas<Bgr8> empty(image, mask, {0, 16});
+      CHECK(empty.begin_face(x0, y0, x1, y1));
+      CHECK_FALSE(empty.clipping());
+    }
+  }
+  CHECK(faces_checked > 10000);
+}

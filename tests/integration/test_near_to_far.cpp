@@ -173,6 +173,21 @@ TEST_CASE("near to far: the painter's image, bit for bit", "[occlusion]") {
           }
 }
 
+TEST_CASE("near to far: the course scene's image, bit for bit", "[occlusion][course]") {
+  if (!std::filesystem::exists(kCourseScene)) {
+    WARN("skipped: " << kCourseScene << " is not present");
+    return;
+  }
+  const Scene scene = load_scene(kCourseScene);
+  for (Shading shading : {Shading::flat, Shading::gouraud})
+    for (FillRule rule : {FillRule::top_left, FillRule::closed}) {
+      INFO(to_string(shading) << ", " << to_string(rule));
+      const FillOptions opt{.shading = shading, .fill_rule = rule};
+      check_identical<Bgr8>(scene, opt);
+      check_identical<Rgb32f>(scene, opt);
+    }
+}
+
 TEST_CASE("near to far: ties in depth keep the painter's winner", "[occlusion]") {
   // The painter paints faces of equal depth in scene order, so the last of them stays on top;
   // near to far must draw that one first: the painter's order reversed, not a stable sort nearest

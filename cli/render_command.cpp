@@ -110,7 +110,8 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads,
                   "threads drawing horizontal bands of the image (0: one per\n"
                   "core), painter's or z-buffered; the image is bit-identical\n"
-                  "to the one-thread render")
+                  "to the one-thread render (--method float with Gouraud\n"
+                  "runs on one thread: its colours accumulate down each edge)")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();
   cmd->add_flag("--occlusion", args->near_to_far,

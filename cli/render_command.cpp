@@ -64,9 +64,20 @@ void run_render(const RenderArgs& args) {
   if (out.extension() != ".png" && out.extension() != ".PNG")
     spdlog::warn("warning: {}: the name does not end in .png; writing PNG data anyway",
                  out.string());
+  // One line, as every command's report: near to far adds what it skipped.
+  const std::string skipped_hidden =
+      stats.path == Occlusion::near_to_far
+          ? fmt::format(", {} hidden under nearer faces ({} rejected before set-up)",
+                        stats.triangles_hidden, stats.triangles_rejected)
+          : "";
+  const std::string writes =
+      stats.path == Occlusion::near_to_far
+          ? fmt::format(" written once each, near to far ({} pixel writes clipped)",
+                        stats.pixels_clipped)
+          : "";
   spdlog::info(
-      "rendered {} ({}x{}, {}, {}, {}, {}, cull {}): {} faces drawn, {} culled, {} skipped{}, {} "
-      "pixels in {:.2f} ms (load {:.1f} ms) -> {}",
+      "rendered {} ({}x{}, {}, {}, {}, {}, cull {}): {} faces drawn, {} culled, {} skipped{}{}, {} "
+      "pixels{} in {:.2f} ms (load {:.1f} ms) -> {}",
       args.scene, scene.width, scene.height, to_string(options.shading),
       to_string(options.fill_rule), to_string(options.method), to_string(options.visibility),
       to_string(options.cull), stats.triangles_filled, stats.triangles_culled,
@@ -75,16 +86,7 @@ void run_render(const RenderArgs& args) {
       stats.triangles_skipped > 0
           ? " (zero area after snapping, no pixel centre inside, or off the canvas)"
           : "",
-      stats.pixels, render_ms, load_ms, out.string());
-  if (stats.path == Occlusion::near_to_far)
-    spdlog::info(
-        "near to far: {} faces hidden ({} rejected before set-up), {} pixel writes clipped from "
-        "the spans of the rest; each pixel written once",
-        stats.triangles_hidden, stats.triangles_rejected, stats.pixels_clipped);
-  else if (options.visibility == Visibility::painter)
-    spdlog::info(
-        "far to near: every face painted over the farther ones, the course's algorithm "
-        "(--occlusion draws near to far and skips what is hidden: the same image)");
+      skipped_hidden, stats.pixels, writes, render_ms, load_ms, out.string());
 }
 
 }  // namespace

@@ -97,6 +97,17 @@ class ActiveEdgeList {
     return std::min(last, y_last);
   }
 
+  // Holds just the two edges `left` and `right`, in that order, already started at the current
+  // row: the triangle sweep (triangle_sweep.hpp) knows which of its edges is on which side without
+  // comparing crossings, and has no edge table to take them from.
+  void hold(const Edge& left, const Stepper& l, const Edge& right, const Stepper& r) {
+    edges_ = nullptr;
+    next_ = 0;
+    active_.resize(2);
+    active_[0] = {left, l};
+    active_[1] = {right, r};
+  }
+
   // Restores x order after edges crossed one another (general polygons). The list is nearly
   // sorted, so an insertion sort is linear in practice.
   void sort_by_x() {

@@ -7,6 +7,9 @@
 //   2. build the edge table: non-horizontal edges sorted by their first scanline;
 //   3. sweep the scanlines that are on the canvas (scanline_sweep.hpp) with the convex rule: a
 //      convex polygon meets a row in one span, from the leftmost active crossing to the rightmost.
+// An untraced triangle of the exact method under the top-left rule skips the table: its two runs
+// and their edges follow from its vertices sorted by y (triangle_sweep.hpp), and the same convex
+// rule draws them, bit for bit as the general sweep would.
 #include <algorithm>
 #include <array>
 #include <optional>
@@ -30,6 +33,7 @@
 #include "scanline_sweep.hpp"
 #include "span.hpp"
 #include "tracer.hpp"
+#include "triangle_sweep.hpp"
 #include "vector_interp.hpp"
 
 namespace scantrace {
@@ -349,7 +353,11 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   if (opt.method == Method::halfspace) {
     result = fill_halfspace(canvas, pts, in.colors, opt, flat);
   } else {
-    s.table.build(pts, grid, opt.fill_rule);
+    // An untraced triangle of the exact method under the top-left rule needs no edge table
+    // (triangle_sweep.hpp); everything else is swept from its table.
+    const bool triangle = pts.size() == 3 && opt.method == Method::exact &&
+                          opt.fill_rule == FillRule::top_left && !traced;
+    if (!triangle) s.table.build(pts, grid, opt.fill_rule);
     if constexpr (kTriangleLevel)
       if (traced) tracer.edge_table(EdgeTableView{in.face, &s.table, pts, grid});
     const bool uniform =
@@ -362,6 +370,11 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
           {canvas, in.colors, grid, opt, fill_color, trace}, uniform, s.flat_row};
       if constexpr (DirectCanvas<C>)
         if (opt.shading == Shading::flat || uniform) rule.flat_pixel = C::convert(fill_color);
+      if constexpr (std::is_same_v<Stepper, ExactStepper>)
+        if (triangle) {
+          sweep_triangle(pts, canvas_rows(canvas), grid, in.colors, s.active_exact, rule);
+          return rule.result();
+        }
       sweep_scanlines(s.table, canvas_rows(canvas), grid, in.colors, s.active<Stepper>(), rule);
       return rule.result();
     });

@@ -432,9 +432,10 @@ void run_bench(const BenchArgs& args) {
         }
   }
 
-  // Skipping what the scene hides: the painter's render near to far (the default) against far to
-  // near, on scenes that hide most of their faces and on scenes that hide none (where only the
-  // bookkeeping is left to measure).
+  // Skipping what the scene hides: the painter's render near to far against far to near (the
+  // default), on scenes that hide most of their faces and on scenes that hide none (where only
+  // the bookkeeping is left to measure); and the z-buffered render near to far against its scene
+  // order (8-bit image only).
   {
     std::vector<Workload> scenes;
     if (course) scenes.push_back(workloads.front());
@@ -452,9 +453,12 @@ void run_bench(const BenchArgs& args) {
         "|---|---|---|---:|---:|---:|---:|---:|---:|---|\n");
     for (const Workload& w : scenes)
       for (Shading sh : {Shading::flat, Shading::gouraud})
-        for (bool bytes : {true, false}) {
-          const FillOptions near{.shading = sh, .occlusion = Occlusion::near_to_far},
-              far{.shading = sh, .occlusion = Occlusion::far_to_near};
+        for (int image : {0, 1, 2}) {  // 8-bit, float, 8-bit z-buffered
+          const bool bytes = image != 1, zbuffer = image == 2;
+          const Visibility vis = zbuffer ? Visibility::zbuffer : Visibility::painter;
+          const FillOptions near{
+              .shading = sh, .visibility = vis, .occlusion = Occlusion::near_to_far},
+              far{.shading = sh, .visibility = vis, .occlusion = Occlusion::far_to_near};
           std::vector<Job> jobs;
           if (bytes)
             jobs = {warm_render<Bgr8>("far", w.scene, far),
@@ -470,10 +474,15 @@ void run_bench(const BenchArgs& args) {
           const double share =
               st.triangles_hidden ? double(st.triangles_rejected) / st.triangles_hidden : 0;
           std::printf("| %s | %s | %s | %.3f | %.3f | %.3f | %lld | %lld (%.0f %%) | %lld | %s |\n",
-                      w.name.c_str(), to_string(sh), bytes ? "8-bit" : "float", t[0] * 1e3,
-                      t[1] * 1e3, t[1] / t[0], st.triangles_hidden, st.triangles_rejected,
-                      100 * share, st.pixels_clipped, same ? "yes" : "**no**");
+                      w.name.c_str(), to_string(sh),
+                      zbuffer ? "8-bit, z-buffer (scene order ÷ near to far)"
+                      : bytes ? "8-bit"
+                              : "float",
+                      t[0] * 1e3, t[1] * 1e3, t[1] / t[0], st.triangles_hidden,
+                      st.triangles_rejected, 100 * share, st.pixels_clipped,
+                      same ? "yes" : "**no**");
           const bool hides = w.name.find("nothing hidden") == std::string::npos;
+          if (zbuffer) continue;  // the targets are the painter's
           if (w.name == "course scene" && sh == Shading::flat && bytes) {
             targets.push_back(
                 {"course scene, flat: near to far / far to near", t[1] / t[0], "≤ 0.5", false});

@@ -70,8 +70,9 @@ void run_render(const RenderArgs& args) {
           ? fmt::format(", {} hidden under nearer faces ({} rejected before set-up)",
                         stats.triangles_hidden, stats.triangles_rejected)
           : "";
+  // (Z-buffered, pixels are counted before their depth test: not each written once.)
   const std::string writes =
-      stats.path == Occlusion::near_to_far
+      stats.path == Occlusion::near_to_far && options.visibility == Visibility::painter
           ? fmt::format(" written once each, near to far ({} pixel writes clipped)",
                         stats.pixels_clipped)
           : "";
@@ -112,17 +113,22 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads,
                   "threads drawing horizontal bands of the image (0: one per\n"
                   "core), painter's or z-buffered; the image is bit-identical\n"
-                  "to the one-thread render (--method float with Gouraud\n"
-                  "runs on one thread: its colours accumulate down each edge)")
+                  "to the one-thread render (--method float runs on one\n"
+                  "thread: its x and colours accumulate down each edge)")
       ->check(CLI::Range(0, 256))
       ->capture_default_str();
   cmd->add_flag("--occlusion", args->near_to_far,
                 "draw near to far: the painter's order reversed, each\n"
                 "pixel written once by the face the painter leaves on it,\n"
                 "faces whose box is already covered skipped before their\n"
-                "set-up, the background last. The same image, bit for bit;\n"
-                "faster when most faces are hidden (the course scene), slower\n"
-                "when few are (docs/performance.md), hence not the default");
+                "set-up, the background last. With --depth zbuffer:\n"
+                "faces in that order, an exact depth tie still going to the\n"
+                "face first in the scene, faces whose box is all nearer\n"
+                "skipped before their set-up (one thread; bands keep scene\n"
+                "order). The same image, bit for bit; faster when most faces\n"
+                "are hidden (the course scene), slower when few are, much\n"
+                "slower z-buffered on large scenes (docs/performance.md),\n"
+                "hence not the default");
   cmd->footer(
       "Examples:\n"
       "  scantrace render scene.json                     writes ./scene.png\n"

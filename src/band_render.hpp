@@ -106,12 +106,12 @@ template <class P>
 RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptions& opt,
                             int threads, RenderScratch& scratch) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  // The float method's Gouraud colours are accumulated down each edge from the row where its run
-  // begins, and a band begins runs at its own first row: in bands they would differ from one
-  // thread's in the last bits (10 pixels of a 300×211 test scene). That render stays on one
+  // The float method accumulates down each edge from the row where its run begins, x and the
+  // Gouraud colours alike, and a band begins runs at its own first row: in bands they would differ
+  // from one thread's in the last bits (Gouraud colours: 10 pixels of a 300×211 test scene; an
+  // edge's x: 1 pixel of the z-buffered render of two such scenes). That method stays on one
   // thread, so that every render here is the single-threaded image.
-  if (opt.method == Method::float32 && opt.shading == Shading::gouraud)
-    return render(image, scene, opt, scratch);
+  if (opt.method == Method::float32) return render(image, scene, opt, scratch);
   // The z-buffer draws in scene order, and a pixel's depth tests then come in that order in its
   // band as in the whole image: the same writes, so the same image, as with the painter's order.
   // Near to far, each band keeps its rows of one coverage mask, and a face meets in a band the

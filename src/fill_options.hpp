@@ -46,7 +46,10 @@ enum class Visibility { painter, zbuffer };
 // rejected before their set-up, the background written last (occlusion_canvas.hpp): the same
 // image, bit for bit, without the overdraw; far_to_near: the course's algorithm as it is taught,
 // every face painted over the farther ones. A traced render is always far_to_near: the trace
-// shows the algorithm the course asks students to understand.
+// shows the algorithm the course asks students to understand. The z-buffered render reads it too
+// (one thread, untraced): near_to_far draws its faces in that same order, an exact depth tie still
+// going to the face first in the scene, and rejects before set-up a face whose box a coarse view
+// of the depth buffer shows all nearer (depth_tiles.hpp); far_to_near is its scene order.
 enum class Occlusion { near_to_far, far_to_near };
 
 struct FillOptions {

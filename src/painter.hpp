@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "coverage_mask.hpp"
+#include "depth_tiles.hpp"
 #include "occlusion_canvas.hpp"
 #include "scanline_fill.hpp"
 #include "scene.hpp"
@@ -43,6 +44,9 @@ struct RenderScratch {
   FillScratch fill;
   std::vector<double> zbuffer;  // Visibility::zbuffer: the depth per pixel
   CoverageMask coverage;        // Occlusion::near_to_far: the pixels already final
+  // The z-buffer near to far: which face each pixel's depth came from, and the tiles' bounds.
+  std::vector<int> owner;
+  DepthTiles depth_tiles;
 };
 
 struct RenderStats {
@@ -68,6 +72,10 @@ struct RenderStats {
   long long pixels_clipped = 0;
 
   void count(const FillResult& r) {
+    if (r.skipped == SkipReason::hidden) {  // the z-buffer near to far: rejected before set-up
+      ++triangles_hidden, ++triangles_rejected;
+      return;
+    }
     (r.skipped == SkipReason::none     ? triangles_filled
      : r.skipped == SkipReason::culled ? triangles_culled
                                        : triangles_skipped) += 1;
@@ -126,6 +134,13 @@ void fill_faces(C& canvas, const Scene& scene, std::span<const int> faces,
     if constexpr (DepthBufferedCanvas<C>) {
       const std::array<double, 3> d = corner_depths(scene, scene.faces[f]);
       if (grid.valid()) canvas.begin_triangle(c.points, d, grid);
+      // Faces in any order (near to far): one that cannot pass a depth test is not set up.
+      const auto& p = c.points;
+      if (!canvas.admit(f, std::min({p[0].x, p[1].x, p[2].x}), std::min({p[0].y, p[1].y, p[2].y}),
+                        std::max({p[0].x, p[1].x, p[2].x}), std::max({p[0].y, p[1].y, p[2].y}))) {
+        done(f, FillResult{SkipReason::hidden, 0, 0});
+        continue;
+      }
       done(f, fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f], d}, opt, scratch,
                            tracer));
     } else {
@@ -188,6 +203,28 @@ RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
   return render_zbuffer_into(canvas, scene, opt, scratch, tracer);
 }
 
+// The z-buffered render of `scene` into `image` (cleared to the background), the faces nearest
+// first in the painter's order reversed: most pixels then get their final depth from the first
+// face that reaches them, and a face whose box the tiles show all nearer is rejected before its
+// set-up. The image is the scene-order render's bit for bit: a pixel's depth is the same minimum,
+// and an exact tie goes to the face first in the scene (ZBufferCanvas's owner buffer).
+template <class P>
+RenderStats render_zbuffer_near_to_far(Image<P>& image, const Scene& scene, const FillOptions& opt,
+                                       RenderScratch& scratch) {
+  const auto pixels = static_cast<std::size_t>(scene.width) * scene.height;
+  scratch.zbuffer.assign(pixels, std::numeric_limits<double>::infinity());
+  scratch.owner.assign(pixels, -1);
+  scratch.depth_tiles.reset(scene.width, scene.height);
+  drawing_order(scene, Visibility::painter, scratch, Occlusion::near_to_far);
+  ZBufferCanvas<P> canvas(image, scratch.zbuffer, scratch.owner, scratch.depth_tiles);
+  RenderStats stats;
+  stats.path = Occlusion::near_to_far;
+  NoTracer none;
+  fill_faces(canvas, scene, scratch.order, scratch.depth, opt, scratch.fill, none,
+             [&](int, const FillResult& r) { stats.count(r); });
+  return stats;
+}
+
 // The scene into the caller's `image`, which becomes the scene's size and is cleared to its
 // background, keeping its storage when the size is unchanged (Image::reset). With the same
 // `scratch` every time, a render after the first allocates nothing: what an animation, a viewer
@@ -210,6 +247,10 @@ RenderStats render(Image<P>& image, const Scene& scene, const FillOptions& opt,
     }
   }
   image.reset(scene.width, scene.height, P::from(scene.background));
+  if constexpr (std::is_same_v<Tracer, NoTracer>) {
+    if (opt.visibility == Visibility::zbuffer && opt.occlusion == Occlusion::near_to_far)
+      return render_zbuffer_near_to_far(image, scene, opt, scratch);
+  }
   if (opt.visibility == Visibility::zbuffer) {
     scratch.zbuffer.assign(static_cast<std::size_t>(scene.width) * scene.height,
                            std::numeric_limits<double>::infinity());

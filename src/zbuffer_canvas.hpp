@@ -11,6 +11,7 @@
 // keeps the pixel of the face drawn first, so results do not depend on floating-point ties.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <span>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "canvas.hpp"
 #include "depth_plane.hpp"
 #include "depth_test.hpp"
+#include "depth_tiles.hpp"
 #include "fixed_point.hpp"
 #include "vec2.hpp"
 
@@ -46,6 +48,13 @@ class ZBufferCanvas {
         band_(band),
         log_(log_tests ? static_cast<std::size_t>(image.width()) : 0) {}
 
+  // Faces in any order (the near-to-far z-buffered render, painter.hpp): `owner` (width × height,
+  // −1 where nothing is drawn yet) keeps which face each pixel's depth came from, so that an
+  // exact tie goes to the face first in the scene, as in scene order; `tiles` lets admit() reject
+  // a face that cannot pass a depth test before its set-up. Untraced only.
+  ZBufferCanvas(Image<P>& image, std::span<double> depth, std::span<int> owner, DepthTiles& tiles)
+      : image_(image), depth_(depth), band_{0, image.height()}, owner_(owner), tiles_(&tiles) {}
+
   ZBufferCanvas(const ZBufferCanvas&) = delete;  // depth_ may point into own_
   ZBufferCanvas& operator=(const ZBufferCanvas&) = delete;
 
@@ -67,6 +76,27 @@ class ZBufferCanvas {
     plane_ = DepthPlane::through(p, d);
   }
 
+  // Called after begin_triangle with face `face` and its vertices' bounding box (pixels): false
+  // when no pixel of it can pass a depth test, so that the face need not be set up. In scene order
+  // (no tiles) every face is admitted.
+  bool admit(int face, double x_min, double y_min, double x_max, double y_max) {
+    face_ = face;
+    if (!tiles_) return true;
+    // A pixel centre the fill writes lies in columns floor(x_min) … ceil(x_max) and rows
+    // floor(y_min) … ceil(y_max): snapping moves a vertex by at most half a pixel, to a point
+    // that rounds into that range. Out of range, the fill skips the face itself.
+    if (!(x_min >= -kMaxCoordinate && x_max <= kMaxCoordinate && y_min >= -kMaxCoordinate &&
+          y_max <= kMaxCoordinate))
+      return true;
+    const int x0 = std::max(static_cast<int>(std::floor(x_min)), 0),
+              y0 = std::max(static_cast<int>(std::floor(y_min)), band_.begin),
+              x1 = std::min(static_cast<int>(std::ceil(x_max)), width() - 1),
+              y1 = std::min(static_cast<int>(std::ceil(y_max)), band_.end - 1);
+    if (x0 > x1 || y0 > y1) return true;
+    // Strictly farther than every depth stored there: it loses even the ties it would win.
+    return !tiles_->all_nearer(x0, y0, x1, y1, plane_.lower_bound(x0, y0, x1, y1));
+  }
+
   double depth_at(int x, int y) const { return plane_.at(x, y); }
   double stored(int x, int y) const {
     return depth_[static_cast<std::size_t>(y) * image_.width() + x];
@@ -83,9 +113,16 @@ class ZBufferCanvas {
  private:
   void write(int x, int y, const P& p) {
     const double d = depth_at(x, y);
-    double& z = depth_[static_cast<std::size_t>(y) * image_.width() + x];
-    const bool passed = d < z;
+    const std::size_t i = static_cast<std::size_t>(y) * image_.width() + x;
+    double& z = depth_[i];
+    bool passed = d < z;
     if (!log_.empty()) log_[x] = DepthTest{passed, d, z};
+    if (tiles_) {
+      // Faces in any order: an exact tie goes to the face first in the scene, which scene order
+      // draws first and the strict test then keeps (owner −1: nothing drawn, no tie to win).
+      passed = passed || (d == z && face_ < owner_[i]);
+      if (passed) owner_[i] = face_, tiles_->wrote(x, y, z, d);
+    }
     if (passed) {
       z = d;
       image_.row(y)[x] = p;
@@ -98,6 +135,9 @@ class ZBufferCanvas {
   RowBand band_;
   std::vector<DepthTest> log_;
   DepthPlane plane_;
+  std::span<int> owner_;
+  DepthTiles* tiles_ = nullptr;
+  int face_ = 0;
 };
 
 }  // namespace scantrace

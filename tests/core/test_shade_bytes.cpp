@@ -81,3 +81,32 @@ TEST_CASE("a span of 8-bit pixels is its exact colours rounded", "[core][simd]")
     }
   }
 }
+
+TEST_CASE("a short span writes its pixels, each its formula's bytes, and nothing else",
+          "[core][simd]") {
+  // Every length from 0 to 8 (the spans of a small triangle), between guard pixels, against the
+  // formula per channel: each pixel its bytes, and nothing written outside the span.
+  std::mt19937_64 rng(19);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Bgr8 guard{7, 8, 9};
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int n = static_cast<int>(trial % 9);
+    const Color c{unit(rng), unit(rng), unit(rng)};
+    const Color last{unit(rng), unit(rng), unit(rng)};
+    const Color step = n > 1 ? (last - c) * (1.0 / (n - 1)) : Color{};
+    const ByteRamps ramps(std::max(n, 1), c, step);
+    std::vector<Bgr8> out(n + 8, guard);
+    shade_ramps(out.data() + 4, n, ramps);
+    for (int i = 0; i < n + 8; ++i) {
+      INFO("n = " << n << ", pixel " << i - 4);
+      if (i < 4 || i >= n + 4) {
+        CHECK(out[i] == guard);
+        continue;
+      }
+      const int k = i - 4;
+      CHECK(out[i].r == expected(ramps.r, k));
+      CHECK(out[i].g == expected(ramps.g, k));
+      CHECK(out[i].b == expected(ramps.b, k));
+    }
+  }
+}

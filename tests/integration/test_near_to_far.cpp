@@ -122,16 +122,29 @@ Scene without_empty_faces(const Scene& s, FillRule rule) {
   return out;
 }
 
+// The scene rendered both ways with `base`'s other options: near to far must give the image of far
+// to near, and each must say which path it took. Returns that image.
 template <class P>
-void check_identical(const Scene& scene, const FillOptions& base) {
+Image<P> render_both_ways(const Scene& scene, const FillOptions& base, RenderStats& near_stats) {
   FillOptions far = base, near = base;
   far.occlusion = Occlusion::far_to_near;
   near.occlusion = Occlusion::near_to_far;
-  RenderStats far_stats, near_stats;
+  RenderStats far_stats;
   const Image<P> expected = render<P>(scene, far, &far_stats);
   CHECK(render<P>(scene, near, &near_stats) == expected);
   CHECK(near_stats.path == Occlusion::near_to_far);
   CHECK(far_stats.path == Occlusion::far_to_near);
+  return expected;
+}
+
+template <class P>
+void check_identical(const Scene& scene, const FillOptions& base) {
+  FillOptions near = base;
+  near.occlusion = Occlusion::near_to_far;
+  RenderStats near_stats;
+  const Image<P> expected = render_both_ways<P>(scene, base, near_stats);
+  FillOptions far = base;
+  far.occlusion = Occlusion::far_to_near;
   for (int threads : {2, 3, 7}) {
     INFO(threads << " threads");
     RenderStats band_stats;
@@ -318,13 +331,10 @@ namespace {
 template <class P>
 void check_zbuffer_identical(const Scene& scene, FillOptions opt) {
   opt.visibility = Visibility::zbuffer;
+  RenderStats near_stats;  // far to near is the z-buffer's scene order
+  const Image<P> expected = render_both_ways<P>(scene, opt, near_stats);
   FillOptions near = opt;
   near.occlusion = Occlusion::near_to_far;
-  RenderStats scene_order, near_stats;
-  const Image<P> expected = render<P>(scene, opt, &scene_order);
-  CHECK(render<P>(scene, near, &near_stats) == expected);
-  CHECK(near_stats.path == Occlusion::near_to_far);
-  CHECK(scene_order.path == Occlusion::far_to_near);
   // Every face is accounted for once; a rejected face is hidden, and only such faces are.
   CHECK(near_stats.triangles_filled + near_stats.triangles_skipped + near_stats.triangles_culled +
             near_stats.triangles_hidden ==

@@ -6,12 +6,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <type_traits>
 
 #include "color.hpp"
 #include "flat_span.hpp"
 #include "image.hpp"
 #include "shade_bytes.hpp"
+#include "vec2.hpp"
 
 namespace scantrace {
 
@@ -29,6 +31,35 @@ concept Canvas = requires(C& c, int x, int y, Color col) {
 struct RowBand {
   int begin = 0, end = 0;
 };
+
+// The pixels a face can own, columns x0 … x1 and rows y0 … y1 (empty when x0 > x1 or y0 > y1),
+// from its vertices before snapping, clipped to columns [0, width) and to `band`. Snapping moves a
+// vertex by at most half a pixel, to a point that rounds into floor(v) … ceil(v), so columns
+// floor(x_min) … ceil(x_max) and rows floor(y_min) … ceil(y_max) hold every pixel centre the face
+// owns under either fill rule. The renders that reject hidden faces before their set-up test this
+// box (occlusion_canvas.hpp, zbuffer_canvas.hpp). Empty also for NaN vertices; a vertex far off
+// the canvas is clamped before it is converted to an int.
+struct PixelBox {
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+  bool empty() const { return x0 > x1 || y0 > y1; }
+};
+
+inline PixelBox face_pixels(std::span<const Vec2> v, int width, RowBand band) {
+  const double x_min = std::min({v[0].x, v[1].x, v[2].x}),
+               x_max = std::max({v[0].x, v[1].x, v[2].x});
+  const double y_min = std::min({v[0].y, v[1].y, v[2].y}),
+               y_max = std::max({v[0].y, v[1].y, v[2].y});
+  if (!(x_max > -1.0 && x_min < width && y_max > band.begin - 1.0 && y_min < band.end)) return {};
+  // floor and ceil by truncation (std::floor is a call on baseline x86-64): the lower ends are
+  // clamped to ≥ 0 and the upper ones lie above −1, where truncating is rounding toward zero.
+  const auto ceil = [](double x) {
+    const int t = static_cast<int>(x);
+    return t + (static_cast<double>(t) < x);
+  };
+  return {static_cast<int>(std::max(x_min, 0.0)),
+          static_cast<int>(std::max(y_min, double(band.begin))), ceil(std::min(x_max, width - 1.0)),
+          ceil(std::min(y_max, band.end - 1.0))};
+}
 
 template <Canvas C>
 RowBand canvas_rows(const C& canvas) {

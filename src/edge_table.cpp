@@ -20,19 +20,7 @@ void EdgeTable::add_edge(std::span<const FixedPoint> points, int i, int j, const
     horizontal_.push_back({i, i, j, a.y});
     return;
   }
-  Edge& e = edges_.emplace_back();
-  e.id = i;
-  e.top = a.y < b.y ? i : j;
-  e.bottom = a.y < b.y ? j : i;
-  e.p_top = points[e.top];
-  e.p_bottom = points[e.bottom];
-  // Half-open in y under the top-left rule: an edge owns the rows whose centre lies in
-  // [y_top, y_bottom). A vertex shared by two edges of a chain (or of a contour, where it turns
-  // or passes through) then belongs to exactly one of them, so the active list holds exactly two
-  // edges per row of a convex polygon.
-  e.first_row = grid.ceil_to_pixel(e.p_top.y);
-  e.last_row = rule == FillRule::top_left ? grid.ceil_to_pixel(e.p_bottom.y) - 1
-                                          : grid.floor_to_pixel(e.p_bottom.y);
+  const Edge& e = edges_.emplace_back(edge_between(points.data(), i, j, i, grid, rule));
   if (e.first_row <= e.last_row) {
     first_row_ = std::min(first_row_, e.first_row);
     last_row_ = std::max(last_row_, e.last_row);

@@ -13,10 +13,6 @@ namespace scantrace {
 // and a call to memcpy costs more than it saves on them.
 inline constexpr std::ptrdiff_t kShortSpan = 32;
 
-// Pixels [first, last) := value. The value is a local copy on purpose: std::fill reads it through
-// a reference, and with 8-bit pixels every byte stored may alias it, so it would be reloaded for
-// every pixel. Long spans are a few pixels copied onto the rest in doubling blocks: memcpy moves a
-// 3-byte pattern as fast as memset moves a 1-byte one, a pixel loop does not.
 // Pixels [first, last) := value for a span of at most 8 pixels, without a loop: four stores at
 // both ends cover any length from 1 to 4 (0, n−1, n/2 and (n−1)/2 are inside the span and
 // between them every pixel), eight any length from 4 to 8. The length of a small triangle's
@@ -37,6 +33,10 @@ template <class P>
   return true;
 }
 
+// Pixels [first, last) := value. The value is a local copy on purpose: std::fill reads it through
+// a reference, and with 8-bit pixels every byte stored may alias it, so it would be reloaded for
+// every pixel. Long spans are a few pixels copied onto the rest in doubling blocks: memcpy moves a
+// 3-byte pattern as fast as memset moves a 1-byte one, a pixel loop does not.
 template <class P>
 void fill_pixels(P* first, P* last, P value) {
   if (fill_few(first, last, value)) return;

@@ -10,10 +10,10 @@
 // whose box nothing covers is drawn without clipping (begin_face()).
 // The background is written last, only where no face drew (finish()).
 #include <algorithm>
-#include <cmath>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "canvas.hpp"
 #include "coverage_mask.hpp"
@@ -23,8 +23,9 @@ namespace scantrace {
 // A canvas that writes a pixel only the first time: the fill clips its spans against it
 // (scanline_fill.hpp) and the render loop asks it to reject hidden faces (painter.hpp).
 template <class C>
-concept CoverageCanvas = DirectCanvas<C> && requires(C& c, int y, long long n, double v) {
-  { c.begin_face(v, v, v, v) } -> std::same_as<bool>;
+concept CoverageCanvas = DirectCanvas<C> &&
+    requires(C& c, int y, long long n, std::span<const Vec2> v) {
+  { c.begin_face(v) } -> std::same_as<bool>;
   { c.clipping() } -> std::same_as<bool>;
   { c.coverage_row(y) } -> std::same_as<std::uint64_t*>;  // CoverageMask::row
   { c.coverage_stride() } -> std::same_as<std::ptrdiff_t>;
@@ -72,32 +73,18 @@ class OcclusionCanvas : public BandCanvas<P> {
     claim(y, x, x + 1, [&](int, int) { row(y)[x] = convert(c); });
   }
 
-  // Decides how the next face is drawn from its bounding box (vertex coordinates, before
-  // snapping): false when every pixel it could own in this band is covered already, and it is not
+  // Decides how the next face is drawn from its vertices (before snapping): false when every
+  // pixel it could own in this band (face_pixels, canvas.hpp) is covered already, and it is not
   // drawn at all; otherwise, whether its spans must be clipped (clipping()): a face whose box
   // nothing covers yet writes its spans whole and only marks them, which is all a scene that hides
-  // nothing pays for the bookkeeping. Snapping moves a vertex by at most half a pixel, and a face
-  // owns pixel centres inside its snapped box, so columns floor(x_min) … ceil(x_max) and rows
-  // floor(y_min) … ceil(y_max) hold all of them under either fill rule (and a convex face owns
-  // each pixel once, so its own spans never overlap). A box that misses the band is drawn, with
-  // clipping: the fill's own set-up then says why the face draws nothing.
-  bool begin_face(double x_min, double y_min, double x_max, double y_max) {
-    const RowBand band = rows();
+  // nothing pays for the bookkeeping (a convex face owns each pixel once, so its own spans never
+  // overlap). A box that misses the band is drawn, with clipping: the fill's own set-up then says
+  // why the face draws nothing.
+  bool begin_face(std::span<const Vec2> vertices) {
     clipping_ = true;
-    // Also a NaN box; the clamps keep a vertex far off the canvas from overflowing an int.
-    if (!(x_max > -1.0 && x_min < width() && y_max > band.begin - 1.0 && y_min < band.end))
-      return true;
-    // floor and ceil by truncation (std::floor is a call on baseline x86-64): the lower ends are
-    // clamped to ≥ 0 and the upper ones lie above −1, where truncating is rounding toward zero.
-    const auto ceil = [](double v) {
-      const int t = static_cast<int>(v);
-      return t + (static_cast<double>(t) < v);
-    };
-    const int x0 = static_cast<int>(std::max(x_min, 0.0));
-    const int x1 = ceil(std::min(x_max, width() - 1.0));
-    const int y0 = static_cast<int>(std::max(y_min, double(band.begin)));
-    const int y1 = ceil(std::min(y_max, band.end - 1.0));
-    const CoverageMask::Cover c = mask_.cover(y0, y1 + 1, x0, x1 + 1);
+    const PixelBox box = face_pixels(vertices, width(), rows());
+    if (box.empty()) return true;
+    const CoverageMask::Cover c = mask_.cover(box.y0, box.y1 + 1, box.x0, box.x1 + 1);
     clipping_ = c != CoverageMask::Cover::none;
     return c != CoverageMask::Cover::all;
   }

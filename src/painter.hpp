@@ -122,10 +122,9 @@ void fill_faces(C& canvas, const Scene& scene, std::span<const int> faces,
     if constexpr (CoverageCanvas<C>) {
       // Near to far: a face whose box nearer faces already cover is not set up at all.
       const auto& face = scene.faces[f];
-      const Vec2 a = scene.vertices[face[0]], b = scene.vertices[face[1]],
-                 d = scene.vertices[face[2]];
-      if (!canvas.begin_face(std::min({a.x, b.x, d.x}), std::min({a.y, b.y, d.y}),
-                             std::max({a.x, b.x, d.x}), std::max({a.y, b.y, d.y}))) {
+      const std::array<Vec2, 3> v{scene.vertices[face[0]], scene.vertices[face[1]],
+                                  scene.vertices[face[2]]};
+      if (!canvas.begin_face(v)) {
         done(f, FillResult{SkipReason::hidden, 0, 0});
         continue;
       }
@@ -135,9 +134,7 @@ void fill_faces(C& canvas, const Scene& scene, std::span<const int> faces,
       const std::array<double, 3> d = corner_depths(scene, scene.faces[f]);
       if (grid.valid()) canvas.begin_triangle(c.points, d, grid);
       // Faces in any order (near to far): one that cannot pass a depth test is not set up.
-      const auto& p = c.points;
-      if (!canvas.admit(f, std::min({p[0].x, p[1].x, p[2].x}), std::min({p[0].y, p[1].y, p[2].y}),
-                        std::max({p[0].x, p[1].x, p[2].x}), std::max({p[0].y, p[1].y, p[2].y}))) {
+      if (!canvas.admit(f, c.points)) {
         done(f, FillResult{SkipReason::hidden, 0, 0});
         continue;
       }

@@ -30,18 +30,10 @@ namespace scantrace {
 
 namespace detail {
 
-// The edge between vertices i and j of a triangle, oriented top to bottom, with the rows it owns
-// under the top-left rule (edge_table.cpp's add_edge for a non-horizontal edge).
+// The edge between vertices i and j of a triangle under the top-left rule, its id the vertex it
+// leaves going round the triangle (the edge table's numbering).
 inline Edge triangle_edge(std::span<const FixedPoint> p, int i, int j, const SubpixelGrid& grid) {
-  Edge e;
-  e.id = j == (i + 1) % 3 ? i : j;  // the edge from vertex id to the next one
-  e.top = p[i].y < p[j].y ? i : j;
-  e.bottom = p[i].y < p[j].y ? j : i;
-  e.p_top = p[e.top];
-  e.p_bottom = p[e.bottom];
-  e.first_row = grid.ceil_to_pixel(e.p_top.y);
-  e.last_row = grid.ceil_to_pixel(e.p_bottom.y) - 1;
-  return e;
+  return edge_between(p.data(), i, j, j == (i + 1) % 3 ? i : j, grid, FillRule::top_left);
 }
 
 }  // namespace detail

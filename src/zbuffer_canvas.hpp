@@ -11,7 +11,6 @@
 // keeps the pixel of the face drawn first, so results do not depend on floating-point ties.
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <limits>
 #include <span>
 #include <vector>
@@ -76,25 +75,16 @@ class ZBufferCanvas {
     plane_ = DepthPlane::through(p, d);
   }
 
-  // Called after begin_triangle with face `face` and its vertices' bounding box (pixels): false
-  // when no pixel of it can pass a depth test, so that the face need not be set up. In scene order
-  // (no tiles) every face is admitted.
-  bool admit(int face, double x_min, double y_min, double x_max, double y_max) {
+  // Called after begin_triangle with face `face` and its vertices (before snapping): false when
+  // no pixel it can own (face_pixels, canvas.hpp) can pass a depth test, so that the face need not
+  // be set up. In scene order (no tiles) every face is admitted.
+  bool admit(int face, std::span<const Vec2> vertices) {
     face_ = face;
     if (!tiles_) return true;
-    // A pixel centre the fill writes lies in columns floor(x_min) … ceil(x_max) and rows
-    // floor(y_min) … ceil(y_max): snapping moves a vertex by at most half a pixel, to a point
-    // that rounds into that range. Out of range, the fill skips the face itself.
-    if (!(x_min >= -kMaxCoordinate && x_max <= kMaxCoordinate && y_min >= -kMaxCoordinate &&
-          y_max <= kMaxCoordinate))
-      return true;
-    const int x0 = std::max(static_cast<int>(std::floor(x_min)), 0),
-              y0 = std::max(static_cast<int>(std::floor(y_min)), band_.begin),
-              x1 = std::min(static_cast<int>(std::ceil(x_max)), width() - 1),
-              y1 = std::min(static_cast<int>(std::ceil(y_max)), band_.end - 1);
-    if (x0 > x1 || y0 > y1) return true;
+    const PixelBox box = face_pixels(vertices, width(), band_);
     // Strictly farther than every depth stored there: it loses even the ties it would win.
-    return !tiles_->all_nearer(x0, y0, x1, y1, plane_.lower_bound(x0, y0, x1, y1));
+    return box.empty() || !tiles_->all_nearer(box.x0, box.y0, box.x1, box.y1,
+                                              plane_.lower_bound(box.x0, box.y0, box.x1, box.y1));
   }
 
   double depth_at(int x, int y) const { return plane_.at(x, y); }

@@ -292,8 +292,6 @@ TEST_CASE("near to far: the box test rejects a face only when every pixel it own
       for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 16; ++x)
           if (p.covers(x, y, rule)) owned.push_back({x, y});
-      const double x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
-      const double y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
       for (const auto& [ux, uy] : owned) {
         INFO("(" << v[0].x << ", " << v[0].y << ") (" << v[1].x << ", " << v[1].y << ") (" << v[2].x
                  << ", " << v[2].y << "), " << to_string(rule) << ", pixel " << ux << ", " << uy
@@ -307,18 +305,18 @@ TEST_CASE("near to far: the box test rejects a face only when every pixel it own
             mask.mark(y, 0, 16);
           }
         OcclusionCanvas<Bgr8> canvas(image, mask, {0, 16});
-        CHECK(canvas.begin_face(x0, y0, x1, y1));
+        CHECK(canvas.begin_face(v));
         CHECK(canvas.clipping());
         ++faces_checked;
       }
       mask.reset(16, 16);
       for (int y = 0; y < 16; ++y) mask.mark(y, 0, 16);
       OcclusionCanvas<Bgr8> covered(image, mask, {0, 16});
-      CHECK_FALSE(covered.begin_face(x0, y0, x1, y1));
+      CHECK_FALSE(covered.begin_face(v));
       // And on an empty canvas, the face is drawn without clipping.
       mask.reset(16, 16);
       OcclusionCanvas<Bgr8> empty(image, mask, {0, 16});
-      CHECK(empty.begin_face(x0, y0, x1, y1));
+      CHECK(empty.begin_face(v));
       CHECK_FALSE(empty.clipping());
     }
   }

@@ -119,6 +119,32 @@ Scene grid_mesh(std::uint64_t seed, int width, int height, int cells_x, int cell
   return s;
 }
 
+Scene surface_layers(std::uint64_t seed, int width, int height, int cells_x, int cells_y,
+                     int layers) {
+  SplitMix64 rng(seed);
+  Scene s = canvas(width, height);
+  const double w = static_cast<double>(width) / cells_x, h = static_cast<double>(height) / cells_y;
+  const int row = cells_x + 1;
+  for (int k = 0; k < layers; ++k) {
+    const int first = static_cast<int>(s.vertices.size());
+    for (int j = 0; j <= cells_y; ++j)
+      for (int i = 0; i <= cells_x; ++i) {
+        const bool inner = i > 0 && j > 0 && i < cells_x && j < cells_y;
+        s.vertices.push_back({i * w + (inner ? rng.uniform(-0.3, 0.3) * w : 0),
+                              j * h + (inner ? rng.uniform(-0.3, 0.3) * h : 0)});
+        s.vcolors.push_back(random_color(rng));
+        s.depth.push_back(k + rng.uniform(0, 1));
+      }
+    for (int j = 0; j < cells_y; ++j)
+      for (int i = 0; i < cells_x; ++i) {
+        const int a = first + j * row + i;
+        s.faces.push_back({a, a + 1, a + row + 1});
+        s.faces.push_back({a, a + row + 1, a + row});
+      }
+  }
+  return s;
+}
+
 Scene offscreen_triangles(int count) {
   Scene s = canvas(512, 512);
   for (int f = 0; f < count; ++f) {

@@ -26,6 +26,13 @@ Scene far_vertex_visible_part();
 // width × height canvas, random colours and depths.
 Scene grid_mesh(std::uint64_t seed, int width, int height, int cells_x, int cells_y);
 
+// `layers` jittered-grid meshes of `cells_x` × `cells_y` quads over a width × height canvas, whose
+// faces share their corners as a model's do (a surface, not a soup), layer k at depths in
+// [k, k + 1): nearer layers hide whole faces of farther ones, as the course scene's front hides
+// its back. One layer hides nothing.
+Scene surface_layers(std::uint64_t seed, int width, int height, int cells_x, int cells_y,
+                     int layers);
+
 // `count` copies of a small triangle placed off the canvas (all to its left), or with zero area.
 Scene offscreen_triangles(int count);
 Scene zero_area_triangles(int count);

@@ -117,7 +117,8 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
   // Near to far, each band keeps its rows of one coverage mask, and a face meets in a band the
   // coverage of the same nearer faces as in the whole image.
   const bool zbuffer = opt.visibility == Visibility::zbuffer;
-  const bool near_to_far = !zbuffer && opt.occlusion == Occlusion::near_to_far;
+  const bool near_to_far =
+      !zbuffer && choose_occlusion(scene, opt, scratch.overdraw_cells) == Occlusion::near_to_far;
   if (near_to_far) {
     image.reshape(scene.width, scene.height);
     scratch.coverage.reset(scene.width, scene.height);

@@ -34,7 +34,9 @@ const char* to_string(Visibility v) {
 }
 
 const char* to_string(Occlusion o) {
-  return o == Occlusion::far_to_near ? "far-to-near" : "near-to-far";
+  return o == Occlusion::far_to_near   ? "far-to-near"
+         : o == Occlusion::near_to_far ? "near-to-far"
+                                       : "auto";
 }
 
 bool parse_method(const char* name, Method& out) {

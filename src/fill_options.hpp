@@ -50,7 +50,9 @@ enum class Visibility { painter, zbuffer };
 // (one thread, untraced): near_to_far draws its faces in that same order, an exact depth tie still
 // going to the face first in the scene, and rejects before set-up a face whose box a coarse view
 // of the depth buffer shows all nearer (depth_tiles.hpp); far_to_near is its scene order.
-enum class Occlusion { near_to_far, far_to_near };
+// automatic (the default): one of the two, chosen from the scene (occlusion_choice.hpp says how),
+// which RenderStats::path reports.
+enum class Occlusion { near_to_far, far_to_near, automatic };
 
 struct FillOptions {
   Shading shading = Shading::gouraud;
@@ -60,10 +62,10 @@ struct FillOptions {
   WindingRule winding_rule = WindingRule::even_odd;
   Cull cull = Cull::none;
   Visibility visibility = Visibility::painter;
-  // Far to near by default: near to far is faster where most faces are hidden (the course scene:
-  // 0.7-0.8 of the time) and slower where few are (a 1200² mesh: 1.2-1.4, its clipping costs more
+  // Chosen per scene: near to far is faster where most faces are hidden whole (the course scene:
+  // 0.66 of the time) and slower where few are (a 1200² mesh: 1.3-1.4, its clipping costs more
   // than it saves), as `scantrace bench` measures (docs/performance.md).
-  Occlusion occlusion = Occlusion::far_to_near;
+  Occlusion occlusion = Occlusion::automatic;
 };
 
 const char* to_string(Shading s);
@@ -71,7 +73,7 @@ const char* to_string(FillRule r);
 const char* to_string(Method m);      // "exact", "float", "double", "halfspace"
 const char* to_string(Cull c);        // "none", "back", "front"
 const char* to_string(Visibility v);  // "painter", "zbuffer"
-const char* to_string(Occlusion o);   // "near-to-far", "far-to-near"
+const char* to_string(Occlusion o);   // "near-to-far", "far-to-near", "auto"
 // The method named `name`, or false when there is none.
 bool parse_method(const char* name, Method& out);
 const char* to_string(WindingRule w);  // "even-odd", "non-zero"

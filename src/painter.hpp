@@ -12,6 +12,7 @@
 #include "coverage_mask.hpp"
 #include "depth_tiles.hpp"
 #include "occlusion_canvas.hpp"
+#include "occlusion_choice.hpp"
 #include "scanline_fill.hpp"
 #include "scene.hpp"
 #include "zbuffer_canvas.hpp"
@@ -47,6 +48,7 @@ struct RenderScratch {
   // The z-buffer near to far: which face each pixel's depth came from, and the tiles' bounds.
   std::vector<int> owner;
   DepthTiles depth_tiles;
+  std::vector<float> overdraw_cells;  // Occlusion::automatic: estimated_overdraw's grid
 };
 
 struct RenderStats {
@@ -58,7 +60,8 @@ struct RenderStats {
   // over counts each time; near to far, each pixel once; z-buffer, before the depth test.
   long long pixels = 0;
 
-  // Which way the painter's render ran (FillOptions::occlusion; a traced render is far to near).
+  // Which way the render ran (FillOptions::occlusion, automatic resolved by choose_occlusion; a
+  // traced render is far to near).
   Occlusion path = Occlusion::far_to_near;
   // Near to far: faces of which no pixel is seen, all hidden by nearer faces; of them, those
   // rejected from their bounding box before any set-up; and the pixels of the faces that were set
@@ -229,25 +232,24 @@ RenderStats render_zbuffer_near_to_far(Image<P>& image, const Scene& scene, cons
 template <class P, FillTracer Tracer = NoTracer>
 RenderStats render(Image<P>& image, const Scene& scene, const FillOptions& opt,
                    RenderScratch& scratch, Tracer& tracer) {
-  if constexpr (std::is_same_v<Tracer, NoTracer>) {
-    if (opt.visibility == Visibility::painter && opt.occlusion == Occlusion::near_to_far) {
-      image.reshape(scene.width, scene.height);  // every pixel is written: no clear
-      scratch.coverage.reset(scene.width, scene.height);
-      drawing_order(scene, Visibility::painter, scratch, Occlusion::near_to_far);
-      OcclusionCanvas<P> canvas(image, scratch.coverage, {0, scene.height});
-      RenderStats stats;
-      stats.path = Occlusion::near_to_far;
-      fill_near_to_far(
-          canvas, scene, scratch.order, scratch.depth, opt, scratch.fill,
-          [&](int, const FillResult& r, long long visible) { stats.count(r, visible); });
-      return stats;
-    }
+  // A traced render is far to near: the trace shows the course's algorithm.
+  const Occlusion way = std::is_same_v<Tracer, NoTracer>
+                            ? choose_occlusion(scene, opt, scratch.overdraw_cells)
+                            : Occlusion::far_to_near;
+  if (opt.visibility == Visibility::painter && way == Occlusion::near_to_far) {
+    image.reshape(scene.width, scene.height);  // every pixel is written: no clear
+    scratch.coverage.reset(scene.width, scene.height);
+    drawing_order(scene, Visibility::painter, scratch, Occlusion::near_to_far);
+    OcclusionCanvas<P> canvas(image, scratch.coverage, {0, scene.height});
+    RenderStats stats;
+    stats.path = Occlusion::near_to_far;
+    fill_near_to_far(canvas, scene, scratch.order, scratch.depth, opt, scratch.fill,
+                     [&](int, const FillResult& r, long long visible) { stats.count(r, visible); });
+    return stats;
   }
   image.reset(scene.width, scene.height, P::from(scene.background));
-  if constexpr (std::is_same_v<Tracer, NoTracer>) {
-    if (opt.visibility == Visibility::zbuffer && opt.occlusion == Occlusion::near_to_far)
-      return render_zbuffer_near_to_far(image, scene, opt, scratch);
-  }
+  if (opt.visibility == Visibility::zbuffer && way == Occlusion::near_to_far)
+    return render_zbuffer_near_to_far(image, scene, opt, scratch);
   if (opt.visibility == Visibility::zbuffer) {
     scratch.zbuffer.assign(static_cast<std::size_t>(scene.width) * scene.height,
                            std::numeric_limits<double>::infinity());

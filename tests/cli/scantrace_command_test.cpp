@@ -8,9 +8,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli_test_support.hpp"
+#include "demo/demo_scene.hpp"
 #include "io/scene_json.hpp"
 #include "scene_compare.hpp"
-#include "demo/demo_scene.hpp"
 #include "src/painter.hpp"
 #include "trace/trace.hpp"
 #include "viz/opencv_image.hpp"
@@ -85,6 +85,7 @@ TEST_CASE("usage errors exit 2", "[command]") {
       {"render", "scene.json", "--shading", "phong"},
       {"render", "scene.json", "--fill-rule", "even-odd"},
       {"render", "scene.json", "--subpixel-bits", "13"},
+      {"render", "scene.json", "--occlusion", "--no-occlusion"},
       {"demo", "extra"}};
   for (const auto& args : usage_errors) {
     const auto r = run_scantrace(dir.path(), args);
@@ -274,4 +275,13 @@ TEST_CASE("render of the course scene writes a 512x512 PNG", "[command][shared_d
   CHECK(png.cols == 512);
   CHECK(png.rows == 512);
   CHECK(png.at<cv::Vec3b>(0, 0) == cv::Vec3b(255, 255, 255));
+  // The scene hides most of its faces behind its front: the default draws it near to far and
+  // says so; --no-occlusion paints far to near, the same pixels.
+  CHECK_THAT(r.err, Catch::Contains("written once each, near to far"));
+  const auto far =
+      run_scantrace(dir.path(), {"render", scene.string(), "--no-occlusion", "-o", "far.png"});
+  INFO("stderr: " << far.err);
+  REQUIRE(far.exit_code == 0);
+  CHECK_THAT(far.err, !Catch::Contains("near to far"));
+  CHECK(cv::norm(read_bgr(dir / "far.png"), png, cv::NORM_INF) == 0);
 }

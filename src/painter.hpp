@@ -27,7 +27,7 @@ std::vector<int> painter_order(const std::vector<double>& face_depths);
 // The radix sort's buffers (keys, a second copy of keys and indices, digit counts), kept by a
 // caller who sorts again so that a sort of as many faces allocates nothing.
 struct PainterSortBuffers {
-  std::vector<std::uint64_t> key, key_tmp;
+  std::vector<std::uint32_t> key, key_tmp;
   std::vector<int> order_tmp;
   std::vector<std::uint32_t> count;
 };

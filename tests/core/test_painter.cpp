@@ -203,11 +203,18 @@ TEST_CASE("painter_order equals a stable sort on awkward depths", "[painter]") {
                              -std::numeric_limits<double>::infinity(),
                              12923.6328125,
                              0.5};
-  for (int round = 0; round < 200; ++round) {
+  // Depths that differ by less than a float's precision: the sort's float keys are equal for
+  // them, and only the doubles can order them (a sort on the floats alone fails these rounds).
+  const double close[] = {1.0,           1.0 + 0x1p-40, 1.0 - 0x1p-41,  1.0 + 0x1p-30, 3.5,
+                          3.5 + 0x1p-38, -2.0,          -2.0 - 0x1p-39, 1e300,         1e301,
+                          -1e300,        1e-40,         1e-45};
+  for (int round = 0; round < 400; ++round) {
     std::vector<double> d(static_cast<std::size_t>(rng.integer(0, 400)));
+    const bool collide = round % 2 == 1;
     for (double& v : d)
-      v = rng.coin() ? specials[rng.integer(0, 9)]
-                     : std::ldexp(rng.uniform(-1, 1), static_cast<int>(rng.integer(-60, 60)));
+      v = collide      ? close[rng.integer(0, 12)]
+          : rng.coin() ? specials[rng.integer(0, 9)]
+                       : std::ldexp(rng.uniform(-1, 1), static_cast<int>(rng.integer(-60, 60)));
     std::vector<int> expected(d.size());
     std::iota(expected.begin(), expected.end(), 0);
     std::stable_sort(expected.begin(), expected.end(), [&](int a, int b) { return d[a] > d[b]; });

@@ -541,7 +541,9 @@ void run_bench(const BenchArgs& args) {
     std::filesystem::create_directories(dir);
     const std::string scene_file = (dir / "scene.json").string(), png = (dir / "out.png").string();
     save_scene(grid, scene_file);
-    const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+    // `scantrace`, which users run and which renders itself, beside this `scantrace-tools`.
+    const std::string self =
+        (std::filesystem::read_symlink("/proc/self/exe").parent_path() / "scantrace").string();
     std::vector<Job> jobs{
         {"start-up",
          [&] {

@@ -15,10 +15,10 @@
 #include "cli/stopwatch.hpp"
 #include "io/interrupt.hpp"
 #include "io/obj_loader.hpp"
+#include "io/png_writer.hpp"
 #include "io/scene_json.hpp"
 #include "src/band_render.hpp"
 #include "src/painter.hpp"
-#include "viz/image_file.hpp"
 
 namespace scantrace::cli {
 namespace {
@@ -61,7 +61,7 @@ void run_render(const RenderArgs& args) {
                              : render_parallel<Rgb32f>(scene, options, args.threads, &stats);
   const double render_ms = render_clock.ms();
 
-  write_png(image, out);
+  png::write(image, out);
   // A hint given after the write succeeded, so that a failing run prints only its error line.
   if (out.extension() != ".png" && out.extension() != ".PNG")
     spdlog::warn("warning: {}: the name does not end in .png; writing PNG data anyway",

@@ -28,6 +28,14 @@ foreach(component IN LISTS scantrace_components)
           DESTINATION ${SCANTRACE_INSTALL_CMAKEDIR} COMPONENT development)
 endforeach()
 
+# The PNG writer (libpng) that viz's write_png and the command share, in viz's export set.
+set_target_properties(scantrace_png PROPERTIES EXPORT_NAME png)
+get_target_property(png_links scantrace_png INTERFACE_LINK_LIBRARIES)
+list(REMOVE_ITEM png_links "$<LINK_ONLY:scantrace_warnings>")
+set_target_properties(scantrace_png PROPERTIES INTERFACE_LINK_LIBRARIES "${png_links}")
+install(TARGETS scantrace_png EXPORT scantrace-viz-targets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
+
 # The headers keep the repository's layout (src/ is the core) because they include each other
 # by their path from the repository root ("src/scene.hpp"): the installed targets therefore put
 # both P/include (for <scantrace/trace/trace.hpp>) and P/include/scantrace on the include path
@@ -40,7 +48,9 @@ endforeach()
 install(FILES ${PROJECT_SOURCE_DIR}/trace/trace_schema.json
         DESTINATION ${CMAKE_INSTALL_DATADIR}/scantrace COMPONENT development)
 
-install(TARGETS scantrace RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+# `scantrace` hands every command but render to `scantrace-tools`, which it finds beside itself.
+install(TARGETS scantrace scantrace_tools RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+        COMPONENT runtime)
 
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/scantrace-config.cmake.in
                               ${PROJECT_BINARY_DIR}/scantrace-config.cmake

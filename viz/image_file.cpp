@@ -7,28 +7,17 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "io/atomic_write.hpp"
 #include "io/image_size.hpp"
 #include "io/input_error.hpp"
+#include "io/png_writer.hpp"
 #include "viz/opencv_image.hpp"
 
 namespace scantrace {
 
+// One encoder for every PNG scantrace writes, the command's and the libraries' (io/png_writer.hpp):
+// the same image gives the same bytes whichever wrote it.
 void write_png(const RgbImage& image, const std::filesystem::path& file) {
-  if (image.width() <= 0 || image.height() <= 0)
-    throw std::runtime_error(file.string() + ": cannot write an empty image");
-  // Encode in memory rather than cv::imwrite: imwrite picks the format from the file name, which
-  // the temporary name does not end in, and it cannot say why a write failed.
-  std::vector<unsigned char> png;
-  bool encoded = false;
-  try {
-    encoded = cv::imencode(".png", to_bgr8(image), png);
-  } catch (const cv::Exception& e) {
-    throw std::runtime_error(file.string() + ": cannot encode PNG: " + e.what());
-  }
-  if (!encoded) throw std::runtime_error(file.string() + ": cannot encode PNG");
-  write_file_atomically(file,
-                        std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  png::write(image, file);
 }
 
 RgbImage read_png(const std::filesystem::path& file) {

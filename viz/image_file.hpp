@@ -1,6 +1,7 @@
 #pragma once
 // Image files. The canvas holds float RGB in [0, 1]; files hold 8-bit channels, round(255·c)
-// clamped to [0, 255] (docs/design.md §2). OpenCV stays behind this header.
+// clamped to [0, 255] (docs/design.md §2). OpenCV (reading) and libpng (writing,
+// io/png_writer.hpp) stay behind this header.
 #include <filesystem>
 
 #include "src/image.hpp"

@@ -74,6 +74,44 @@ TEST_CASE("scantrace --version and --help exit 0", "[command]") {
   CHECK_THAT(demo_help.out, Catch::Contains("-o,--output"));
 }
 
+// `scantrace` renders itself and hands every other command to `scantrace-tools` beside it
+// (cli/main_render.cpp): the one loads no OpenCV, the other is found where the first is.
+TEST_CASE("scantrace renders without OpenCV and hands the other commands on", "[command]") {
+  TempDir dir;
+  // The dynamic loader's own list of what the executable loads (ldd, from libc-bin).
+  const std::string ldd = "ldd " + test::shell_quote(SCANTRACE_BINARY) + " > " +
+                          test::shell_quote((dir / "ldd.txt").string());
+  REQUIRE(std::system(ldd.c_str()) == 0);
+  const std::string libraries = test::read_text(dir / "ldd.txt");
+  CHECK_THAT(libraries, Catch::Contains("libpng") && !Catch::Contains("libopencv"));
+  // Commands it hands on, with their exit status and output: a trace, then its check.
+  save_scene(two_triangles(), dir / "scene.json");
+  const auto traced = run_scantrace(dir.path(), {"-q", "trace", "scene.json", "-o", "t.jsonl"});
+  INFO("stderr: " << traced.err);
+  CHECK(traced.exit_code == 0);
+  const auto check = run_scantrace(dir.path(), {"check", "t.jsonl"});
+  INFO("stderr: " << check.err);
+  CHECK(check.exit_code == 0);
+  // Without scantrace-tools beside it, the other commands fail naming what is missing, and render
+  // still works.
+  const std::filesystem::path alone = dir / "alone" / "scantrace";
+  std::filesystem::create_directories(alone.parent_path());
+  std::filesystem::copy_file(SCANTRACE_BINARY, alone);
+  const std::string run_alone = test::shell_quote(alone.string());
+  const std::string trace = "cd " + test::shell_quote(dir.path().string()) + " && " + run_alone +
+                            " trace scene.json -o t.jsonl 2> err.txt";
+  const int trace_status = std::system(trace.c_str());
+  CHECK((WIFEXITED(trace_status) && WEXITSTATUS(trace_status) == 1));
+  CHECK_THAT(test::read_text(dir / "err.txt"),
+             Catch::Contains("cannot run") && Catch::Contains("alone/scantrace-tools"));
+  const std::string render = "cd " + test::shell_quote(dir.path().string()) + " && " + run_alone +
+                             " -q render scene.json --shading flat -o alone.png";
+  CHECK(std::system(render.c_str()) == 0);
+  const cv::Mat png = read_bgr(dir / "alone.png");
+  REQUIRE_FALSE(png.empty());
+  CHECK(png.at<cv::Vec3b>(100, 100) == bgr_of({1.0 / 3, 1.0 / 3, 1.0 / 3}));
+}
+
 TEST_CASE("usage errors exit 2", "[command]") {
   TempDir dir;
   save_scene(two_triangles(), dir / "scene.json");

@@ -1,0 +1,48 @@
+// `scantrace`: the command users run. It renders itself (`scantrace render`, `--version`) and
+// hands every other command line, unchanged, to `scantrace-tools` beside it (cli/main.cpp),
+// which has every subcommand.
+//
+// Why two executables: the other subcommands replay traces into images, videos and windows
+// through OpenCV, whose image codecs, video I/O and HighGUI bring in 260 shared libraries (GDAL,
+// GDCM, FFmpeg, Qt). Loading and relocating them took 141 ms before main() on every run, where a
+// render of the course scene takes 3 ms: what a student waits for, once per render. This
+// executable links none of them (the PNG is written with libpng, io/png_writer.hpp), and
+// exec() costs the other commands about a millisecond.
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string_view>
+
+#include "cli/app.hpp"
+
+namespace {
+
+// Whether this command line is `render` (or --version), after the main app's own flags.
+bool runs_here(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "-q" || arg == "--quiet") continue;
+    return arg == "render" || arg == "--version";
+  }
+  return false;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (runs_here(argc, argv)) {
+    constexpr scantrace::cli::AddCommand render[]{scantrace::cli::add_render_command};
+    return scantrace::cli::run_app(argc, argv, render);
+  }
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path tools =
+      (ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path()) / "scantrace-tools";
+  execv(tools.c_str(), argv);
+  std::fprintf(stderr, "scantrace: error: cannot run %s: %s\n", tools.c_str(),
+               std::strerror(errno));
+  return 1;
+}

@@ -1,0 +1,17 @@
+#pragma once
+// The `scantrace render` command's PNG writer, on libpng alone: a render that loads no OpenCV
+// starts in milliseconds, where OpenCV's image codecs bring in 260 shared libraries and 140 ms of
+// dynamic linking before main() (docs/performance.md, "The one-shot command"). The libraries'
+// write_png (viz/image_file.hpp) stays on OpenCV, with the reading and the videos.
+#include <filesystem>
+
+#include "src/image.hpp"
+
+namespace scantrace::png {
+
+// Writes `image` as an 8-bit RGB PNG, each channel round(255·c) clamped (to_byte, as
+// viz/image_file.hpp's write_png), under a temporary name renamed into place: a failed or
+// interrupted write never leaves a truncated file. Throws std::runtime_error naming the file.
+void write(const RgbImage& image, const std::filesystem::path& file);
+
+}  // namespace scantrace::png

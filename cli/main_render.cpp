@@ -6,8 +6,8 @@
 // through OpenCV, whose image codecs, video I/O and HighGUI bring in 260 shared libraries (GDAL,
 // GDCM, FFmpeg, Qt). Loading and relocating them took 141 ms before main() on every run, where a
 // render of the course scene takes 3 ms: what a student waits for, once per render. This
-// executable links none of them (the PNG is written with libpng, io/png_writer.hpp), and
-// exec() costs the other commands about a millisecond.
+// executable links none of them (the PNG is written with libpng, io/png_writer.hpp), nor matio
+// (cli/scene_input.cpp), and exec() costs the other commands a few milliseconds.
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,15 +17,21 @@
 #include <string_view>
 
 #include "cli/app.hpp"
+#include "io/mat_scene.hpp"
 
 namespace {
 
-// Whether this command line is `render` (or --version), after the main app's own flags.
+// Whether this command line is `render` (or --version), after the main app's own flags, of a
+// scene that is not a MATLAB .mat file (scantrace-tools reads those: cli/scene_input.cpp).
 bool runs_here(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
     if (arg == "-q" || arg == "--quiet") continue;
-    return arg == "render" || arg == "--version";
+    if (arg == "--version") return true;
+    if (arg != "render") return false;
+    for (int j = i + 1; j < argc; ++j)
+      if (scantrace::is_mat_file(argv[j])) return false;
+    return true;
   }
   return false;
 }

@@ -15,9 +15,18 @@ namespace {
 // Float RGB canvas (12 bytes), 8-bit BGR image (3) and PNG encoding buffers (about 3), rounded up.
 constexpr std::uint64_t kBytesPerPixel = 20;
 
-// A .mat file is the 2021 course's MATLAB scene (io/mat_scene.hpp), anything else JSON.
+// A .mat file is the 2021 course's MATLAB scene (io/mat_scene.hpp), anything else JSON. Only
+// scantrace-tools reads .mat (SCANTRACE_READS_MAT): matio and the HDF5, curl and TLS libraries it
+// brings took 6 of the 9 ms `scantrace` needs to start, and `scantrace` hands such a scene on.
 Scene load_any(const std::string& file, ColorClamping* clamping) {
-  return is_mat_file(file) ? load_mat_scene(file, clamping) : load_scene(file, clamping);
+  if (is_mat_file(file)) {
+#if SCANTRACE_READS_MAT
+    return load_mat_scene(file, clamping);
+#else
+    throw InputError(file, "", "MATLAB .mat scenes are read by scantrace-tools, not found here");
+#endif
+  }
+  return load_scene(file, clamping);
 }
 
 Scene load(const std::string& file, bool clamp_colors) {

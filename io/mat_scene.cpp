@@ -270,11 +270,4 @@ Scene load_mat_scene(const std::filesystem::path& file, ColorClamping* clamping)
   return MatReader(file, clamping).read();
 }
 
-bool is_mat_file(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".mat";
-}
-
 }  // namespace scantrace

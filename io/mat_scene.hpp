@@ -11,7 +11,10 @@
 // depth[i-1]; the canvas is the default 512×512 on white (the file has no canvas size). Every
 // problem is an InputError naming the file and the variable in MATLAB's 1-based notation, e.g.
 // "scene.mat: faces(813,:): vertex index 5012 is out of range 1..4999".
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
+#include <string>
 
 #include "io/input_error.hpp"
 #include "io/scene_json.hpp"
@@ -24,6 +27,13 @@ namespace scantrace {
 Scene load_mat_scene(const std::filesystem::path& file, ColorClamping* clamping = nullptr);
 
 // True for a name ending in .mat (any case): what render, trace and explain read as MATLAB.
-bool is_mat_file(const std::filesystem::path& file);
+// Inline, so that `scantrace`, which does not link matio, can tell such a file and hand it on
+// (cli/main_render.cpp).
+inline bool is_mat_file(const std::filesystem::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".mat";
+}
 
 }  // namespace scantrace

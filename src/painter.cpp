@@ -45,7 +45,7 @@ void painter_order(std::span<const double> d, std::vector<int>& order, PainterSo
   // render). Passes whose digit is the same for every key are skipped.
   //
   // The keys are the depths rounded to float: three passes where the doubles' 64 bits took six
-  // (the course scene's sort: 1.29 M → 0.x M instructions). Rounding is monotonic, so faces come
+  // (the course scene's sort: 1.29 M → 0.96 M instructions). Rounding is monotonic, so faces come
   // out in the painter's order except within a run of equal floats, where the sort keeps scene
   // order; a run whose doubles are not all equal (depths closer than a float's precision, or
   // beyond its range) is then sorted again on the doubles themselves. The order is exactly the

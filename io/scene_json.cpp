@@ -8,9 +8,11 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "io/json_input.hpp"
 #include "io/scene_json.hpp"
+#include "io/scene_json_fast.hpp"
 
 namespace scantrace {
 namespace {
@@ -38,6 +40,30 @@ std::optional<long double> integer(const json& v) {
     if (std::isfinite(d) && d == std::floor(d)) return d;
   }
   return std::nullopt;
+}
+
+// Only finite components are clamped: a number too large for a double is damage, not a colour
+// slightly out of range, and stays an error.
+void clamp(Color& c, const std::string& element, ColorClamping& clamping) {
+  bool changed = false;
+  for (double* v : {&c.r, &c.g, &c.b})
+    if (std::isfinite(*v) && (*v < 0.0 || *v > 1.0)) {
+      *v = std::clamp(*v, 0.0, 1.0);
+      changed = true;
+    }
+  if (!changed) return;
+  if (clamping.clamped++ == 0) clamping.first = element;
+}
+
+// What follows reading the values, on either path: --clamp-colors, then the meaning
+// (scantrace::validate).
+void finish_scene(Scene& s, const std::string& file, ColorClamping* clamping) {
+  if (clamping) {
+    for (std::size_t i = 0; i < s.vcolors.size(); ++i)
+      clamp(s.vcolors[i], at("vcolors", i), *clamping);
+    clamp(s.background, "background", *clamping);
+  }
+  if (const auto problem = validate(s)) throw InputError(file, problem->element, problem->problem);
 }
 
 class SceneReader {
@@ -76,29 +102,11 @@ class SceneReader {
     if (const json* w = optional_key("width")) s.width = canvas_size(*w, "width");
     if (const json* h = optional_key("height")) s.height = canvas_size(*h, "height");
     if (const json* b = optional_key("background")) s.background = color(*b, "background");
-    if (clamping_) {
-      for (std::size_t i = 0; i < s.vcolors.size(); ++i) clamp(s.vcolors[i], at("vcolors", i));
-      clamp(s.background, "background");
-    }
-
-    if (const auto problem = validate(s)) fail(problem->element, problem->problem);
+    finish_scene(s, file_, clamping_);
     return s;
   }
 
  private:
-  // Only finite components are clamped: a number too large for a double is damage, not a colour
-  // slightly out of range, and stays an error.
-  void clamp(Color& c, const std::string& element) const {
-    bool changed = false;
-    for (double* v : {&c.r, &c.g, &c.b})
-      if (std::isfinite(*v) && (*v < 0.0 || *v > 1.0)) {
-        *v = std::clamp(*v, 0.0, 1.0);
-        changed = true;
-      }
-    if (!changed) return;
-    if (clamping_->clamped++ == 0) clamping_->first = element;
-  }
-
   [[noreturn]] void fail(const std::string& element, const std::string& problem) const {
     throw InputError(file_, element, problem);
   }
@@ -179,6 +187,18 @@ class SceneReader {
 
 Scene parse_scene_text(std::string_view text, const std::string& name_for_errors,
                        ColorClamping* clamping) {
+  // The memory check first, on either path: it is what keeps a huge file from the kernel's
+  // out-of-memory killer (simdjson needs less than the nlohmann DOM it is estimated for).
+  json_input::check_dom_memory(text, name_for_errors);
+  if (std::optional<Scene> s = read_scene_fast(text)) {
+    finish_scene(*s, name_for_errors, clamping);
+    return std::move(*s);
+  }
+  return parse_scene_text_without_fast_path(text, name_for_errors, clamping);
+}
+
+Scene parse_scene_text_without_fast_path(std::string_view text, const std::string& name_for_errors,
+                                         ColorClamping* clamping) {
   const json root = json_input::parse(text, name_for_errors);
   return SceneReader(root, name_for_errors, clamping).read();
 }

@@ -106,15 +106,11 @@ std::uint64_t estimated_dom_bytes(std::string_view text) {
   return 16 * values + 64 * containers;
 }
 
-void check_dom_memory(std::string_view text, const std::string& name_for_errors) {
+nlohmann::json parse(std::string_view text, const std::string& name_for_errors, int max_depth) {
   // A file of 10^7 faces is 350 MB of text and about 2.5 GB as a DOM: refused here, naming the
   // file, when that is more than the memory there is, instead of being killed by the kernel.
   check_memory(estimated_dom_bytes(text), "parsing its JSON (" + format_bytes(text.size()) + ")",
                name_for_errors, "");
-}
-
-nlohmann::json parse(std::string_view text, const std::string& name_for_errors, int max_depth) {
-  check_dom_memory(text, name_for_errors);
   if (const auto at = find_excess_nesting(text, max_depth)) {
     const TextPosition p = position_of(text, *at);
     throw InputError(

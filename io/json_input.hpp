@@ -42,10 +42,6 @@ std::optional<std::size_t> find_excess_nesting(std::string_view text,
 // memory available (io/memory_budget.hpp) before parsing.
 std::uint64_t estimated_dom_bytes(std::string_view text);
 
-// Throws InputError naming `name_for_errors` when estimated_dom_bytes(text) is more than the
-// memory available (io/memory_budget.hpp). parse() checks it first; so does the scene's fast path.
-void check_dom_memory(std::string_view text, const std::string& name_for_errors);
-
 // "JSON nested deeper than 64 levels": the problem, for readers that format their own position.
 std::string nesting_problem(int max_depth = kMaxNestingDepth);
 

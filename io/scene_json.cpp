@@ -187,9 +187,6 @@ class SceneReader {
 
 Scene parse_scene_text(std::string_view text, const std::string& name_for_errors,
                        ColorClamping* clamping) {
-  // The memory check first, on either path: it is what keeps a huge file from the kernel's
-  // out-of-memory killer (simdjson needs less than the nlohmann DOM it is estimated for).
-  json_input::check_dom_memory(text, name_for_errors);
   if (std::optional<Scene> s = read_scene_fast(text)) {
     finish_scene(*s, name_for_errors, clamping);
     return std::move(*s);

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "io/memory_budget.hpp"
+
 namespace scantrace {
 namespace {
 
@@ -61,6 +63,12 @@ bool read_array(element e, std::vector<T>& out, Read read) {
 }  // namespace
 
 std::optional<Scene> read_scene_fast(std::string_view text) {
+  // simdjson sizes its buffers by the text: a padded copy, 4 bytes of structural index and 8 of
+  // tape per byte, and 5/3 of a byte of strings: about 15 bytes per byte, more than the nlohmann
+  // DOM that json_input::parse checks against the memory there is (about 2 for a scene file).
+  // Where they would not fit, the nlohmann reader reads the text, or refuses it naming the file.
+  if (const auto available = available_memory(); available && 15 * text.size() > *available)
+    return std::nullopt;
   simdjson::dom::parser parser;
   element root;
   object fields;

@@ -16,7 +16,9 @@
 namespace scantrace {
 
 // The scene's values as the file gives them (colours not yet clamped, the scene not validated),
-// or nullopt when the text is not a scene of exactly the expected shape.
+// or nullopt when the text is not a scene of exactly the expected shape, or when simdjson's
+// buffers (about 15 bytes per byte of text) would not fit in the memory available
+// (io/memory_budget.hpp).
 std::optional<Scene> read_scene_fast(std::string_view text);
 
 // parse_scene_text by the nlohmann reader alone: what the fast path must agree with (the tests

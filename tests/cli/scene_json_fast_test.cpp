@@ -1,6 +1,7 @@
 // The scene file's fast path (io/scene_json_fast.hpp) against the nlohmann reader it stands in for:
 // on every input made here, the same scene (bit for bit) or the same error message, with and
 // without --clamp-colors; and the fast path really taken on well-formed scenes.
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -139,4 +140,18 @@ TEST_CASE("scene fast path: every malformed or unusual scene gives the nlohmann 
     }
     check_agree(text);
   }
+}
+
+TEST_CASE("scene fast path: declined where simdjson's buffers would not fit, the scene still read",
+          "[scene_json][size]") {
+  const std::string text = scene_to_json(demo_scene());
+  REQUIRE(read_scene_fast(text).has_value());
+  // Room for the nlohmann DOM (about 2 bytes per byte of this text), not for simdjson's 15.
+  ::setenv("SCANTRACE_MAX_MEMORY", std::to_string(10 * text.size()).c_str(), 1);
+  const bool declined = !read_scene_fast(text).has_value();
+  const std::string slow = outcome(text, true, false);
+  ::unsetenv("SCANTRACE_MAX_MEMORY");
+  CHECK(declined);
+  CHECK(slow == outcome(text, false, false));
+  CHECK(slow.rfind("error", 0) != 0);
 }

@@ -95,9 +95,11 @@ Scene far_vertex_visible_part() {
   return s;
 }
 
-Scene grid_mesh(std::uint64_t seed, int width, int height, int cells_x, int cells_y) {
-  SplitMix64 rng(seed);
-  Scene s = canvas(width, height);
+namespace {
+
+// The corners of a width × height canvas cut into cells_x × cells_y cells, row by row, the inner
+// ones moved at random by up to 0.3 of a cell (the border stays on the canvas's edges).
+std::vector<Vec2> jittered_grid(SplitMix64& rng, int width, int height, int cells_x, int cells_y) {
   const double w = static_cast<double>(width) / cells_x, h = static_cast<double>(height) / cells_y;
   std::vector<Vec2> grid;
   for (int j = 0; j <= cells_y; ++j)
@@ -106,6 +108,15 @@ Scene grid_mesh(std::uint64_t seed, int width, int height, int cells_x, int cell
       grid.push_back({i * w + (inner ? rng.uniform(-0.3, 0.3) * w : 0),
                       j * h + (inner ? rng.uniform(-0.3, 0.3) * h : 0)});
     }
+  return grid;
+}
+
+}  // namespace
+
+Scene grid_mesh(std::uint64_t seed, int width, int height, int cells_x, int cells_y) {
+  SplitMix64 rng(seed);
+  Scene s = canvas(width, height);
+  const std::vector<Vec2> grid = jittered_grid(rng, width, height, cells_x, cells_y);
   const auto at = [&](int i, int j) {
     return grid[static_cast<std::size_t>(j) * (cells_x + 1) + i];
   };
@@ -123,18 +134,14 @@ Scene surface_layers(std::uint64_t seed, int width, int height, int cells_x, int
                      int layers) {
   SplitMix64 rng(seed);
   Scene s = canvas(width, height);
-  const double w = static_cast<double>(width) / cells_x, h = static_cast<double>(height) / cells_y;
   const int row = cells_x + 1;
   for (int k = 0; k < layers; ++k) {
     const int first = static_cast<int>(s.vertices.size());
-    for (int j = 0; j <= cells_y; ++j)
-      for (int i = 0; i <= cells_x; ++i) {
-        const bool inner = i > 0 && j > 0 && i < cells_x && j < cells_y;
-        s.vertices.push_back({i * w + (inner ? rng.uniform(-0.3, 0.3) * w : 0),
-                              j * h + (inner ? rng.uniform(-0.3, 0.3) * h : 0)});
-        s.vcolors.push_back(random_color(rng));
-        s.depth.push_back(k + rng.uniform(0, 1));
-      }
+    for (const Vec2 corner : jittered_grid(rng, width, height, cells_x, cells_y)) {
+      s.vertices.push_back(corner);
+      s.vcolors.push_back(random_color(rng));
+      s.depth.push_back(k + rng.uniform(0, 1));
+    }
     for (int j = 0; j < cells_y; ++j)
       for (int i = 0; i < cells_x; ++i) {
         const int a = first + j * row + i;

@@ -36,15 +36,25 @@ inline SkipReason snap_vertices(std::span<const Vec2> points, std::span<const Co
   return SkipReason::none;
 }
 
-// Whether the bounding box of `p` holds a pixel centre under `rule` (no_pixel_centre) and one of
-// the canvas's columns [0, width) and rows `band` (offscreen), before any per-row work.
-inline SkipReason covers_pixels(std::span<const FixedPoint> p, const SubpixelGrid& grid,
-                                FillRule rule, int width, RowBand band) {
-  i64 x_min = p[0].x, x_max = p[0].x, y_min = p[0].y, y_max = p[0].y;
-  for (const FixedPoint& q : p) {
-    x_min = std::min(x_min, q.x), x_max = std::max(x_max, q.x);
-    y_min = std::min(y_min, q.y), y_max = std::max(y_max, q.y);
+// The bounding box of snapped vertices, in grid units.
+struct GridBox {
+  i64 x_min, x_max, y_min, y_max;
+};
+
+inline GridBox grid_box(std::span<const FixedPoint> p) {
+  GridBox b{p[0].x, p[0].x, p[0].y, p[0].y};
+  for (const FixedPoint& q : p.subspan(1)) {
+    b.x_min = std::min(b.x_min, q.x), b.x_max = std::max(b.x_max, q.x);
+    b.y_min = std::min(b.y_min, q.y), b.y_max = std::max(b.y_max, q.y);
   }
+  return b;
+}
+
+// Whether the bounding box `b` of a polygon holds a pixel centre under `rule` (no_pixel_centre)
+// and one of the canvas's columns [0, width) and rows `band` (offscreen), before any per-row work.
+inline SkipReason covers_pixels(const GridBox& b, const SubpixelGrid& grid, FillRule rule,
+                                int width, RowBand band) {
+  const auto [x_min, x_max, y_min, y_max] = b;
   const bool closed = rule == FillRule::closed;
   // The pixel rows and columns the bounding box spans under the fill rule, before clipping.
   const i64 col_first = grid.ceil_to_pixel(x_min), row_first = grid.ceil_to_pixel(y_min);

@@ -28,9 +28,11 @@
 #include "flat_span.hpp"
 #include "halfspace_fill.hpp"
 #include "occlusion_canvas.hpp"
+#include "row_cursor.hpp"
 #include "row_rule.hpp"
 #include "row_trace.hpp"
 #include "scanline_sweep.hpp"
+#include "small_triangle.hpp"
 #include "span.hpp"
 #include "tracer.hpp"
 #include "triangle_sweep.hpp"
@@ -171,21 +173,7 @@ struct ConvexRows : RowRule<C, Tracer> {
     const bool gouraud = opt.shading == Shading::gouraud;
     const bool shade = gouraud && !uniform;
     const int width = canvas.width();
-    // A DirectCanvas's rows are reached by stepping a pointer held in a register: after a store
-    // through a byte pointer, canvas.row(y) would reload the image's address and width.
-    [[maybe_unused]] DirectPixel<C>* row = nullptr;
-    [[maybe_unused]] std::ptrdiff_t row_stride = 0;
-    if constexpr (DirectCanvas<C>)
-      row = canvas.row(static_cast<int>(y)), row_stride = canvas.row_stride();
-    // Near to far (occlusion_canvas.hpp): the coverage mask's row, stepped like the image's, and
-    // whether this face's spans need clipping at all (its box may be all uncovered).
-    [[maybe_unused]] std::uint64_t* cover = nullptr;
-    [[maybe_unused]] std::ptrdiff_t cover_stride = 0;
-    [[maybe_unused]] bool clip = false;
-    [[maybe_unused]] i64 claimed = 0;
-    if constexpr (CoverageCanvas<C>)
-      cover = canvas.coverage_row(static_cast<int>(y)), cover_stride = canvas.coverage_stride(),
-      clip = canvas.clipping();
+    RowCursor<C> at(canvas, y);
     const std::size_t n_active = active.size();
     const Edge* left = n_active >= 2 ? &active.front().edge : nullptr;
     const Edge* right = n_active >= 2 ? &active.back().edge : nullptr;
@@ -228,24 +216,11 @@ struct ConvexRows : RowRule<C, Tracer> {
       // counts in `written`, the pixels the face owns.
       bool hidden = false;
       if constexpr (CoverageCanvas<C>)
-        hidden = shade && has_span && clip && CoverageMask::covered(cover, xb, xe);
+        hidden = shade && has_span && at.clip && CoverageMask::covered(at.cover, xb, xe);
       if (has_span && !hidden) {
         const bool trace_pixels = trace.pixels(y);
         if (!shade) {
-          if constexpr (CoverageCanvas<C>) {
-            if (clip) {
-              claimed += CoverageMask::claim(cover, xb, xe, [&](int a, int b) {
-                flat_row.fill(row + a, row + b, flat_pixel);
-              });
-            } else {
-              CoverageMask::mark(cover, xb, xe);
-              claimed += xe - xb;
-              flat_row.fill(row + xb, row + xe, flat_pixel);
-            }
-          } else if constexpr (DirectCanvas<C>)
-            flat_row.fill(row + xb, row + xe, flat_pixel);
-          else
-            canvas.fill_span(yi, xb, xe, flat);
+          at.fill_flat(canvas, flat_row, flat_pixel, flat, yi, xb, xe);
           if (trace_pixels)
             for (int x = xb; x < xe; ++x) trace.pixel(canvas, x, y, flat, span.weight(x));
         } else {
@@ -255,17 +230,17 @@ struct ConvexRows : RowRule<C, Tracer> {
           // tracing never changes a pixel); the loop below then only narrates.
           constexpr bool kCanvasShades = DirectCanvas<C> && std::is_same_v<Stepper, ExactStepper>;
           if constexpr (kCanvasShades && CoverageCanvas<C>) {
-            if (clip) {
+            if (at.clip) {
               ShadedSpan<DirectPixel<C>> part(xb, xe, shader.c, shader.step);
-              claimed +=
-                  CoverageMask::claim(cover, xb, xe, [&](int a, int b) { part.write(row, a, b); });
+              at.claimed += CoverageMask::claim(at.cover, xb, xe,
+                                                [&](int a, int b) { part.write(at.row, a, b); });
             } else {
-              CoverageMask::mark(cover, xb, xe);
-              claimed += xe - xb;
-              shade_pixels(row, xb, xe, shader.c, shader.step);
+              CoverageMask::mark(at.cover, xb, xe);
+              at.claimed += xe - xb;
+              shade_pixels(at.row, xb, xe, shader.c, shader.step);
             }
           } else if constexpr (kCanvasShades) {
-            shade_pixels(row, xb, xe, shader.c, shader.step);
+            shade_pixels(at.row, xb, xe, shader.c, shader.step);
           }
           if (trace_row) span.begin = shader.color();
           if (!kCanvasShades || trace_row) {
@@ -287,15 +262,37 @@ struct ConvexRows : RowRule<C, Tracer> {
       for (std::size_t i = n_active >= 2 ? 1 : 0; i + 1 < n_active; ++i) active[i].at.advance();
       if (n_active == 1) active[0].at.advance();
       if (y == run_last) break;
-      if constexpr (DirectCanvas<C>) row += row_stride;
-      if constexpr (CoverageCanvas<C>) cover += cover_stride;
+      at.next_row();
       trace.begin_row(y + 1);
     }
     if (n_active >= 2) active.front().at = l, active.back().at = r;
     pixels += written;
-    if constexpr (CoverageCanvas<C>) canvas.add_written(claimed);
+    at.finish(canvas);
   }
 };
+
+// A small triangle of one colour (small_triangle.hpp): its rows' spans from the SIMD kernel,
+// written as the convex rule writes a flat span, and the same counts.
+template <Canvas C>
+FillResult fill_small_triangle(C& canvas, const SmallTriangle& t, Color color, FlatRow& flat_row) {
+  std::array<RowSpan, kSmallTriangleRows> spans;  // only rows [0, t.rows) are written and read
+  small_triangle_spans(t, spans.data());
+  DirectPixel<C> pixel{};
+  if constexpr (DirectCanvas<C>) pixel = C::convert(color);
+  RowCursor<C> at(canvas, t.row0);
+  i64 pixels = 0;
+  for (int r = 0;;) {
+    const RowSpan span = spans[r];
+    if (span.begin < span.end) {
+      at.fill_flat(canvas, flat_row, pixel, color, t.row0 + r, span.begin, span.end);
+      pixels += span.end - span.begin;
+    }
+    if (++r == t.rows) break;
+    at.next_row();
+  }
+  at.finish(canvas);
+  return {SkipReason::none, t.rows, pixels};
+}
 
 }  // namespace detail
 
@@ -328,8 +325,9 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   if (opt.cull != Cull::none && (opt.cull == Cull::back ? area2 > 0 : area2 < 0))
     return skip(SkipReason::culled);
 
+  const GridBox box = grid_box(pts);
   if (const SkipReason r =
-          covers_pixels(pts, grid, opt.fill_rule, canvas.width(), canvas_rows(canvas));
+          covers_pixels(box, grid, opt.fill_rule, canvas.width(), canvas_rows(canvas));
       r != SkipReason::none)
     return skip(r);
 
@@ -349,23 +347,28 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
                                          .grid = grid,
                                          .vertex_depths = in.vertex_depths});
 
+  // An untraced triangle of the exact method under the top-left rule needs no edge table
+  // (triangle_sweep.hpp), and a small one of one colour not even its edges (small_triangle.hpp);
+  // everything else is swept from its table.
+  const bool triangle = pts.size() == 3 && opt.method == Method::exact &&
+                        opt.fill_rule == FillRule::top_left && !traced;
+  const bool uniform =
+      opt.shading == Shading::gouraud && std::all_of(in.colors.begin() + 1, in.colors.end(),
+                                                     [&](Color c) { return c == in.colors[0]; });
+  const Color fill_color = uniform ? in.colors[0] : flat;
   FillResult result;
+  SmallTriangle small;
   if (opt.method == Method::halfspace) {
     result = fill_halfspace(canvas, pts, in.colors, opt, flat);
+  } else if (triangle && (opt.shading == Shading::flat || uniform) &&
+             small_triangle(pts, box, grid, canvas.width(), canvas_rows(canvas), small)) {
+    result = detail::fill_small_triangle(canvas, small, fill_color, s.flat_row);
   } else {
-    // An untraced triangle of the exact method under the top-left rule needs no edge table
-    // (triangle_sweep.hpp); everything else is swept from its table.
-    const bool triangle = pts.size() == 3 && opt.method == Method::exact &&
-                          opt.fill_rule == FillRule::top_left && !traced;
     if (!triangle) s.table.build(pts, grid, opt.fill_rule);
     if constexpr (kTriangleLevel)
       if (traced) tracer.edge_table(EdgeTableView{in.face, &s.table, pts, grid});
-    const bool uniform =
-        opt.shading == Shading::gouraud && std::all_of(in.colors.begin() + 1, in.colors.end(),
-                                                       [&](Color c) { return c == in.colors[0]; });
     RowTrace<Tracer> trace(tracer, s.trace, in.face, traced);
     result = with_stepper(opt.method, [&]<class Stepper>() {
-      const Color fill_color = uniform ? in.colors[0] : flat;
       detail::ConvexRows<Stepper, C, Tracer> rule{
           {canvas, in.colors, grid, opt, fill_color, trace}, uniform, s.flat_row};
       if constexpr (DirectCanvas<C>)

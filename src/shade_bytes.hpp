@@ -15,6 +15,7 @@
 
 #include "color.hpp"
 #include "image.hpp"
+#include "simd_targets.hpp"
 
 namespace scantrace {
 
@@ -47,11 +48,8 @@ struct ByteRamp {
 void shade_bytes_simd(Bgr8* out, int n, const ByteRamp& r, const ByteRamp& g, const ByteRamp& b);
 
 // One compiled kernel: its Highway target and entry point.
-struct SimdKernel {
-  using Function = void (*)(Bgr8*, int, const ByteRamp&, const ByteRamp&, const ByteRamp&);
-  const char* target;
-  Function function;
-};
+using ShadeBytesFunction = void (*)(Bgr8*, int, const ByteRamp&, const ByteRamp&, const ByteRamp&);
+using SimdKernel = SimdKernelOf<ShadeBytesFunction>;
 // The kernels this CPU can run, best first (the first is shade_bytes_simd's); tests run each.
 std::span<const SimdKernel> shade_bytes_kernels();
 

@@ -1,22 +1,12 @@
 // The SIMD kernel of shade_bytes.hpp, compiled once per Highway target (foreach_target.h) and
-// chosen at run time for the CPU.
-//
-// Only Highway's headers are used. Its HWY_DYNAMIC_DISPATCH would need libhwy, whose start-up code
-// runs an instruction (rdtscp) that valgrind cannot execute, and callgrind's instruction counts
-// are how this project measures the fill. So the choice is made here, from the CPU features each
-// target is compiled for (hwy/ops/set_macros-inl.h), with the compiler's __builtin_cpu_supports.
+// chosen at run time for the CPU (simd_targets.hpp says how, and why not by libhwy).
 //
 // Each channel's 32.32 value is kept as two 32-bit lanes, high and low word, so a vector holds as
 // many pixels as it has 32-bit lanes (64-bit lanes would halve that, and x86 has no 64-bit
 // multiply before AVX-512). Stepping a lane by N pixels adds N·step word by word, the low word's
 // carry taken from an unsigned compare: exactly the 64-bit sum, whose high word is the byte.
-#include <algorithm>
-#if defined(__x86_64__) || defined(__i386__)
-#include <cpuid.h>
-#endif
 #include <cstddef>
 #include <cstdint>
-#include <initializer_list>
 #include <span>
 #include <vector>
 
@@ -26,6 +16,7 @@
 #include <hwy/highway.h>
 
 #include "src/shade_bytes.hpp"
+#include "src/simd_targets.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace scantrace {
@@ -87,72 +78,16 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace scantrace {
-namespace {
-
-#if defined(__x86_64__) || defined(__i386__)
-// F16C from CPUID leaf 1 (clang's __builtin_cpu_supports does not know the name).
-int has_f16c() {
-  unsigned a = 0, b = 0, c = 0, d = 0;
-  return __get_cpuid(1, &a, &b, &c, &d) && (c & bit_F16C) != 0;
-}
-
-// Whether every __builtin_cpu_supports(...) given is nonzero (it takes only string literals).
-bool has(std::initializer_list<int> features) {
-  return std::all_of(features.begin(), features.end(), [](int f) { return f != 0; });
-}
-#endif
-
-std::vector<SimdKernel> supported_kernels() {
-  // Best first; each target needs the features Highway compiles it with, each the previous one's
-  // and more (hwy/ops/set_macros-inl.h).
-#if defined(__x86_64__) || defined(__i386__)
-  const bool ssse3 = __builtin_cpu_supports("ssse3");
-  const bool sse4 =
-      ssse3 && has({__builtin_cpu_supports("sse4.1"), __builtin_cpu_supports("sse4.2"),
-                    __builtin_cpu_supports("pclmul"), __builtin_cpu_supports("aes")});
-  const bool avx2 = sse4 && has({__builtin_cpu_supports("avx"), __builtin_cpu_supports("avx2"),
-                                 __builtin_cpu_supports("bmi"), __builtin_cpu_supports("bmi2"),
-                                 __builtin_cpu_supports("fma"), has_f16c()});
-  const bool avx3 =
-      avx2 && has({__builtin_cpu_supports("avx512f"), __builtin_cpu_supports("avx512vl"),
-                   __builtin_cpu_supports("avx512dq"), __builtin_cpu_supports("avx512bw")});
-#else
-  [[maybe_unused]] const bool ssse3 = false, sse4 = false, avx2 = false, avx3 = false;
-#endif
-  std::vector<SimdKernel> k;
-#if HWY_TARGETS & HWY_AVX3
-  if (avx3) k.push_back({"AVX3 (AVX-512)", &N_AVX3::ShadeBytes});
-#endif
-#if HWY_TARGETS & HWY_AVX2
-  if (avx2) k.push_back({"AVX2", &N_AVX2::ShadeBytes});
-#endif
-#if HWY_TARGETS & HWY_SSE4
-  if (sse4) k.push_back({"SSE4", &N_SSE4::ShadeBytes});
-#endif
-#if HWY_TARGETS & HWY_SSSE3
-  if (ssse3) k.push_back({"SSSE3", &N_SSSE3::ShadeBytes});
-#endif
-#if HWY_TARGETS & HWY_NEON
-  k.push_back({"NEON", &N_NEON::ShadeBytes});  // every AArch64 CPU has it
-#endif
-#if HWY_TARGETS & HWY_EMU128
-  k.push_back({"EMU128 (portable)", &N_EMU128::ShadeBytes});
-#endif
-#if HWY_TARGETS & HWY_SCALAR
-  k.push_back({"SCALAR (portable)", &N_SCALAR::ShadeBytes});
-#endif
-  return k;
-}
-
-}  // namespace
 
 std::span<const SimdKernel> shade_bytes_kernels() {
-  static const std::vector<SimdKernel> kernels = supported_kernels();
+  static const std::vector<SimdKernel> kernels = runnable_kernels<ShadeBytesFunction>(
+      HWY_CHOOSE_AVX3(ShadeBytes), HWY_CHOOSE_AVX2(ShadeBytes), HWY_CHOOSE_SSE4(ShadeBytes),
+      HWY_CHOOSE_SSSE3(ShadeBytes), HWY_CHOOSE_NEON(ShadeBytes), HWY_CHOOSE_FALLBACK(ShadeBytes));
   return kernels;
 }
 
 void shade_bytes_simd(Bgr8* out, int n, const ByteRamp& r, const ByteRamp& g, const ByteRamp& b) {
-  static const SimdKernel::Function best = shade_bytes_kernels().front().function;
+  static const ShadeBytesFunction best = shade_bytes_kernels().front().function;
   best(out, n, r, g, b);
 }
 

@@ -62,13 +62,13 @@ inline bool small_triangle(std::span<const FixedPoint> p, const GridBox& box,
       row1 - row0 >= kSmallTriangleRows)
     return false;
   // The lanes evaluated lie at x in [x_min, x_max + 2·lanes·s) (a row's last vector, and the step
-  // past it) and y in [y_min, y_max + s] (the step past the last row): at most
-  // |∂E/∂x|·(dx + 2·lanes·s) + |∂E/∂y|·(dy + s) from a vertex, where each coefficient is at most
+  // past it) and y in [y_min, y_max + 2s] (the rows stepped past the last, two at a time): at most
+  // |∂E/∂x|·(dx + 2·lanes·s) + |∂E/∂y|·(dy + 2s) from a vertex, where each coefficient is at most
   // the box's size. That, plus the tie's one, must fit in 32 bits.
   const i64 s = grid.scale(), dx = x_max - x_min, dy = y_max - y_min;
   constexpr i64 kLimit = INT32_MAX;
   if (dx > (i64{1} << 24) || dy > (i64{1} << 24) ||
-      dy * (dx + 2 * kSmallTriangleLanes * s) + dx * (dy + s) + 1 > kLimit)
+      dy * (dx + 2 * kSmallTriangleLanes * s) + dx * (dy + 2 * s) + 1 > kLimit)
     return false;
 
   const i64 cross = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x);

@@ -4,9 +4,12 @@
 // A vector holds one edge function at as many consecutive pixel centres of a row as it has 32-bit
 // lanes. A fourth function, the columns left in the box, is positive on the lanes inside it, so
 // the minimum of the four is positive exactly on the centres to fill. The three edge functions
-// step by one constant per row and per vector of columns: integer adds, exact.
+// step by one constant per row and per vector of columns: integer adds, exact. A box at most half
+// a vector wide takes two rows a vector.
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <vector>
 
@@ -23,9 +26,47 @@ namespace scantrace {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// The span of the consecutive set bits of `inside` (bit j: column col0 + j), or none.
+HWY_INLINE RowSpan SpanOf(std::uint64_t inside, int col0) {
+  if (inside == 0) return RowSpan{0, 0};
+  const int first = col0 + std::countr_zero(inside);
+  return RowSpan{first, first + std::popcount(inside)};
+}
+
+// A box at most half a vector wide: two rows a vector, lanes [0, half) the row r and
+// [half, lanes) the row r + 1, so a small triangle's rows cost half the steps. Its lanes beyond the
+// box's columns are masked by the columns left, as in the general loop.
+template <class D>
+HWY_INLINE void TwoRowsAVector(D d, const SmallTriangle& t, RowSpan* out) {
+  const int lanes = static_cast<int>(hn::Lanes(d)), half = lanes / 2;
+  HWY_ALIGN std::int32_t init[4][HWY_MAX_BYTES / 4];
+  for (int j = 0; j < lanes; ++j) {
+    const int col = j % half, row = j / half;
+    for (int i = 0; i < 3; ++i) init[i][j] = t.at[i] + t.per_col[i] * col + t.per_row[i] * row;
+    init[3][j] = t.cols - col;
+  }
+  auto a = hn::Load(d, init[0]), b = hn::Load(d, init[1]), c = hn::Load(d, init[2]);
+  const auto left = hn::Load(d, init[3]);
+  const auto down0 = hn::Set(d, 2 * t.per_row[0]), down1 = hn::Set(d, 2 * t.per_row[1]),
+             down2 = hn::Set(d, 2 * t.per_row[2]);
+  const auto zero = hn::Zero(d);
+  const std::uint64_t row_bits = (std::uint64_t{1} << half) - 1;
+  for (int r = 0; r < t.rows; r += 2) {
+    const auto inside = hn::Gt(hn::Min(hn::Min(a, b), hn::Min(c, left)), zero);
+    std::uint8_t bytes[8] = {};
+    hn::StoreMaskBits(d, inside, bytes);
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, bytes, sizeof bits);
+    out[r] = SpanOf(bits & row_bits, t.col0);
+    if (r + 1 < t.rows) out[r + 1] = SpanOf((bits >> half) & row_bits, t.col0);
+    a = hn::Add(a, down0), b = hn::Add(b, down1), c = hn::Add(c, down2);
+  }
+}
+
 void SmallTriangleSpans(const SmallTriangle& t, RowSpan* out) {
   const hn::ScalableTag<std::int32_t> d;
   const int lanes = static_cast<int>(hn::Lanes(d));
+  if (lanes >= 2 && t.cols <= lanes / 2) return TwoRowsAVector(d, t, out);
   const auto iota = hn::Iota(d, 0);
   // Lane j of a row's first vector: the functions at column col0 + j.
   const auto e0 = hn::Add(hn::Set(d, t.at[0]), hn::Mul(iota, hn::Set(d, t.per_col[0])));

@@ -71,7 +71,8 @@ TEST_CASE("small triangles: every row's span is the exact reference's, on every 
       ++taken;
       // How close the lanes' edge functions may come to 2^31 (the set-up's own bound).
       const i64 dx = box.x_max - box.x_min, dy = box.y_max - box.y_min, s = grid.scale();
-      if (dy * (dx + 2 * kSmallTriangleLanes * s) + dx * (dy + s) > (i64{1} << 29)) ++near_limit;
+      if (dy * (dx + 2 * kSmallTriangleLanes * s) + dx * (dy + 2 * s) > (i64{1} << 29))
+        ++near_limit;
 
       const sttest::RefRaster ref =
           sttest::ref_rasterize(W, H, v, std::array<Color, 3>{Color{}, Color{}, Color{}},

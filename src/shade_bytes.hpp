@@ -24,12 +24,9 @@ struct ByteRamp {
   std::int64_t start = 0, step = 0;
 
   // The ramp from `first` (pixel 0) to `last` (pixel n − 1), both clamped to [0, 1].
-  // Most spans of a course scene are one or two pixels: one needs no step, two no division.
   static ByteRamp between(double first, double last, int n) {
-    const std::int64_t a = fixed(first);
-    if (n <= 1) return {a, 0};
-    const std::int64_t d = fixed(last) - a;
-    return {a, n == 2 ? d : d / (n - 1)};
+    const std::int64_t a = fixed(first), b = fixed(last);
+    return {a, n > 1 ? (b - a) / (n - 1) : 0};
   }
   // The same ramp begun k pixels later: pixel j of it is pixel k + j of this one, bit for bit
   // (a span drawn in parts, canvas.hpp's ShadedSpan).
@@ -63,7 +60,7 @@ inline constexpr int kSimdSpan = 48;
 struct ByteRamps {
   ByteRamp r, g, b;
   ByteRamps(int n, Color c, Color step) {
-    const Color last = n > 1 ? c + step * static_cast<double>(n - 1) : c;
+    const Color last = c + step * static_cast<double>(n - 1);
     r = ByteRamp::between(c.r, last.r, n);
     g = ByteRamp::between(c.g, last.g, n);
     b = ByteRamp::between(c.b, last.b, n);

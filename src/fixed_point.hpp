@@ -49,10 +49,10 @@ class SubpixelGrid {
   constexpr i64 scale() const { return i64{1} << bits_; }
   constexpr bool valid() const { return bits_ >= 0 && bits_ <= kMaxSubpixelBits; }
 
-  // True when p is finite and inside the supported coordinate range.
+  // True when p is finite and inside the supported coordinate range. One comparison a coordinate
+  // is both tests: a NaN compares false, and an infinity is beyond the range.
   static bool representable(Vec2 p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::fabs(p.x) <= kMaxCoordinate &&
-           std::fabs(p.y) <= kMaxCoordinate;
+    return std::fabs(p.x) <= kMaxCoordinate && std::fabs(p.y) <= kMaxCoordinate;
   }
 
   // Round to the nearest grid point, ties upward (floor(v + 1/2)). Unlike rounding ties away from

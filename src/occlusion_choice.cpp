@@ -67,7 +67,8 @@ Occlusion choose_occlusion(const Scene& scene, const FillOptions& opt, std::vect
   if (opt.visibility == Visibility::zbuffer &&
       static_cast<long long>(scene.width) * scene.height > 512LL * 512)
     return Occlusion::far_to_near;
-  const bool near = forms_surfaces(scene) && estimated_overdraw(scene, cells) >= kNearToFarOverdraw;
+  const bool near = forms_surfaces(scene) &&
+                    estimated_overdraw(scene, cells) >= near_to_far_overdraw(opt.shading);
   return near ? Occlusion::near_to_far : Occlusion::far_to_near;
 }
 

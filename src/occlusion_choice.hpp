@@ -34,15 +34,25 @@ double estimated_overdraw(const Scene& scene, std::vector<float>& cells);
 // on average), rather than being a soup of triangles with vertices of their own.
 bool forms_surfaces(const Scene& scene);
 
-// Estimated overdraw from which near to far is chosen for a scene that forms surfaces: the
-// break-even between the built-in scene (1.4, near to far 0.95-1.07 of the time) and the course
-// scene (2.4, 0.66).
-inline constexpr double kNearToFarOverdraw = 1.5;
+// Estimated overdraw from which near to far is chosen for a scene that forms surfaces, measured as
+// the break-even on shared-vertex grids stacked partly twice (docs/performance.md). It depends on
+// the shading: near to far saves the set-up of the faces it hides, and a small flat face's costs
+// little since its spans come from SIMD lanes (small_triangle.hpp), so flat needs more overdraw
+// to pay for the per-face box tests and span claims (near ÷ far at overdraw 1.75: flat 1.06,
+// Gouraud 0.90; at 2: 0.90 and 0.75).
+inline constexpr double kNearToFarOverdrawFlat = 1.9;
+inline constexpr double kNearToFarOverdraw = 1.6;  // Gouraud
+
+// The threshold for a render's shading.
+constexpr double near_to_far_overdraw(Shading shading) {
+  return shading == Shading::flat ? kNearToFarOverdrawFlat : kNearToFarOverdraw;
+}
 
 // The way an untraced render of `scene` draws with these options: opt.occlusion itself unless it
-// is automatic. The painter's render goes near to far on surfaces stacked kNearToFarOverdraw
-// deep or more; the z-buffer, which pays for near to far in random accesses to its depth and
-// owner buffers, only when the image is also no larger than 512 × 512 (the course's canvas).
+// is automatic. The painter's render goes near to far on surfaces stacked
+// near_to_far_overdraw(opt.shading) deep or more; the z-buffer, which pays for near to far in
+// random accesses to its depth and owner buffers, only when the image is also no larger than 512 ×
+// 512 (the course's canvas).
 Occlusion choose_occlusion(const Scene& scene, const FillOptions& opt, std::vector<float>& cells);
 
 }  // namespace scantrace

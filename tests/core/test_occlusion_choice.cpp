@@ -3,6 +3,7 @@
 // choice it makes, and a render that lets it choose against one told which way to draw.
 #include <catch2/catch.hpp>
 
+#include <tuple>
 #include <vector>
 
 #include "src/occlusion_choice.hpp"
@@ -132,9 +133,13 @@ TEST_CASE("choose_occlusion: near to far for surfaces stacked deep enough, else 
   CHECK(choose_occlusion(large, zbuffer, cells) == Occlusion::far_to_near);
   CHECK(choose_occlusion(one, zbuffer, cells) == Occlusion::far_to_near);
   // Overdraw 1.25 and 1.75 (a second layer over a quarter or three quarters of the canvas, its
-  // columns cut at whole quads): on either side of kNearToFarOverdraw.
-  for (const auto& [quads, expect] :
-       {std::pair{10, Occlusion::far_to_near}, std::pair{30, Occlusion::near_to_far}}) {
+  // columns cut at whole quads): on either side of the Gouraud threshold, and both below the flat
+  // one, which needs more overdraw (near_to_far_overdraw).
+  const FillOptions flat{.shading = Shading::flat}, gouraud{.shading = Shading::gouraud};
+  REQUIRE(painter.shading == Shading::gouraud);  // the default's
+  for (const auto& [quads, flat_way, gouraud_way] :
+       {std::tuple{10, Occlusion::far_to_near, Occlusion::far_to_near},
+        std::tuple{30, Occlusion::far_to_near, Occlusion::near_to_far}}) {
     Scene partial = stacked_grids(512, 40, 2);
     // Drop the second layer's faces outside its first `quads` columns of quads.
     const std::size_t layer = partial.faces.size() / 2;
@@ -143,8 +148,11 @@ TEST_CASE("choose_occlusion: near to far for surfaces stacked deep enough, else 
       if (static_cast<int>((f - layer) / 2 % 40) < quads) kept.push_back(partial.faces[f]);
     partial.faces = kept;
     INFO(quads << " of 40 columns twice over");
-    CHECK(choose_occlusion(partial, painter, cells) == expect);
+    CHECK(choose_occlusion(partial, flat, cells) == flat_way);
+    CHECK(choose_occlusion(partial, gouraud, cells) == gouraud_way);
   }
+  CHECK(choose_occlusion(three, flat, cells) == Occlusion::near_to_far);
+  CHECK(choose_occlusion(one, flat, cells) == Occlusion::far_to_near);
   // An explicit way is kept, whatever the scene.
   for (Occlusion way : {Occlusion::near_to_far, Occlusion::far_to_near}) {
     CHECK(choose_occlusion(soup, FillOptions{.occlusion = way}, cells) == way);
@@ -156,9 +164,10 @@ TEST_CASE("the default render: the way it chose, and the far-to-near image", "[o
   for (const Scene& scene :
        {stacked_grids(300, 23, 3), stacked_grids(300, 23, 1), stacked_grids(300, 23, 3, false)}) {
     std::vector<float> cells;
-    const Occlusion chosen = choose_occlusion(scene, FillOptions{}, cells);
     for (Shading shading : {Shading::flat, Shading::gouraud})
       for (Visibility visibility : {Visibility::painter, Visibility::zbuffer}) {
+        const Occlusion chosen = choose_occlusion(
+            scene, FillOptions{.shading = shading, .visibility = visibility}, cells);
         INFO(to_string(shading) << ", " << to_string(visibility) << ", chose "
                                 << to_string(chosen));
         const FillOptions automatic{.shading = shading, .visibility = visibility},

@@ -330,9 +330,8 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   if (opt.cull != Cull::none && (opt.cull == Cull::back ? area2 > 0 : area2 < 0))
     return skip(SkipReason::culled);
 
-  const GridBox box = grid_box(pts);
-  if (const SkipReason r =
-          covers_pixels(box, grid, opt.fill_rule, canvas.width(), canvas_rows(canvas));
+  const GridBox box = grid_box(pts, grid, opt.fill_rule);
+  if (const SkipReason r = covers_pixels(box, canvas.width(), canvas_rows(canvas));
       r != SkipReason::none)
     return skip(r);
 
@@ -366,7 +365,8 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   if (opt.method == Method::halfspace) {
     result = fill_halfspace(canvas, pts, in.colors, opt, flat);
   } else if (triangle && (opt.shading == Shading::flat || uniform) &&
-             small_triangle(pts, box, grid, canvas.width(), canvas_rows(canvas), small)) {
+             small_triangle(pts, box, area2 > 0, grid, canvas.width(), canvas_rows(canvas),
+                            small)) {
     result = detail::fill_small_triangle(canvas, small, fill_color, s.flat_row);
   } else {
     if (!triangle) s.table.build(pts, grid, opt.fill_rule);

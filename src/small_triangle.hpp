@@ -46,18 +46,15 @@ inline constexpr int kSmallTriangleRows = 128;
 // The most lanes a kernel tests past a row's last column (AVX-512: 16 lanes of 32 bits).
 inline constexpr int kSmallTriangleLanes = 16;
 
-// Sets `t` up for the triangle `p` (snapped, of non-zero area, its bounding box `box`) under the
-// top-left rule: false when its box is larger than the limits above, or when an edge function
-// could leave 32 bits on the lanes the kernel tests.
-inline bool small_triangle(std::span<const FixedPoint> p, const GridBox& box,
+// Sets `t` up for the triangle `p` (snapped, its bounding box `box` under the top-left rule,
+// `positive` the sign of twice its area, which is not zero: both known to the fill already): false
+// when its box is larger than the limits above, or when an edge function could leave 32 bits on
+// the lanes the kernel tests.
+inline bool small_triangle(std::span<const FixedPoint> p, const GridBox& box, bool positive,
                            const SubpixelGrid& grid, int width, RowBand band, SmallTriangle& t) {
-  const auto [x_min, x_max, y_min, y_max] = box;
-  // A centre exactly on the right or bottom end of the box lies on a right or bottom edge (or is
-  // a vertex where one ends), which the top-left rule leaves to the neighbour.
-  const i64 col0 = std::max<i64>(grid.ceil_to_pixel(x_min), 0);
-  const i64 col1 = std::min<i64>(grid.ceil_to_pixel(x_max) - 1, width - 1);
-  const i64 row0 = std::max<i64>(grid.ceil_to_pixel(y_min), band.begin);
-  const i64 row1 = std::min<i64>(grid.ceil_to_pixel(y_max) - 1, band.end - 1);
+  const i64 col0 = std::max<i64>(box.col_first, 0), col1 = std::min<i64>(box.col_last, width - 1);
+  const i64 row0 = std::max<i64>(box.row_first, band.begin);
+  const i64 row1 = std::min<i64>(box.row_last, band.end - 1);
   if (col1 < col0 || row1 < row0 || col1 - col0 >= kSmallTriangleCols ||
       row1 - row0 >= kSmallTriangleRows)
     return false;
@@ -65,14 +62,13 @@ inline bool small_triangle(std::span<const FixedPoint> p, const GridBox& box,
   // past it) and y in [y_min, y_max + 2s] (the rows stepped past the last, two at a time): at most
   // |∂E/∂x|·(dx + 2·lanes·s) + |∂E/∂y|·(dy + 2s) from a vertex, where each coefficient is at most
   // the box's size. That, plus the tie's one, must fit in 32 bits.
-  const i64 s = grid.scale(), dx = x_max - x_min, dy = y_max - y_min;
+  const i64 s = grid.scale(), dx = box.x_max - box.x_min, dy = box.y_max - box.y_min;
   constexpr i64 kLimit = INT32_MAX;
   if (dx > (i64{1} << 24) || dy > (i64{1} << 24) ||
       dy * (dx + 2 * kSmallTriangleLanes * s) + dx * (dy + 2 * s) + 1 > kLimit)
     return false;
 
-  const i64 cross = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x);
-  const i64 sign = cross > 0 ? 1 : -1;  // makes the inside positive
+  const i64 sign = positive ? 1 : -1;  // makes the inside positive
   for (int i = 0; i < 3; ++i) {
     const FixedPoint a = p[i], b = p[i == 2 ? 0 : i + 1];
     const i64 ex = -sign * (b.y - a.y), ey = sign * (b.x - a.x);  // per grid unit

@@ -170,7 +170,7 @@ FillResult fill_polygon_contours(C& canvas, std::span<const std::vector<Vec2>> c
   }
   if (const SkipReason r = snap_vertices(s.points, colors, grid, s.snapped); r != SkipReason::none)
     return skip(r);
-  if (const SkipReason r = covers_pixels(grid_box(s.snapped), grid, FillRule::top_left,
+  if (const SkipReason r = covers_pixels(grid_box(s.snapped, grid, FillRule::top_left),
                                          canvas.width(), canvas_rows(canvas));
       r != SkipReason::none)
     return skip(r);

@@ -62,9 +62,9 @@ TEST_CASE("small triangles: every row's span is the exact reference's, on every 
       const int a = static_cast<int>(rng.next() % (H + 1)),
                 b = static_cast<int>(rng.next() % (H + 1));
       const RowBand band = i % 3 == 0 ? RowBand{0, H} : RowBand{std::min(a, b), std::max(a, b)};
-      const GridBox box = grid_box(p);
+      const GridBox box = grid_box(p, grid, FillRule::top_left);
       SmallTriangle t;
-      if (!small_triangle(p, box, grid, W, band, t)) {
+      if (!small_triangle(p, box, cross > 0, grid, W, band, t)) {
         ++declined;
         continue;
       }
@@ -119,7 +119,9 @@ TEST_CASE("small triangles: the set-up refuses what the kernel cannot do exactly
   SmallTriangle t;
   const auto setup = [&](std::array<Vec2, 3> v, int width = 512, RowBand band = {0, 512}) {
     const std::array<FixedPoint, 3> p{grid.snap(v[0]), grid.snap(v[1]), grid.snap(v[2])};
-    return small_triangle(p, grid_box(p), grid, width, band, t);
+    const i64 cross = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x);
+    return small_triangle(p, grid_box(p, grid, FillRule::top_left), cross > 0, grid, width, band,
+                          t);
   };
   CHECK(setup({Vec2{10, 10}, Vec2{20, 12}, Vec2{12, 30}}));
   CHECK(t.col0 == 10);

@@ -28,7 +28,7 @@ foreach(component IN LISTS scantrace_components)
           DESTINATION ${SCANTRACE_INSTALL_CMAKEDIR} COMPONENT development)
 endforeach()
 
-# The PNG writer (libpng) that viz's write_png and the command share, in viz's export set.
+# The PNG writer (libdeflate) that viz's write_png and the command share, in viz's export set.
 set_target_properties(scantrace_png PROPERTIES EXPORT_NAME png)
 get_target_property(png_links scantrace_png INTERFACE_LINK_LIBRARIES)
 list(REMOVE_ITEM png_links "$<LINK_ONLY:scantrace_warnings>")

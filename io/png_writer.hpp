@@ -1,8 +1,9 @@
 #pragma once
-// The `scantrace render` command's PNG writer, on libpng alone: a render that loads no OpenCV
-// starts in milliseconds, where OpenCV's image codecs bring in 260 shared libraries and 140 ms of
-// dynamic linking before main() (docs/performance.md, "The one-shot command"). The libraries'
-// write_png (viz/image_file.hpp) stays on OpenCV, with the reading and the videos.
+// The PNG writer of `scantrace render` and of the libraries' write_png (viz/image_file.hpp): the
+// container written here, the rows compressed by libdeflate. A render that loads no OpenCV starts
+// in milliseconds, where OpenCV's image codecs bring in 260 shared libraries and 140 ms of
+// dynamic linking before main() (docs/performance.md, "The one-shot command"); reading images
+// and writing videos stay on OpenCV.
 #include <filesystem>
 
 #include "src/image.hpp"

@@ -185,13 +185,23 @@ class SceneReader {
 
 }  // namespace
 
-Scene parse_scene_text(std::string_view text, const std::string& name_for_errors,
-                       ColorClamping* clamping) {
-  if (std::optional<Scene> s = read_scene_fast(text)) {
+namespace {
+
+// `padding`: bytes after the text that may be read (read_scene_fast).
+Scene parse(std::string_view text, std::size_t padding, const std::string& name_for_errors,
+            ColorClamping* clamping) {
+  if (std::optional<Scene> s = read_scene_fast(text, padding)) {
     finish_scene(*s, name_for_errors, clamping);
     return std::move(*s);
   }
   return parse_scene_text_without_fast_path(text, name_for_errors, clamping);
+}
+
+}  // namespace
+
+Scene parse_scene_text(std::string_view text, const std::string& name_for_errors,
+                       ColorClamping* clamping) {
+  return parse(text, 0, name_for_errors, clamping);
 }
 
 Scene parse_scene_text_without_fast_path(std::string_view text, const std::string& name_for_errors,
@@ -207,7 +217,8 @@ Scene parse_scene(std::istream& in, const std::string& name_for_errors, ColorCla
 }
 
 Scene load_scene(const std::filesystem::path& file, ColorClamping* clamping) {
-  return parse_scene_text(json_input::read_text_file(file), file.string(), clamping);
+  const std::string text = json_input::read_text_file(file);
+  return parse(text, text.capacity() - text.size(), file.string(), clamping);
 }
 
 }  // namespace scantrace

@@ -10,9 +10,9 @@ set -euo pipefail
 # (pkg-config finds libmatio-dev, the MATLAB .mat reader, which has no CMake package.)
 # (libxcb1-dev: `scantrace step` makes the X connection itself before HighGUI's Qt would abort on
 # a refused one, cli/x_display.hpp.) (libhwy-dev: Google Highway, the core's SIMD Gouraud spans,
-# src/shade_bytes.hpp.) (libpng-dev: the PNG writer of `scantrace render`, which loads no OpenCV,
-# io/png_writer.hpp.) (libsimdjson-dev: the scene file's fast path, io/scene_json_fast.hpp.)
-demo_packages=(cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libsimdjson-dev libopencv-dev libpng-dev
+# src/shade_bytes.hpp.) (libdeflate-dev: the compressor of the PNG writer of `scantrace render`,
+# which loads no OpenCV, io/png_writer.hpp.) (libsimdjson-dev: the scene file's fast path, io/scene_json_fast.hpp.)
+demo_packages=(cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libsimdjson-dev libopencv-dev libdeflate-dev
                libcli11-dev libtinyobjloader-dev libmatio-dev libxcb1-dev libhwy-dev)
 
 # THE FULL LIST (the test command, CI): every package, the demo's included; append new ones here.
@@ -22,7 +22,7 @@ packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 l
           libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev clang-14 libfuzzer-14-dev
           ccache
           pybind11-dev python3-dev python3-numpy python3-pytest)
-packages+=(pkg-config libmatio-dev libxcb1-dev libhwy-dev libpng-dev libsimdjson-dev)
+packages+=(pkg-config libmatio-dev libxcb1-dev libhwy-dev libdeflate-dev libsimdjson-dev)
 # Stepping through replays: Qt's headers for the window's focus fix (cli/highgui_focus.hpp), and
 # for the tests a virtual display, xdotool and headless chromium.
 packages+=(qtbase5-dev xvfb xdotool chromium)

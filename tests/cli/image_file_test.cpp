@@ -9,6 +9,7 @@
 
 #include "cli_test_support.hpp"
 #include "io/input_error.hpp"
+#include "src/splitmix64.hpp"
 #include "viz/image_file.hpp"
 #include "viz/opencv_image.hpp"
 
@@ -97,6 +98,39 @@ TEST_CASE("write_png replaces an existing file and leaves nothing on failure", "
                     Catch::StartsWith((dir / "taken.png").string() + ": cannot write"));
   CHECK(test::file_names(dir.path()) == std::vector<std::string>{"out.png", "taken.png"});
   CHECK_THROWS_WITH(write_png(RgbImage(), dir / "empty.png"), Catch::Contains("empty.png"));
+}
+
+// The container is written by io/png_writer.cpp itself (signature, IHDR, IDAT, IEND, each with
+// its CRC) around libdeflate's stream: libpng, through OpenCV, reads it back, checking every
+// CRC and the stream's Adler-32, on sizes from one pixel to a stream of several IDAT chunks.
+TEST_CASE("write_png's files decode, pixel for pixel, in libpng", "[image_file]") {
+  TempDir dir;
+  SplitMix64 rng(21);
+  // {width, height, noisy}: noise does not compress, so 800×700 needs two 1 MiB IDAT chunks.
+  const struct {
+    int w, h;
+    bool noise;
+  } sizes[] = {{1, 1, false}, {1, 9, true}, {9, 1, true}, {33, 17, false}, {800, 700, true}};
+  for (const auto& [w, h, noise] : sizes) {
+    INFO(w << "x" << h);
+    RgbImage image(w, h);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        image(x, y) = noise ? Rgb32f{static_cast<float>(rng.unit()), static_cast<float>(rng.unit()),
+                                     static_cast<float>(rng.unit())}
+                            : Rgb32f{x / float(w), y / float(h), (x + y) % 3 / 2.0f};
+    write_png(image, dir / "out.png");
+    const cv::Mat bgr = cv::imread((dir / "out.png").string(), cv::IMREAD_UNCHANGED);
+    REQUIRE(bgr.type() == CV_8UC3);
+    REQUIRE(bgr.cols == w);
+    REQUIRE(bgr.rows == h);
+    int wrong = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        wrong += bgr.at<cv::Vec3b>(y, x) !=
+                 cv::Vec3b(to_byte(image(x, y).b), to_byte(image(x, y).g), to_byte(image(x, y).r));
+    CHECK(wrong == 0);
+  }
 }
 
 TEST_CASE("read_png reports unreadable files as input errors", "[image_file]") {

@@ -1,7 +1,9 @@
 // The scene file's fast path (io/scene_json_fast.hpp) against the nlohmann reader it stands in for:
 // on every input made here, the same scene (bit for bit) or the same error message, with and
 // without --clamp-colors; and the fast path really taken on well-formed scenes.
+#include <cstdint>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,9 +32,41 @@ std::string outcome(const std::string& text, bool fast, bool clamp) {
   }
 }
 
+// How many texts the On-Demand reader took, to check that the damage below reaches it.
+int on_demand_taken = 0;
+
 void check_agree(const std::string& text) {
   INFO("text: " << text.substr(0, 300));
   for (bool clamp : {false, true}) CHECK(outcome(text, true, clamp) == outcome(text, false, clamp));
+  // What the On-Demand reader takes, the DOM reader takes too, with the same bits: On-Demand
+  // checks only what it reads, so a value it skipped unchecked would show here.
+  if (const std::optional<Scene> s = detail::read_scene_on_demand(text)) {
+    ++on_demand_taken;
+    const std::optional<Scene> dom = detail::read_scene_dom(text);
+    REQUIRE(dom.has_value());
+    CHECK(scene_to_json(*s) == scene_to_json(*dom));
+  }
+}
+
+// Random damage: a character deleted, doubled or replaced anywhere, `count` times.
+void check_damaged(const std::string& original, int count, std::uint64_t seed) {
+  SplitMix64 rng(seed);
+  const std::string alphabet = "[]{},:\"0123456789.-eE tnull";
+  for (int k = 0; k < count; ++k) {
+    std::string text = original;
+    const std::size_t at = rng.next() % text.size();
+    switch (rng.next() % 3) {
+      case 0:
+        text.erase(at, 1);
+        break;
+      case 1:
+        text.insert(at, 1, text[at]);
+        break;
+      default:
+        text[at] = alphabet[rng.next() % alphabet.size()];
+    }
+    check_agree(text);
+  }
 }
 
 const std::string kSmall =
@@ -122,24 +156,51 @@ TEST_CASE("scene fast path: every malformed or unusual scene gives the nlohmann 
   check_agree("");
   check_agree("[]");
   check_agree("null");
-  // Random damage: a character deleted, doubled or replaced anywhere.
-  SplitMix64 rng(9);
-  const std::string alphabet = "[]{},:\"0123456789.-eE tnull";
-  for (int k = 0; k < 3000; ++k) {
-    std::string text = kSmall;
-    const std::size_t at = rng.next() % text.size();
-    switch (rng.next() % 3) {
-      case 0:
-        text.erase(at, 1);
-        break;
-      case 1:
-        text.insert(at, 1, text[at]);
-        break;
-      default:
-        text[at] = alphabet[rng.next() % alphabet.size()];
-    }
+  check_damaged(kSmall, 3000, 9);
+}
+
+TEST_CASE("scene fast path: On-Demand reads a scene of only the scene's keys, or declines",
+          "[scene_json]") {
+  // kSmall without its "comment": every key is read, so the On-Demand reader is the one tried
+  // (a key the scene does not use makes it decline, and the DOM reader reads the text).
+  std::string plain = kSmall;
+  plain.replace(plain.find(", \"comment\": \"ignored\""),
+                std::string(", \"comment\": \"ignored\"").size(), "");
+  REQUIRE(detail::read_scene_on_demand(plain).has_value());
+  CHECK_FALSE(detail::read_scene_on_demand(kSmall).has_value());
+  CHECK(detail::read_scene_dom(kSmall).has_value());
+  // The keys in another order (faces before vertices: indices checked after the last key), a
+  // key escaped, trailing text, the same key twice, an index past the vertices.
+  const std::vector<std::pair<std::string, std::string>> edits{
+      {"{\"vertices\": [[1.5, 2], [10, -0.0], [3e1, 7]], ",
+       "{\"faces\": [[0, 1, 2]], \"vertices\": [[1.5, 2], [10, -0.0], [3e1, 7]], "},
+      {"\"faces\": [[0, 1, 2]], ", ""},
+      {"\"vcolors\"", "\"vcol\\u006frs\""},
+      {"\"width\": 40", "\"width\": 40, \"width\": 40"},
+      {"[0, 1, 2]", "[0, 1, 3]"},
+      {"[0, 1, 2]", "[0, 1, 2147483648]"},
+      {"[1.5, 2]", "[-0, 2]"},
+      {"[1.5, 2]", "[1.5, 18446744073709551615]"},
+      {"[1.5, 2]", "[1.5, 123456789012345678901234567890]"},
+      {"[1.5, 2]", "[1.5, 2, 3]"},
+      {"\"height\": 30", "\"height\": 30.5"}};
+  for (const auto& [from, to] : edits) {
+    std::string text = plain;
+    const std::size_t at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
     check_agree(text);
   }
+  check_agree(plain);
+  check_agree(plain + " ");
+  check_agree(plain + "]");
+  check_agree(plain + "{}");
+  check_agree(plain.substr(0, plain.size() - 1));
+  on_demand_taken = 0;
+  check_damaged(plain, 3000, 11);
+  // About a fifth of the damage leaves a scene (a digit changed, a space doubled): those are read
+  // by On-Demand, and held above to the DOM reader and to nlohmann.
+  CHECK(on_demand_taken > 300);
 }
 
 TEST_CASE("scene fast path: declined where simdjson's buffers would not fit, the scene still read",

@@ -75,8 +75,8 @@ std::string encode(const RgbImage& image) {
       libdeflate_alloc_compressor(1), &libdeflate_free_compressor);
   if (!compressor) throw std::runtime_error("out of memory");
   std::string zlib(libdeflate_zlib_compress_bound(compressor.get(), rows.size()), '\0');
-  const std::size_t zlib_size =
-      libdeflate_zlib_compress(compressor.get(), rows.data(), rows.size(), zlib.data(), zlib.size());
+  const std::size_t zlib_size = libdeflate_zlib_compress(compressor.get(), rows.data(), rows.size(),
+                                                         zlib.data(), zlib.size());
   if (zlib_size == 0) throw std::runtime_error("the compressed rows did not fit their bound");
 
   std::string out("\x89PNG\r\n\x1a\n", 8);

@@ -6,7 +6,7 @@
 // through OpenCV, whose image codecs, video I/O and HighGUI bring in 260 shared libraries (GDAL,
 // GDCM, FFmpeg, Qt). Loading and relocating them took 141 ms before main() on every run, where a
 // render of the course scene takes 3 ms: what a student waits for, once per render. This
-// executable links none of them (the PNG is written with libpng, io/png_writer.hpp), nor matio
+// executable links none of them (the PNG is written by io/png_writer.hpp on libdeflate), nor matio
 // (cli/scene_input.cpp), and exec() costs the other commands a few milliseconds.
 #include <unistd.h>
 

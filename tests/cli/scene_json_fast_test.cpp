@@ -48,6 +48,18 @@ void check_agree(const std::string& text) {
   }
 }
 
+// Each edit (the first occurrence of a piece replaced) of `original`.
+void check_edited(const std::string& original,
+                  const std::vector<std::pair<std::string, std::string>>& edits) {
+  for (const auto& [from, to] : edits) {
+    std::string text = original;
+    const std::size_t at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    text.replace(at, from.size(), to);
+    check_agree(text);
+  }
+}
+
 // Random damage: a character deleted, doubled or replaced anywhere, `count` times.
 void check_damaged(const std::string& original, int count, std::uint64_t seed) {
   SplitMix64 rng(seed);
@@ -145,13 +157,7 @@ TEST_CASE("scene fast path: every malformed or unusual scene gives the nlohmann 
       {"\"faces\": [[0, 1, 2]]", "\"faces\": []"},
       {"\"comment\": \"ignored\"", "\"comment\": [[[{}]]]"},
       {"{\"vertices\"", "[{\"vertices\""}};
-  for (const auto& [from, to] : edits) {
-    std::string text = kSmall;
-    const std::size_t at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
-    check_agree(text);
-  }
+  check_edited(kSmall, edits);
   check_agree(kSmall + "]");
   check_agree("");
   check_agree("[]");
@@ -184,13 +190,7 @@ TEST_CASE("scene fast path: On-Demand reads a scene of only the scene's keys, or
       {"[1.5, 2]", "[1.5, 123456789012345678901234567890]"},
       {"[1.5, 2]", "[1.5, 2, 3]"},
       {"\"height\": 30", "\"height\": 30.5"}};
-  for (const auto& [from, to] : edits) {
-    std::string text = plain;
-    const std::size_t at = text.find(from);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, from.size(), to);
-    check_agree(text);
-  }
+  check_edited(plain, edits);
   check_agree(plain);
   check_agree(plain + " ");
   check_agree(plain + "]");

@@ -15,6 +15,7 @@
 #include "occlusion_choice.hpp"
 #include "scanline_fill.hpp"
 #include "scene.hpp"
+#include "small_triangle_batch.hpp"
 #include "zbuffer_canvas.hpp"
 
 namespace scantrace {
@@ -113,6 +114,78 @@ concept DepthBufferedCanvas = requires(C& c, std::span<const Vec2> v, std::span<
   c.begin_triangle(v, d, g);
 };
 
+namespace detail {
+
+// Whether fill_faces may set faces up kTriangleBatch at a time (small_triangle_batch.hpp): an
+// untraced flat fill of the exact method under the top-left rule, onto a canvas that does not
+// test depths (the z-buffer admits faces by their depth planes, set up per face).
+template <Canvas C, class Tracer>
+constexpr bool kBatchableCanvas =
+    std::is_same_v<std::remove_cvref_t<Tracer>, NoTracer> && !DepthBufferedCanvas<C>;
+
+inline bool batchable(const FillOptions& opt) {
+  return opt.method == Method::exact && opt.fill_rule == FillRule::top_left &&
+         opt.shading == Shading::flat && SubpixelGrid(opt.subpixel_bits).valid();
+}
+
+// fill_faces for a batchable fill: each batch of faces is set up in SIMD lanes, then drawn in
+// order, each face the batch takes by the small path and every other one by fill_polygon, which
+// decides it as it always does. The faces, the order and every pixel are fill_faces's.
+template <Canvas C, class Done>
+void fill_faces_batched(C& canvas, const Scene& scene, std::span<const int> faces,
+                        std::span<const double> depth, const FillOptions& opt, FillScratch& scratch,
+                        Done&& done) {
+  const BatchTarget target{opt.subpixel_bits, canvas.width(), canvas_rows(canvas), opt.cull};
+  TriangleBatch in{};
+  BatchSetup out;
+  NoTracer none;
+  const std::size_t n = faces.size();
+  for (std::size_t i = 0; i < n; i += kTriangleBatch) {
+    const int m = static_cast<int>(std::min<std::size_t>(kTriangleBatch, n - i));
+    // The next batch's indices and corners fetched while this one is set up (fill_faces says why).
+    for (int k = 0; k < m && i + kTriangleBatch + k < n; ++k) {
+      const auto& ahead = scene.faces[faces[i + kTriangleBatch + k]];
+      for (int c = 0; c < 3; ++c) {
+        __builtin_prefetch(&scene.vertices[ahead[c]]);
+        __builtin_prefetch(&scene.vcolors[ahead[c]]);
+      }
+    }
+    for (int k = 0; k < m; ++k) {
+      const auto& face = scene.faces[faces[i + k]];
+      for (int c = 0; c < 3; ++c) {
+        const Vec2 v = scene.vertices[face[c]];
+        const Color col = scene.vcolors[face[c]];
+        in.x[c][k] = v.x, in.y[c][k] = v.y;
+        in.r[c][k] = col.r, in.g[c][k] = col.g, in.b[c][k] = col.b;
+      }
+    }
+    small_triangle_batch(in, target, out);
+    for (int k = 0; k < m; ++k) {
+      const int f = faces[i + k];
+      if constexpr (CoverageCanvas<C>) {
+        // Near to far: a face whose box nearer faces already cover is not drawn. This asks the
+        // coverage as the faces before it left it, so it runs here, face by face, in order (the
+        // batch has set up such a face for nothing: an eighth of a batch).
+        const std::array<Vec2, 3> v{Vec2{in.x[0][k], in.y[0][k]}, Vec2{in.x[1][k], in.y[1][k]},
+                                    Vec2{in.x[2][k], in.y[2][k]}};
+        if (!canvas.begin_face(v)) {
+          done(f, FillResult{SkipReason::hidden, 0, 0});
+          continue;
+        }
+      }
+      if (out.small[k] != 0) {
+        done(f, fill_small_triangle(canvas, out.triangle(k), out.flat(k), scratch.flat_row));
+      } else {
+        const FaceCorners c = corners_of(scene, scene.faces[f]);
+        done(f, fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f]}, opt, scratch,
+                             none));
+      }
+    }
+  }
+}
+
+}  // namespace detail
+
 // The faces listed in `faces`, in that order, filled onto `canvas`; `done(face, result)` sees
 // each result. The one face loop of every render: the whole image or a band of it
 // (band_render.hpp), painter's or z-buffered.
@@ -120,6 +193,9 @@ template <Canvas C, FillTracer Tracer, class Done>
 void fill_faces(C& canvas, const Scene& scene, std::span<const int> faces,
                 std::span<const double> depth, const FillOptions& opt, FillScratch& scratch,
                 Tracer& tracer, Done&& done) {
+  if constexpr (detail::kBatchableCanvas<C, Tracer>)
+    if (detail::batchable(opt))
+      return detail::fill_faces_batched(canvas, scene, faces, depth, opt, scratch, done);
   const SubpixelGrid grid(opt.subpixel_bits);
   // Faces come in depth order, scattered over the scene's arrays, and a small face costs less
   // than fetching its corners from memory: its indices are fetched 2·kAhead faces ahead, and its

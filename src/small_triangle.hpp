@@ -37,6 +37,7 @@ struct SmallTriangle {
   // a centre is inside when all three are positive. Then its change per column and per row.
   std::array<std::int32_t, 3> at{}, per_col{}, per_row{};
   int col0 = 0, cols = 0, row0 = 0, rows = 0;
+  friend bool operator==(const SmallTriangle&, const SmallTriangle&) = default;
 };
 
 // The largest box the fast path takes. A wider triangle has longer spans, on which the sweep's

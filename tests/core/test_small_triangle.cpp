@@ -6,13 +6,19 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "random.hpp"
 #include "reference_raster.hpp"
+#include "src/band_render.hpp"
 #include "src/fill_setup.hpp"
+#include "src/flat_color.hpp"
 #include "src/small_triangle.hpp"
+#include "src/small_triangle_batch.hpp"
 
 using namespace scantrace;
 
@@ -138,4 +144,183 @@ TEST_CASE("small triangles: the set-up refuses what the kernel cannot do exactly
   // Nothing of the box on the canvas or in the band.
   CHECK_FALSE(setup({Vec2{600, 3}, Vec2{610, 2}, Vec2{609, 9}}));
   CHECK_FALSE(setup({Vec2{10, 10}, Vec2{20, 12}, Vec2{12, 30}}, 512, RowBand{40, 80}));
+}
+
+// The batched set-up (src/small_triangle_batch.hpp) against the scalar one it stands in for, face
+// by face: the same decision (fill_polygon's checks in its order: representable, a non-zero area,
+// not culled, a pixel of the canvas and band, small_triangle's limits), and for a face it takes
+// the same edge functions, box and flat colour, bit for bit, with every Highway target's kernel.
+TEST_CASE("small triangles: the batched set-up is the scalar one, on every SIMD target",
+          "[core][simd][small_triangle]") {
+  const auto kernels = small_triangle_batch_kernels();
+  REQUIRE(!kernels.empty());
+  for (const auto& kernel : kernels) {
+    INFO("Highway target " << kernel.target);
+    sttest::Rng rng(20261126);
+    int taken = 0, declined = 0, culled = 0, degenerate = 0, out_of_range = 0;
+    std::vector<int> order;
+    for (int batch = 0; batch < 4000; ++batch) {
+      const int bits = std::array{0, 4, 8, 12}[batch % 4];
+      const SubpixelGrid grid(bits);
+      const int a = static_cast<int>(rng.next() % (H + 1)),
+                b = static_cast<int>(rng.next() % (H + 1));
+      const RowBand band = batch % 3 == 0 ? RowBand{0, H} : RowBand{std::min(a, b), std::max(a, b)};
+      const Cull cull = std::array{Cull::none, Cull::back, Cull::front}[(batch / 4) % 3];
+      const BatchTarget target{bits, W, band, cull};
+      TriangleBatch in{};
+      std::array<std::array<Vec2, 3>, kTriangleBatch> v;
+      std::array<std::array<Color, 3>, kTriangleBatch> c;
+      for (int k = 0; k < kTriangleBatch; ++k) {
+        const double size = std::array{0.7, 3.0, 9.0, 24.0, 40.0}[rng.next() % 5];
+        v[k] = random_triangle(rng, size);
+        switch (rng.next() % 16) {
+          case 0:
+            v[k][2] = v[k][0];  // zero area
+            break;
+          case 1:
+            v[k][1].x = std::array<double, 4>{1e10, -2e9, std::nan(""), HUGE_VAL}[rng.next() % 4];
+            break;
+          case 2:
+            v[k][0] = {v[k][0].x - 3000, v[k][0].y};  // a large box reaching the canvas
+            break;
+          default:
+            break;
+        }
+        for (Color& col : c[k])
+          col = {rng.uniform(-0.2, 1.2), rng.uniform(0, 1),
+                 rng.next() % 50 == 0 ? std::nan("") : rng.uniform(0, 1)};
+        for (int i = 0; i < 3; ++i) {
+          in.x[i][k] = v[k][i].x, in.y[i][k] = v[k][i].y;
+          in.r[i][k] = c[k][i].r, in.g[i][k] = c[k][i].g, in.b[i][k] = c[k][i].b;
+        }
+      }
+      BatchSetup out;
+      kernel.function(in, target, out);
+      for (int k = 0; k < kTriangleBatch; ++k) {
+        INFO("batch " << batch << " face " << k << " (" << v[k][0].x << "," << v[k][0].y << ") ("
+                      << v[k][1].x << "," << v[k][1].y << ") (" << v[k][2].x << "," << v[k][2].y
+                      << "), grid bits " << bits);
+        // The scalar decision, step by step.
+        bool small = std::all_of(v[k].begin(), v[k].end(), SubpixelGrid::representable);
+        if (!small) ++out_of_range;
+        std::array<FixedPoint, 3> p{};
+        SmallTriangle t;
+        if (small) {
+          for (int i = 0; i < 3; ++i) p[i] = grid.snap(v[k][i]);
+          const i128 area2 = static_cast<i128>(p[1].x - p[0].x) * (p[2].y - p[0].y) -
+                             static_cast<i128>(p[2].x - p[0].x) * (p[1].y - p[0].y);
+          if (area2 == 0) {
+            small = false, ++degenerate;
+          } else if (cull != Cull::none && (cull == Cull::back ? area2 > 0 : area2 < 0)) {
+            small = false, ++culled;
+          } else {
+            const GridBox box = grid_box(p, grid, FillRule::top_left);
+            small = covers_pixels(box, W, band) == SkipReason::none &&
+                    small_triangle(p, box, area2 > 0, grid, W, band, t);
+          }
+        }
+        REQUIRE((out.small[k] != 0) == small);
+        if (!small) {
+          ++declined;
+          continue;
+        }
+        ++taken;
+        CHECK(out.triangle(k) == t);
+        const Color want = flat_color(p, c[k], order), flat = out.flat(k);
+        for (const auto& [w, g] : {std::pair{want.r, flat.r}, {want.g, flat.g}, {want.b, flat.b}})
+          CHECK(std::bit_cast<std::uint64_t>(w) == std::bit_cast<std::uint64_t>(g));
+      }
+    }
+    UNSCOPED_INFO("taken " << taken << ", declined " << declined << " (culled " << culled
+                           << ", zero area " << degenerate << ", out of range " << out_of_range
+                           << ")");
+    CHECK(taken > 4000);
+    CHECK(declined > 8000);
+    CHECK(culled > 1000);
+    CHECK(degenerate > 1000);
+    CHECK(out_of_range > 1000);
+  }
+}
+
+namespace {
+
+// A tracer at the triangle level that selects no triangle: the fill then runs face by face through
+// fill_polygon, as before the batched set-up, and draws what the untraced render draws (the
+// trace contract: tracing never changes a pixel).
+struct SelectsNoTriangle {
+  static constexpr TraceLevel max_level = TraceLevel::triangle;
+  bool wants_triangle(int) { return false; }
+  void triangle_begin(const PolygonSetup&) {}
+  void edge_table(const EdgeTableView&) {}
+  void triangle_end(int, i64, i64) {}
+  void triangle_skipped(int, SkipReason) {}
+};
+
+// A soup of `count` triangles over a 300 × 200 canvas, from slivers to 60-pixel boxes, with some
+// of zero area, some out of range and some reaching far off the canvas; depths at random.
+Scene soup(std::uint64_t seed, int count) {
+  sttest::Rng rng(seed);
+  Scene s;
+  s.width = 300, s.height = 200;
+  for (int f = 0; f < count; ++f) {
+    const double size = std::array{0.6, 3.0, 8.0, 20.0, 60.0}[rng.next() % 5];
+    const Vec2 corner = rng.point(-20, 310, -20, 210);
+    const int base = static_cast<int>(s.vertices.size());
+    for (int i = 0; i < 3; ++i) {
+      s.vertices.push_back({corner.x + rng.uniform(0, size), corner.y + rng.uniform(0, size)});
+      s.vcolors.push_back(rng.color());
+      s.depth.push_back(rng.uniform(0, 10));
+    }
+    switch (rng.next() % 20) {
+      case 0:
+        s.vertices[base + 2] = s.vertices[base];  // zero area
+        break;
+      case 1:
+        s.vertices[base + 1].x = 5e9;  // out of range: skipped
+        break;
+      case 2:
+        s.vertices[base].x -= 4000;  // a large box reaching the canvas
+        break;
+      default:
+        break;
+    }
+    s.faces.push_back({base, base + 1, base + 2});
+  }
+  return s;
+}
+
+}  // namespace
+
+// The face loop with the batched set-up (painter.hpp, fill_faces) against the loop it replaces,
+// face by face: the same image and the same counts, far to near and near to far, on the 8-bit and
+// the float canvas, culled or not, on several grids and in bands.
+TEST_CASE("small triangles: the batched face loop draws what the face-by-face loop draws",
+          "[core][small_triangle]") {
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    const Scene scene = soup(seed, 3000);
+    for (const int bits : {0, 4, 8})
+      for (const Cull cull : {Cull::none, Cull::back, Cull::front}) {
+        INFO("seed " << seed << ", subpixel bits " << bits << ", cull " << static_cast<int>(cull));
+        FillOptions opt;
+        opt.shading = Shading::flat;
+        opt.subpixel_bits = bits;
+        opt.cull = cull;
+        opt.occlusion = Occlusion::far_to_near;
+        REQUIRE(detail::batchable(opt));
+        SelectsNoTriangle tracer;
+        RenderStats want_stats, got_stats;
+        const Image<Bgr8> want = render<Bgr8>(scene, opt, tracer, &want_stats);
+        CHECK(render<Bgr8>(scene, opt, &got_stats) == want);
+        CHECK(got_stats.triangles_filled == want_stats.triangles_filled);
+        CHECK(got_stats.triangles_culled == want_stats.triangles_culled);
+        CHECK(got_stats.triangles_skipped == want_stats.triangles_skipped);
+        CHECK(got_stats.pixels == want_stats.pixels);
+        CHECK(render<Rgb32f>(scene, opt) == render<Rgb32f>(scene, opt, tracer));
+        CHECK(render_parallel<Bgr8>(scene, opt, 3) == want);
+        FillOptions near = opt;
+        near.occlusion = Occlusion::near_to_far;
+        CHECK(render<Bgr8>(scene, near) == want);
+        CHECK(render_parallel<Bgr8>(scene, near, 3) == want);
+      }
+  }
 }

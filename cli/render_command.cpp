@@ -130,9 +130,9 @@ Command add_render_command(CLI::App& app) {
                                     "scene order). The same image, bit for bit. Without this flag\n"
                                     "or --no-occlusion the way is chosen per scene: near to far\n"
                                     "when the faces form surfaces (they share vertices) stacked\n"
-                                    "1.9 deep or more flat, 1.6 Gouraud, as the course scene's\n"
-                                    "are (0.84 of the time flat, 0.71 Gouraud); z-buffered, also\n"
-                                    "only up to 512x512\n"
+                                    "2.0 deep or more flat, 1.6 Gouraud, as the course scene's\n"
+                                    "are (about as fast flat, 0.71 of the time Gouraud);\n"
+                                    "z-buffered, also only up to 512x512\n"
                                     "(docs/performance.md). The report line says when near to\n"
                                     "far ran");
   cmd->add_flag("--no-occlusion", args->far_to_near,

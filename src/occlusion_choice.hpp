@@ -37,10 +37,11 @@ bool forms_surfaces(const Scene& scene);
 // Estimated overdraw from which near to far is chosen for a scene that forms surfaces, measured as
 // the break-even on shared-vertex grids stacked partly twice (docs/performance.md). It depends on
 // the shading: near to far saves the set-up of the faces it hides, and a small flat face's costs
-// little since its spans come from SIMD lanes (small_triangle.hpp), so flat needs more overdraw
-// to pay for the per-face box tests and span claims (near ÷ far at overdraw 1.75: flat 1.06,
-// Gouraud 0.90; at 2: 0.90 and 0.75).
-inline constexpr double kNearToFarOverdrawFlat = 1.9;
+// little since its spans come from SIMD lanes and it is set up in a batch of eight
+// (small_triangle.hpp, small_triangle_batch.hpp), so flat needs more overdraw to pay for the
+// per-face box tests and span claims (near ÷ far at overdraw 1.75: flat 1.16, Gouraud 0.90; at
+// 1.9: flat 1.08; at 2: 1.00 and 0.75; at 3: flat 0.83).
+inline constexpr double kNearToFarOverdrawFlat = 2.0;
 inline constexpr double kNearToFarOverdraw = 1.6;  // Gouraud
 
 // The threshold for a render's shading.

@@ -117,11 +117,9 @@ concept DepthBufferedCanvas = requires(C& c, std::span<const Vec2> v, std::span<
 namespace detail {
 
 // Whether fill_faces may set faces up kTriangleBatch at a time (small_triangle_batch.hpp): an
-// untraced flat fill of the exact method under the top-left rule, onto a canvas that does not
-// test depths (the z-buffer admits faces by their depth planes, set up per face).
+// untraced flat fill of the exact method under the top-left rule, onto any canvas.
 template <Canvas C, class Tracer>
-constexpr bool kBatchableCanvas =
-    std::is_same_v<std::remove_cvref_t<Tracer>, NoTracer> && !DepthBufferedCanvas<C>;
+constexpr bool kBatchableCanvas = std::is_same_v<std::remove_cvref_t<Tracer>, NoTracer>;
 
 inline bool batchable(const FillOptions& opt) {
   return opt.method == Method::exact && opt.fill_rule == FillRule::top_left &&
@@ -136,6 +134,7 @@ void fill_faces_batched(C& canvas, const Scene& scene, std::span<const int> face
                         std::span<const double> depth, const FillOptions& opt, FillScratch& scratch,
                         Done&& done) {
   const BatchTarget target{opt.subpixel_bits, canvas.width(), canvas_rows(canvas), opt.cull};
+  [[maybe_unused]] const SubpixelGrid grid(opt.subpixel_bits);
   TriangleBatch in{};
   BatchSetup out;
   NoTracer none;
@@ -173,12 +172,26 @@ void fill_faces_batched(C& canvas, const Scene& scene, std::span<const int> face
           continue;
         }
       }
+      // The z-buffer: the face's depth plane, then the test that rejects a face nearer ones
+      // already hide everywhere (fill_faces's), face by face and in order, as above.
+      [[maybe_unused]] std::array<double, 3> d{};
+      if constexpr (DepthBufferedCanvas<C>) {
+        d = corner_depths(scene, scene.faces[f]);
+        const std::array<Vec2, 3> v{Vec2{in.x[0][k], in.y[0][k]}, Vec2{in.x[1][k], in.y[1][k]},
+                                    Vec2{in.x[2][k], in.y[2][k]}};
+        canvas.begin_triangle(v, d, grid);
+        if (!canvas.admit(f, v)) {
+          done(f, FillResult{SkipReason::hidden, 0, 0});
+          continue;
+        }
+      }
       if (out.small[k] != 0) {
         done(f, fill_small_triangle(canvas, out.triangle(k), out.flat(k), scratch.flat_row));
       } else {
         const FaceCorners c = corners_of(scene, scene.faces[f]);
-        done(f, fill_polygon(canvas, PolygonInput{c.points, c.colors, f, depth[f]}, opt, scratch,
-                             none));
+        PolygonInput input{c.points, c.colors, f, depth[f]};
+        if constexpr (DepthBufferedCanvas<C>) input.vertex_depths = d;
+        done(f, fill_polygon(canvas, input, opt, scratch, none));
       }
     }
   }

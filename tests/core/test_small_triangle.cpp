@@ -292,35 +292,54 @@ Scene soup(std::uint64_t seed, int count) {
 }  // namespace
 
 // The face loop with the batched set-up (painter.hpp, fill_faces) against the loop it replaces,
-// face by face: the same image and the same counts, far to near and near to far, on the 8-bit and
-// the float canvas, culled or not, on several grids and in bands.
+// face by face: the same image and the same counts, far to near and near to far, painter's and
+// z-buffered, on the 8-bit and the float canvas, culled or not, on several grids and in bands.
 TEST_CASE("small triangles: the batched face loop draws what the face-by-face loop draws",
           "[core][small_triangle]") {
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     const Scene scene = soup(seed, 3000);
     for (const int bits : {0, 4, 8})
-      for (const Cull cull : {Cull::none, Cull::back, Cull::front}) {
-        INFO("seed " << seed << ", subpixel bits " << bits << ", cull " << static_cast<int>(cull));
-        FillOptions opt;
-        opt.shading = Shading::flat;
-        opt.subpixel_bits = bits;
-        opt.cull = cull;
-        opt.occlusion = Occlusion::far_to_near;
-        REQUIRE(detail::batchable(opt));
-        SelectsNoTriangle tracer;
-        RenderStats want_stats, got_stats;
-        const Image<Bgr8> want = render<Bgr8>(scene, opt, tracer, &want_stats);
-        CHECK(render<Bgr8>(scene, opt, &got_stats) == want);
-        CHECK(got_stats.triangles_filled == want_stats.triangles_filled);
-        CHECK(got_stats.triangles_culled == want_stats.triangles_culled);
-        CHECK(got_stats.triangles_skipped == want_stats.triangles_skipped);
-        CHECK(got_stats.pixels == want_stats.pixels);
-        CHECK(render<Rgb32f>(scene, opt) == render<Rgb32f>(scene, opt, tracer));
-        CHECK(render_parallel<Bgr8>(scene, opt, 3) == want);
-        FillOptions near = opt;
-        near.occlusion = Occlusion::near_to_far;
-        CHECK(render<Bgr8>(scene, near) == want);
-        CHECK(render_parallel<Bgr8>(scene, near, 3) == want);
-      }
+      for (const Cull cull : {Cull::none, Cull::back, Cull::front})
+        for (const Visibility visibility : {Visibility::painter, Visibility::zbuffer}) {
+          INFO("seed " << seed << ", subpixel bits " << bits << ", cull " << static_cast<int>(cull)
+                       << (visibility == Visibility::zbuffer ? ", z-buffered" : ""));
+          FillOptions opt;
+          opt.shading = Shading::flat;
+          opt.subpixel_bits = bits;
+          opt.cull = cull;
+          opt.visibility = visibility;
+          opt.occlusion = Occlusion::far_to_near;
+          REQUIRE(detail::batchable(opt));
+          SelectsNoTriangle tracer;
+          RenderStats want_stats, got_stats;
+          const Image<Bgr8> want = render<Bgr8>(scene, opt, tracer, &want_stats);
+          CHECK(render<Bgr8>(scene, opt, &got_stats) == want);
+          CHECK(got_stats.triangles_filled == want_stats.triangles_filled);
+          CHECK(got_stats.triangles_culled == want_stats.triangles_culled);
+          CHECK(got_stats.triangles_skipped == want_stats.triangles_skipped);
+          CHECK(got_stats.pixels == want_stats.pixels);
+          CHECK(render<Rgb32f>(scene, opt) == render<Rgb32f>(scene, opt, tracer));
+          CHECK(render_parallel<Bgr8>(scene, opt, 3) == want);
+          FillOptions near = opt;
+          near.occlusion = Occlusion::near_to_far;
+          CHECK(render<Bgr8>(scene, near) == want);
+          CHECK(render_parallel<Bgr8>(scene, near, 3) == want);
+          // Near to far, what was rejected before set-up (hidden) and what was drawn, against the
+          // same faces drawn Gouraud with one colour each, which is not batched: the counts
+          // depend on coverage and depth only.
+          Scene one_colour = scene;
+          for (std::size_t v = 0; v + 2 < one_colour.vcolors.size(); v += 3)
+            one_colour.vcolors[v + 1] = one_colour.vcolors[v + 2] = one_colour.vcolors[v];
+          FillOptions gouraud = near;
+          gouraud.shading = Shading::gouraud;
+          RenderStats batched, unbatched;
+          render<Bgr8>(one_colour, near, &batched);
+          render<Bgr8>(one_colour, gouraud, &unbatched);
+          CHECK(batched.triangles_hidden == unbatched.triangles_hidden);
+          CHECK(batched.triangles_rejected == unbatched.triangles_rejected);
+          CHECK(batched.triangles_filled == unbatched.triangles_filled);
+          CHECK(batched.pixels == unbatched.pixels);
+          CHECK(batched.triangles_hidden > 0);
+        }
   }
 }

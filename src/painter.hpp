@@ -117,9 +117,10 @@ concept DepthBufferedCanvas = requires(C& c, std::span<const Vec2> v, std::span<
 namespace detail {
 
 // Whether fill_faces may set faces up kTriangleBatch at a time (small_triangle_batch.hpp): an
-// untraced flat fill of the exact method under the top-left rule, onto any canvas.
-template <Canvas C, class Tracer>
-constexpr bool kBatchableCanvas = std::is_same_v<std::remove_cvref_t<Tracer>, NoTracer>;
+// untraced (kUntraced) flat fill of the exact method under the top-left rule (batchable), onto
+// any canvas.
+template <class Tracer>
+constexpr bool kUntraced = std::is_same_v<std::remove_cvref_t<Tracer>, NoTracer>;
 
 inline bool batchable(const FillOptions& opt) {
   return opt.method == Method::exact && opt.fill_rule == FillRule::top_left &&
@@ -165,8 +166,7 @@ void fill_faces_batched(C& canvas, const Scene& scene, std::span<const int> face
         // Near to far: a face whose box nearer faces already cover is not drawn. This asks the
         // coverage as the faces before it left it, so it runs here, face by face, in order (the
         // batch has set up such a face for nothing: an eighth of a batch).
-        const std::array<Vec2, 3> v{Vec2{in.x[0][k], in.y[0][k]}, Vec2{in.x[1][k], in.y[1][k]},
-                                    Vec2{in.x[2][k], in.y[2][k]}};
+        const std::array<Vec2, 3> v = in.corners(k);
         if (!canvas.begin_face(v)) {
           done(f, FillResult{SkipReason::hidden, 0, 0});
           continue;
@@ -177,8 +177,7 @@ void fill_faces_batched(C& canvas, const Scene& scene, std::span<const int> face
       [[maybe_unused]] std::array<double, 3> d{};
       if constexpr (DepthBufferedCanvas<C>) {
         d = corner_depths(scene, scene.faces[f]);
-        const std::array<Vec2, 3> v{Vec2{in.x[0][k], in.y[0][k]}, Vec2{in.x[1][k], in.y[1][k]},
-                                    Vec2{in.x[2][k], in.y[2][k]}};
+        const std::array<Vec2, 3> v = in.corners(k);
         canvas.begin_triangle(v, d, grid);
         if (!canvas.admit(f, v)) {
           done(f, FillResult{SkipReason::hidden, 0, 0});
@@ -206,7 +205,7 @@ template <Canvas C, FillTracer Tracer, class Done>
 void fill_faces(C& canvas, const Scene& scene, std::span<const int> faces,
                 std::span<const double> depth, const FillOptions& opt, FillScratch& scratch,
                 Tracer& tracer, Done&& done) {
-  if constexpr (detail::kBatchableCanvas<C, Tracer>)
+  if constexpr (detail::kUntraced<Tracer>)
     if (detail::batchable(opt))
       return detail::fill_faces_batched(canvas, scene, faces, depth, opt, scratch, done);
   const SubpixelGrid grid(opt.subpixel_bits);

@@ -18,6 +18,7 @@
 #include "fill_options.hpp"
 #include "simd_targets.hpp"
 #include "small_triangle.hpp"
+#include "vec2.hpp"
 
 namespace scantrace {
 
@@ -28,6 +29,11 @@ inline constexpr int kTriangleBatch = 8;
 struct TriangleBatch {
   alignas(64) double x[3][kTriangleBatch], y[3][kTriangleBatch];
   alignas(64) double r[3][kTriangleBatch], g[3][kTriangleBatch], b[3][kTriangleBatch];
+
+  // Face k's corners as given (the near-to-far box test and the z-buffer's depth plane take them).
+  std::array<Vec2, 3> corners(int k) const {
+    return {Vec2{x[0][k], y[0][k]}, Vec2{x[1][k], y[1][k]}, Vec2{x[2][k], y[2][k]}};
+  }
 };
 
 // What the set-up needs of the fill: the grid, the canvas's columns and the band's rows, culling.

@@ -81,15 +81,13 @@ std::string encode(const RgbImage& image) {
 
   std::string out("\x89PNG\r\n\x1a\n", 8);
   out.reserve(8 + 25 + zlib_size + 12 * (zlib_size / kMaxIdat + 1) + 12);
-  std::uint8_t header[13] = {};
-  const auto be32 = [&](int at, std::uint32_t v) {
-    for (int k = 0; k < 4; ++k) header[at + k] = static_cast<std::uint8_t>(v >> (24 - 8 * k));
-  };
-  be32(0, static_cast<std::uint32_t>(image.width()));
-  be32(4, static_cast<std::uint32_t>(image.height()));
-  header[8] = 8;  // bits per channel
-  header[9] = 2;  // colour type: RGB (compression, filter method and interlace: 0, the only ones)
-  put_chunk(out, "IHDR", header, sizeof header);
+  std::string header;
+  put_u32(header, static_cast<std::uint32_t>(image.width()));
+  put_u32(header, static_cast<std::uint32_t>(image.height()));
+  // 8 bits per channel, colour type 2 (RGB); compression, filter method and interlace 0, the
+  // only ones.
+  header.append({8, 2, 0, 0, 0});
+  put_chunk(out, "IHDR", header.data(), header.size());
   for (std::size_t at = 0; at < zlib_size; at += kMaxIdat)
     put_chunk(out, "IDAT", zlib.data() + at, std::min(kMaxIdat, zlib_size - at));
   put_chunk(out, "IEND", "", 0);

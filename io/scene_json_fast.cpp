@@ -61,6 +61,10 @@ bool read_array(element e, std::vector<T>& out, Read read) {
   return true;
 }
 
+// The keys both readers read, in this order (the first four are required).
+constexpr std::string_view kKeys[] = {"vertices", "vcolors", "faces",     "depth",
+                                      "width",    "height",  "background"};
+
 // The scene by simdjson's DOM: what read_on_demand declines (a key the scene does not
 // use, whose value that reader would not look at) is read here, every value checked.
 std::optional<Scene> read_dom(simdjson::padded_string_view text) {
@@ -69,9 +73,7 @@ std::optional<Scene> read_dom(simdjson::padded_string_view text) {
   object fields;
   if (parser.parse(text.data(), text.size(), false).get(root) || root.get_object().get(fields))
     return std::nullopt;
-  // The keys it reads, each given once (nlohmann and simdjson differ on which of two wins).
-  constexpr std::string_view kKeys[] = {"vertices", "vcolors", "faces",     "depth",
-                                        "width",    "height",  "background"};
+  // Each key given once (nlohmann and simdjson differ on which of two wins).
   std::array<std::optional<element>, std::size(kKeys)> value;
   for (const auto field : fields)
     for (std::size_t k = 0; k < std::size(kKeys); ++k)
@@ -188,8 +190,6 @@ std::optional<Scene> read_on_demand(simdjson::padded_string_view text) {
   od::document doc;
   od::object fields;
   if (parser.iterate(text).get(doc) || doc.get_object().get(fields)) return std::nullopt;
-  constexpr std::string_view kKeys[] = {"vertices", "vcolors", "faces",     "depth",
-                                        "width",    "height",  "background"};
   bool seen[std::size(kKeys)] = {};
   Scene s;
   std::array<double, 2> xy;

@@ -80,9 +80,8 @@ HWY_AFTER_NAMESPACE();
 namespace scantrace {
 
 std::span<const SimdKernel> shade_bytes_kernels() {
-  static const std::vector<SimdKernel> kernels = runnable_kernels<ShadeBytesFunction>(
-      HWY_CHOOSE_AVX3(ShadeBytes), HWY_CHOOSE_AVX2(ShadeBytes), HWY_CHOOSE_SSE4(ShadeBytes),
-      HWY_CHOOSE_SSSE3(ShadeBytes), HWY_CHOOSE_NEON(ShadeBytes), HWY_CHOOSE_FALLBACK(ShadeBytes));
+  static const std::vector<SimdKernel> kernels =
+      runnable_kernels<ShadeBytesFunction>(SCANTRACE_KERNEL_TARGETS(ShadeBytes));
   return kernels;
 }
 

@@ -1,11 +1,11 @@
 #pragma once
 // Which of the SIMD targets Google Highway compiles a kernel for this CPU can run, best first.
 //
-// The kernels (shade_bytes_simd.cpp, small_triangle_simd.cpp) include Highway's headers only:
-// its HWY_DYNAMIC_DISPATCH would need libhwy, whose start-up code runs an instruction (rdtscp)
-// that valgrind cannot execute, and callgrind's instruction counts are how this project measures
-// the fill. So the choice is made here, from the CPU features each target is compiled with
-// (hwy/ops/set_macros-inl.h), by the compiler's __builtin_cpu_supports.
+// The kernels (shade_bytes_simd.cpp, small_triangle_simd.cpp, small_triangle_batch_simd.cpp)
+// include Highway's headers only: its HWY_DYNAMIC_DISPATCH would need libhwy, whose start-up code
+// runs an instruction (rdtscp) that valgrind cannot execute, and callgrind's instruction counts are
+// how this project measures the fill. So the choice is made here, from the CPU features each target
+// is compiled with (hwy/ops/set_macros-inl.h), by the compiler's __builtin_cpu_supports.
 #include <vector>
 
 namespace scantrace {
@@ -38,5 +38,12 @@ std::vector<SimdKernelOf<F>> runnable_kernels(F avx3, F avx2, F sse4, F ssse3, F
   k.push_back({"portable", fallback});
   return k;
 }
+
+// runnable_kernels's arguments for the kernel `name` compiled for each target by Highway's
+// foreach_target, written once for every kernel. Expanded in the kernel's file, which includes
+// hwy/highway.h, where HWY_CHOOSE_<TARGET> is defined.
+#define SCANTRACE_KERNEL_TARGETS(name)                                                         \
+  HWY_CHOOSE_AVX3(name), HWY_CHOOSE_AVX2(name), HWY_CHOOSE_SSE4(name), HWY_CHOOSE_SSSE3(name), \
+      HWY_CHOOSE_NEON(name), HWY_CHOOSE_FALLBACK(name)
 
 }  // namespace scantrace

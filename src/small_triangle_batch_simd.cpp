@@ -139,10 +139,7 @@ namespace scantrace {
 
 std::span<const SimdKernelOf<SmallTriangleBatchFunction>> small_triangle_batch_kernels() {
   static const std::vector<SimdKernelOf<SmallTriangleBatchFunction>> kernels =
-      runnable_kernels<SmallTriangleBatchFunction>(
-          HWY_CHOOSE_AVX3(SmallTriangleBatch), HWY_CHOOSE_AVX2(SmallTriangleBatch),
-          HWY_CHOOSE_SSE4(SmallTriangleBatch), HWY_CHOOSE_SSSE3(SmallTriangleBatch),
-          HWY_CHOOSE_NEON(SmallTriangleBatch), HWY_CHOOSE_FALLBACK(SmallTriangleBatch));
+      runnable_kernels<SmallTriangleBatchFunction>(SCANTRACE_KERNEL_TARGETS(SmallTriangleBatch));
   return kernels;
 }
 

@@ -111,10 +111,7 @@ namespace scantrace {
 
 std::span<const SimdKernelOf<SmallTriangleFunction>> small_triangle_kernels() {
   static const std::vector<SimdKernelOf<SmallTriangleFunction>> kernels =
-      runnable_kernels<SmallTriangleFunction>(
-          HWY_CHOOSE_AVX3(SmallTriangleSpans), HWY_CHOOSE_AVX2(SmallTriangleSpans),
-          HWY_CHOOSE_SSE4(SmallTriangleSpans), HWY_CHOOSE_SSSE3(SmallTriangleSpans),
-          HWY_CHOOSE_NEON(SmallTriangleSpans), HWY_CHOOSE_FALLBACK(SmallTriangleSpans));
+      runnable_kernels<SmallTriangleFunction>(SCANTRACE_KERNEL_TARGETS(SmallTriangleSpans));
   return kernels;
 }
 

@@ -3,8 +3,13 @@
 // and the problem), 2 usage error.
 #include "cli/app.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <exception>
+#include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <spdlog/spdlog.h>
@@ -28,11 +33,54 @@ std::string usage_failure(const CLI::App* app, const CLI::Error& e) {
          "' for more information.\n";
 }
 
+// Edits (insert, delete, substitute one character) that turn `a` into `b`.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The first word that is not an option of the main command, when it names no subcommand: CLI11
+// would only say "A subcommand is required" (issue 36), which does not tell a typo from a
+// missing word. The closest name within two edits is suggested.
+std::optional<std::string> unknown_subcommand(const CLI::App& app, int argc, char** argv,
+                                              std::span<const char* const> left_out) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view word = argv[i];
+    if (word.starts_with("-")) continue;  // -q, --quiet (the main command's only options)
+    for (const char* name : left_out)
+      if (word == name)
+        return "'" + std::string(word) +
+               "' is not in the demo's build (scripts/build.sh --demo builds what the demo "
+               "runs); 'bash scripts/build.sh' builds every subcommand";
+    std::string closest;
+    std::size_t best = 3;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      if (sub->get_name() == word) return std::nullopt;
+      const std::size_t d = edit_distance(word, sub->get_name());
+      if (d < best) best = d, closest = sub->get_name();
+    }
+    return "unknown subcommand '" + std::string(word) + "'" +
+           (closest.empty() ? "" : " (did you mean '" + closest + "'?)");
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 namespace scantrace::cli {
 
-int run_app(int argc, char** argv, std::span<const AddCommand> add) {
+int run_app(int argc, char** argv, std::span<const AddCommand> add,
+            std::span<const char* const> left_out) {
   scantrace::cli::setup_logging();
   scantrace::install_interrupt_handlers();
 
@@ -62,6 +110,13 @@ int run_app(int argc, char** argv, std::span<const AddCommand> add) {
     command.app->footer(command.app->get_footer() +
                         "\n\nAlso: -q, --quiet (before or after the subcommand) prints only "
                         "warnings and errors.\n");
+  if (const auto unknown = unknown_subcommand(app, argc, argv, left_out)) {
+    std::fputs(("scantrace: usage error: " + *unknown +
+                "\nRun 'scantrace --help' for the list of subcommands.\n")
+                   .c_str(),
+               stderr);
+    return kExitUsage;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

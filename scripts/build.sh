@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs missing dependencies, then configures and builds scantrace (Release) in build/.
 #   scripts/build.sh           everything: libraries, command, tests, examples, benchmarks
-#   scripts/build.sh --demo    only the `scantrace` command and its libraries, with only the
+#   scripts/build.sh --demo    only the `scantrace` command with the subcommands the demo runs
+#                              (not stress, bench, why, diff) and its libraries, with only the
 #                              packages they need (scripts/demo.sh: the quick first run)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -24,11 +25,13 @@ fi
 # the tests switched off in the cache for the next full build (nor the reverse).
 if [ "$demo" = 1 ]; then
   # Catch2, Google Benchmark and pybind11 are not installed for the demo, so their parts are not configured.
+  # Only the subcommands the demo runs (cli/main.cpp): stress, bench, why and diff come with the
+  # full build, which reuses every object of this one (same flags, same compiler launcher).
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=OFF \
-    -DSCANTRACE_BUILD_BENCH=OFF -DSCANTRACE_BUILD_PYTHON=OFF
+    -DSCANTRACE_BUILD_BENCH=OFF -DSCANTRACE_BUILD_PYTHON=OFF -DSCANTRACE_ALL_COMMANDS=OFF
   cmake --build build -j"$(nproc)" --target scantrace
 else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=ON \
-    -DSCANTRACE_BUILD_BENCH=ON -DSCANTRACE_BUILD_PYTHON=ON
+    -DSCANTRACE_BUILD_BENCH=ON -DSCANTRACE_BUILD_PYTHON=ON -DSCANTRACE_ALL_COMMANDS=ON
   cmake --build build -j"$(nproc)"
 fi

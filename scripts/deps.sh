@@ -12,8 +12,11 @@ set -euo pipefail
 # a refused one, cli/x_display.hpp.) (libhwy-dev: Google Highway, the core's SIMD Gouraud spans,
 # src/shade_bytes.hpp.) (libdeflate-dev: the compressor of the PNG writer of `scantrace render`,
 # which loads no OpenCV, io/png_writer.hpp.) (libsimdjson-dev: the scene file's fast path, io/scene_json_fast.hpp.)
+# (ccache: scripts/build.sh compiles through it when it is installed; the demo installs it too, so
+# that the demo's build and the full one use the same compiler launcher and the full build reuses
+# the demo's objects instead of compiling everything again, issue 36.)
 demo_packages=(cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libsimdjson-dev libopencv-dev libdeflate-dev
-               libcli11-dev libtinyobjloader-dev libmatio-dev libxcb1-dev libhwy-dev)
+               libcli11-dev libtinyobjloader-dev libmatio-dev libxcb1-dev libhwy-dev ccache)
 
 # THE FULL LIST (the test command, CI): every package, the demo's included; append new ones here.
 # ffmpeg provides ffprobe, with which the tests check the codec of the videos `replay` writes;

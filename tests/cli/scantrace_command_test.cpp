@@ -136,6 +136,26 @@ TEST_CASE("usage errors exit 2", "[command]") {
   CHECK(test::file_names(dir.path()) == std::vector<std::string>{"scene.json"});
 }
 
+// A misspelt subcommand is named, with the closest one, not "A subcommand is required" (issue 36).
+TEST_CASE("an unknown subcommand is named, with the closest one", "[command]") {
+  TempDir dir;
+  const auto typo = run_scantrace(dir.path(), {"rendr", "x.json"});
+  CHECK(typo.exit_code == 2);
+  CHECK(typo.err ==
+        "scantrace: usage error: unknown subcommand 'rendr' (did you mean 'render'?)\n"
+        "Run 'scantrace --help' for the list of subcommands.\n");
+  // After the main command's flag too; two edits away is still suggested.
+  const auto quiet = run_scantrace(dir.path(), {"-q", "expalin"});
+  CHECK(quiet.exit_code == 2);
+  CHECK_THAT(quiet.err, Catch::Contains("unknown subcommand 'expalin' (did you mean 'explain'?)"));
+  // Nothing close: no suggestion.
+  const auto bogus = run_scantrace(dir.path(), {"bogus"});
+  CHECK(bogus.exit_code == 2);
+  CHECK_THAT(bogus.err, Catch::Contains("unknown subcommand 'bogus'") && !Catch::Contains("mean"));
+  // No word at all is still CLI11's message.
+  CHECK_THAT(run_scantrace(dir.path(), {}).err, Catch::Contains("A subcommand is required"));
+}
+
 TEST_CASE("render writes the scene's pixels", "[command]") {
   TempDir dir;
   save_scene(two_triangles(), dir / "scene.json");
@@ -156,6 +176,49 @@ TEST_CASE("render writes the scene's pixels", "[command]") {
   CHECK(png.at<cv::Vec3b>(511, 511) == cv::Vec3b(255, 255, 255));
   CHECK(png.at<cv::Vec3b>(90, 100) == bgr_of({1.0 / 3, 1.0 / 3, 1.0 / 3}));  // at(row, col)
   CHECK(png.at<cv::Vec3b>(300, 310) == bgr_of({1.0, 0.4, 1.0 / 30}));
+}
+
+// The report's counts do not depend on the way the render ran (issue 36: near to far counted the
+// zero-area faces its box test rejected as hidden, and the bands traded them). A scene built so
+// that every count is known: a big face covering the canvas at depth 0, a small one in front of
+// it, three small faces behind it and seven zero-area faces (collinear corners) behind it.
+TEST_CASE("render's report counts the same faces skipped on every path", "[command]") {
+  TempDir dir;
+  Scene s;
+  s.width = s.height = 64;
+  const auto add = [&s](Vec2 a, Vec2 b, Vec2 c, double depth) {
+    const int i = static_cast<int>(s.vertices.size());
+    s.vertices.insert(s.vertices.end(), {a, b, c});
+    s.vcolors.insert(s.vcolors.end(), {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+    s.depth.insert(s.depth.end(), {depth, depth, depth});
+    s.faces.push_back({i, i + 1, i + 2});
+  };
+  add({-10, -10}, {200, -10}, {-10, 200}, 0);  // covers the canvas
+  add({20, 20}, {40, 22}, {25, 40}, -1);       // in front of it
+  for (int k = 0; k < 3; ++k) add({5.0 + 10 * k, 5}, {12.0 + 10 * k, 6}, {7.0 + 10 * k, 15}, 5);
+  for (int k = 0; k < 7; ++k) add({3.0 + 8 * k, 50}, {5.0 + 8 * k, 52}, {7.0 + 8 * k, 54}, 5);
+  save_scene(s, dir / "s.json");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> paths{
+      {{"--no-occlusion"}, "5 faces drawn, 0 culled, 7 skipped"},
+      {{"--no-occlusion", "--threads", "3"}, "5 faces drawn, 0 culled, 7 skipped"},
+      {{"--occlusion"}, "2 faces drawn, 0 culled, 7 skipped"},
+      {{"--occlusion", "--threads", "3"}, "2 faces drawn, 0 culled, 7 skipped"},
+      {{"--occlusion", "--shading", "flat"}, "2 faces drawn, 0 culled, 7 skipped"},
+      {{"--occlusion", "--depth", "zbuffer"}, "2 faces drawn, 0 culled, 7 skipped"}};
+  for (const auto& [options, counts] : paths) {
+    std::vector<std::string> args{"render", "s.json", "-o", "s.png"};
+    args.insert(args.end(), options.begin(), options.end());
+    const auto r = run_scantrace(dir.path(), args);
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.err, Catch::Contains(counts));
+    // Near to far: the three behind are hidden, and the header says the faces were drawn so.
+    if (options[0] == "--occlusion")
+      CHECK_THAT(r.err, Catch::Contains(", 3 hidden under nearer faces") &&
+                            Catch::Contains("near to far, cull"));
+    else
+      CHECK_THAT(r.err, !Catch::Contains("hidden") && !Catch::Contains("near to far, cull"));
+  }
 }
 
 TEST_CASE("render writes SCENE's stem .png in the current directory by default", "[command]") {

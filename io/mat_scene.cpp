@@ -101,8 +101,12 @@ class MatReader {
     s.vertices.resize(n);
     s.vcolors.resize(n);
     s.depth = depth.data;
+    // The 2021 course's MATLAB code uses the coordinates as 1-based pixel indices, as it does
+    // the face indices (img(floor(y + 0.5), floor(x + 0.5), :)): its pixel (1, 1) is scantrace's
+    // pixel (0, 0), centred at the point (0, 0). Without the - 1 every 2021 render is one pixel
+    // right and down of that course's, and `diff` calls a correct image `shifted`.
     for (std::size_t i = 0; i < n; ++i) {
-      s.vertices[i] = {vertices.at(i, 0), vertices.at(i, 1)};
+      s.vertices[i] = {vertices.at(i, 0) - 1, vertices.at(i, 1) - 1};
       s.vcolors[i] = {colors.at(i, 0), colors.at(i, 1), colors.at(i, 2)};
       if (clamping_) clamp(s.vcolors[i], row_name("vertex_colors", i));
     }

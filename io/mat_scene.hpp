@@ -1,14 +1,15 @@
 #pragma once
 // The 2021 course's scene as handed out: a MATLAB .mat file (v5, or v7.3 = HDF5) holding
 //
-//   vertices_2d    L×2  [x, y] pixels, x = column, y = row (pointing down)
+//   vertices_2d    L×2  [x, y] 1-based pixels, x = column, y = row (pointing down)
 //   faces          K×3  1-based vertex indices (MATLAB's convention)
 //   vertex_colors  L×3  [r, g, b] in [0, 1]
 //   depth          L×1  one number per vertex (larger = farther); 1×L is accepted too
 //
-// Any numeric class (double, single, integers). It maps to a Scene as: vertices_2d(i,:) is
-// vertices[i-1], faces(k,:) - 1 is faces[k-1], vertex_colors(i,:) is vcolors[i-1], depth(i) is
-// depth[i-1]; the canvas is the default 512×512 on white (the file has no canvas size). Every
+// Any numeric class (double, single, integers). It maps to a Scene as: vertices_2d(i,:) - 1 is
+// vertices[i-1] (MATLAB's pixel (x, y) is scantrace's (x - 1, y - 1)), faces(k,:) - 1 is
+// faces[k-1], vertex_colors(i,:) is vcolors[i-1], depth(i) is depth[i-1]; the canvas is the
+// default 512×512 on white (the file has no canvas size). Every
 // problem is an InputError naming the file and the variable in MATLAB's 1-based notation, e.g.
 // "scene.mat: faces(813,:): vertex index 5012 is out of range 1..4999".
 #include <algorithm>

@@ -13,10 +13,10 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli_test_support.hpp"
+#include "demo/demo_scene.hpp"
 #include "io/mat_scene.hpp"
 #include "io/scene_json.hpp"
 #include "scene_compare.hpp"
-#include "demo/demo_scene.hpp"
 
 using namespace scantrace;
 using scantrace::test::run_scantrace;
@@ -65,13 +65,14 @@ void write_mat(const std::filesystem::path& file, const std::vector<MatVar>& var
 }
 
 // A scene in the course's MATLAB conventions, converted here independently of the reader: rows
-// are vertices/faces, stored column after column, face indices + 1.
+// are vertices/faces, stored column after column, face indices + 1, coordinates + 1 (MATLAB's
+// pixel (1, 1) is scantrace's (0, 0)).
 std::vector<MatVar> course_vars(const Scene& s) {
   const std::size_t n = s.vertices.size(), k = s.faces.size();
   MatVar v{"vertices_2d", n, 2, {}}, f{"faces", k, 3, {}}, c{"vertex_colors", n, 3, {}},
       d{"depth", n, 1, s.depth};
-  for (std::size_t i = 0; i < n; ++i) v.column_major.push_back(s.vertices[i].x);
-  for (std::size_t i = 0; i < n; ++i) v.column_major.push_back(s.vertices[i].y);
+  for (std::size_t i = 0; i < n; ++i) v.column_major.push_back(s.vertices[i].x + 1);
+  for (std::size_t i = 0; i < n; ++i) v.column_major.push_back(s.vertices[i].y + 1);
   for (std::size_t col = 0; col < 3; ++col)
     for (std::size_t i = 0; i < k; ++i) f.column_major.push_back(s.faces[i][col] + 1);
   for (std::size_t i = 0; i < n; ++i) c.column_major.push_back(s.vcolors[i].r);
@@ -106,8 +107,9 @@ TEST_CASE(".mat: 1-based rows and columns map to scantrace's scene", "[mat]") {
     const auto file = dir / "small.mat";
     write_mat(file, small_vars(), version);
     const Scene s = load_mat_scene(file);
-    // By hand from small_vars(): row i of each matrix is vertex i - 1.
-    CHECK(s.vertices == std::vector<Vec2>{{10, 10}, {100, 10}, {10, 90}, {100, 90}});
+    // By hand from small_vars(): row i of each matrix is vertex i - 1, at MATLAB's 1-based
+    // pixel coordinates minus 1.
+    CHECK(s.vertices == std::vector<Vec2>{{9, 9}, {99, 9}, {9, 89}, {99, 89}});
     CHECK(s.faces == std::vector<std::array<int, 3>>{{0, 1, 2}, {1, 3, 2}});
     CHECK(s.vcolors == std::vector<Color>{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, 0.5}});
     CHECK(s.depth == std::vector<double>{4, 3, 2, 1});
@@ -127,6 +129,32 @@ TEST_CASE(".mat: 1-based rows and columns map to scantrace's scene", "[mat]") {
   vars[3].cols = 4;
   write_mat(dir / "row_depth.mat", vars);
   CHECK(load_mat_scene(dir / "row_depth.mat").depth == std::vector<double>{4, 3, 2, 1});
+}
+
+// The 2021 course's MATLAB code paints a vertex at img(floor(y + 0.5), floor(x + 0.5), :), 1-based:
+// a triangle around MATLAB's pixel (x, y) = (5, 7) must colour scantrace's pixel (4, 6), the
+// fifth column and seventh row, and nothing else (issue 36: the reader did not subtract 1).
+TEST_CASE(".mat: MATLAB's pixel (x, y) is scantrace's (x - 1, y - 1)", "[mat][command]") {
+  TempDir dir;
+  // One red triangle whose 0.8-pixel extent holds only the centre of MATLAB pixel (5, 7).
+  const std::vector<MatVar> vars{{"vertices_2d", 3, 2, {4.6, 5.4, 5, /* y: */ 6.6, 6.6, 7.4}},
+                                 {"faces", 1, 3, {1, 2, 3}},
+                                 {"vertex_colors", 3, 3, {1, 1, 1, 0, 0, 0, 0, 0, 0}},
+                                 {"depth", 3, 1, {1, 1, 1}}};
+  write_mat(dir / "one_pixel.mat", vars);
+  const auto r = run_scantrace(dir.path(), {"-q", "render", "one_pixel.mat", "--size", "12x12",
+                                            "--unlit", "-o", "one_pixel.png"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const cv::Mat png = cv::imread((dir / "one_pixel.png").string(), cv::IMREAD_COLOR);
+  REQUIRE(png.size() == cv::Size(12, 12));
+  std::vector<cv::Point> red;
+  for (int y = 0; y < png.rows; ++y)
+    for (int x = 0; x < png.cols; ++x)
+      if (png.at<cv::Vec3b>(y, x) != cv::Vec3b(255, 255, 255)) red.emplace_back(x, y);
+  REQUIRE(red.size() == 1);
+  CHECK(red[0] == cv::Point(4, 6));
+  CHECK(png.at<cv::Vec3b>(6, 4) == cv::Vec3b(0, 0, 255));  // BGR
 }
 
 TEST_CASE(".mat: a generated scene renders like its JSON twin, v5 and v7.3", "[mat][command]") {

@@ -60,7 +60,10 @@ void run_diff(const DiffArgs& args) {
       "compared {} with {} in {:.1f} ms, {:.1f} ms of CPU (image decoding included; scene "
       "loaded in {:.1f} ms){}",
       args.image, args.scene, diff_ms, diff_cpu_ms, load_ms,
-      args.output.empty() ? "" : " -> " + args.output + "/diff.png, report.json");
+      // (the path joined, not pasted: `-o graded/` printed graded//diff.png)
+      args.output.empty()
+          ? ""
+          : " -> " + (std::filesystem::path(args.output) / "diff.png").string() + ", report.json");
   if (!report.agrees()) throw ExitStatus{kExitImagesDiffer};
 }
 
@@ -77,7 +80,8 @@ Command add_diff_command(CLI::App& app) {
       "order, order_tie, missing_face, degenerate_drawn, colour, background, other;\n"
       "see docs/grading.md). Prints a Markdown summary; -o DIR also writes\n"
       "DIR/diff.png and DIR/report.json.");
-  cmd->add_option("SCENE", args->scene, "scene file (JSON) or OBJ model, as for 'render'")
+  cmd->add_option("SCENE", args->scene,
+                  "scene file (JSON or MATLAB .mat) or OBJ model, as for\n'render'")
       ->required();
   cmd->add_option("IMAGE", args->image,
                   "the image to grade: 8-bit PNG, JPEG or BMP, or a NumPy\n"

@@ -52,7 +52,7 @@ Command add_explain_command(CLI::App& app) {
   add_fill_flags(*cmd, args->fill);
   add_model_flags(*cmd, args->model, true);
   add_replay_flags(*cmd, args->replay, false);
-  cmd->callback([args] { args->what.check(args->fill.fill_rule); });
+  cmd->callback([args] { args->what.check(args->fill.fill_rule, args->fill.method); });
   cmd->footer(
       "Examples:\n"
       "  scantrace explain --triangle \"20,20 250,80 300,400\" -o triangle.mp4\n"

@@ -43,8 +43,8 @@ struct ModelFlags {
 };
 
 // `beside_triangle_flags`: the command also has trace's flags, which own --size (trace, explain;
-// --model-size stays as a deprecated alias there); otherwise --size is added here (render), and
-// render's old --colors is a deprecated alias of --model-colors.
+// --model-size stays as a deprecated alias there); otherwise --size is added here (render), with
+// --model-size and render's old --colors (of --model-colors) as deprecated aliases.
 void add_model_flags(CLI::App& command, ModelFlags& flags, bool beside_triangle_flags);
 
 // What trace and explain fill: a model shaded into a scene, a scene file, or one triangle.

@@ -2,7 +2,6 @@
 #include <memory>
 #include <string>
 
-#include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
@@ -21,11 +20,7 @@ struct ReplayArgs {
 
 void run(const ReplayArgs& args) {
   const trace::Trace t = load_trace(args.trace, args.partial);
-  if (t.truncated())
-    spdlog::warn(
-        "warning: {}: the trace was truncated by its event budget (--max-events); "
-        "replaying the events it holds",
-        args.trace);
+  warn_if_truncated(t, args.trace);
   run_replay(t, args.replay, args.trace);
 }
 

@@ -75,9 +75,7 @@ void require_display() {
 trace::Trace input_trace(const StepArgs& args) {
   if (is_trace_file(args.what.scene)) {
     trace::Trace t = load_trace(args.what.scene, args.partial);
-    if (t.truncated())
-      spdlog::warn("warning: {}: the trace was truncated by its event budget (--max-events)",
-                   args.what.scene);
+    warn_if_truncated(t, args.what.scene);
     return t;
   }
   return record_in_memory(args.what, args.fill, args.model);
@@ -200,7 +198,7 @@ Command add_step_command(CLI::App& app) {
   cmd->add_option("--save-dir", args->save_dir, "where s writes step_NNNNN.png")
       ->capture_default_str();
   cmd->callback([args] {
-    if (!is_trace_file(args->what.scene)) args->what.check(args->fill.fill_rule);
+    if (!is_trace_file(args->what.scene)) args->what.check(args->fill.fill_rule, args->fill.method);
   });
   cmd->footer(
       "Examples:\n"

@@ -82,7 +82,7 @@ Command add_trace_command(CLI::App& app) {
                   "stop before the file would exceed N bytes; the footer\nthen says truncated")
       ->check(CLI::Range(1024LL, 1LL << 50))
       ->capture_default_str();
-  cmd->callback([args] { args->what.check(args->fill.fill_rule); });
+  cmd->callback([args] { args->what.check(args->fill.fill_rule, args->fill.method); });
   cmd->footer(
       "Examples:\n"
       "  scantrace trace --triangle \"20,20 250,80 300,400\" -o triangle.jsonl\n"

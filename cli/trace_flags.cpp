@@ -126,7 +126,7 @@ WindingRule TraceFlags::winding_rule() const {
   return w;
 }
 
-void TraceFlags::check(const std::string& fill_rule) const {
+void TraceFlags::check(const std::string& fill_rule, const std::string& method) const {
   if (scene.empty() && triangle.empty() && polygon.empty())
     throw CLI::RequiredError("a SCENE file, --triangle or --polygon");
   if (!polygon.empty()) {
@@ -134,6 +134,11 @@ void TraceFlags::check(const std::string& fill_rule) const {
       throw CLI::ValidationError("--fill-rule",
                                  "closed is not defined for general polygons (where edges cross "
                                  "or contours touch); use top-left");
+    // A usage error like the one above, before the fill refuses it as bad input (issue 36).
+    if (method == "halfspace")
+      throw CLI::ValidationError("--method",
+                                 "halfspace tests convex half-planes, which a general polygon "
+                                 "is not; use exact, double or float");
     std::size_t vertices = 0;
     for (const auto& c : parse_polygon(polygon)) vertices += c.size();
     if (parse_color_list(colors).size() > vertices)

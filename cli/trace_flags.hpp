@@ -36,8 +36,9 @@ struct TraceFlags {
       bool clamp_colors) const;
   WindingRule winding_rule() const;
   // The checks that need several options at once (run from the subcommand's callback, so they
-  // are usage errors): an input is given, --colors fits it, a polygon is not filled `closed`.
-  void check(const std::string& fill_rule) const;
+  // are usage errors): an input is given, --colors fits it, a polygon is not filled `closed` nor
+  // by the halfspace method.
+  void check(const std::string& fill_rule, const std::string& method) const;
   trace::TraceFilter filter() const;
   // "SCENE" or "the triangle (x0,y0) (x1,y1) (x2,y2)", for messages.
   std::string input_name() const;

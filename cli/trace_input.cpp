@@ -34,4 +34,12 @@ trace::Trace load_trace(const std::string& file, bool partial) {
   return t;
 }
 
+void warn_if_truncated(const trace::Trace& t, const std::string& file) {
+  if (!t.truncated()) return;
+  spdlog::warn(
+      "warning: {}: the trace was truncated after {} events by a budget of 'scantrace trace' "
+      "(--max-events or --max-bytes); using the events it holds",
+      file, t.footer()->events);
+}
+
 }  // namespace scantrace::cli

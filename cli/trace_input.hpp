@@ -10,4 +10,8 @@ namespace scantrace::cli {
 
 trace::Trace load_trace(const std::string& file, bool partial);
 
+// Warns when the trace `file` was cut by a budget of `scantrace trace`. The file does not record
+// which one, so both are named: the warning blamed --max-events for a trace cut by --max-bytes.
+void warn_if_truncated(const trace::Trace& t, const std::string& file);
+
 }  // namespace scantrace::cli

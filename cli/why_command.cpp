@@ -13,6 +13,7 @@
 #include "cli/grade_scene.hpp"
 #include "cli/replay_flags.hpp"
 #include "cli/stopwatch.hpp"
+#include "cli/validators.hpp"
 #include "grade/pixel_story.hpp"
 #include "grade/scene_around.hpp"
 
@@ -74,7 +75,8 @@ Command add_why_command(CLI::App& app) {
       "the active points; or written, with the colour, t along the span and the\n"
       "depth test), what the fill rule does with a centre exactly on an edge or a\n"
       "vertex, and the final colour. Only the faces around the pixel are traced.");
-  cmd->add_option("SCENE", args->scene, "scene file (JSON) or OBJ model, as for 'render'")
+  cmd->add_option("SCENE", args->scene,
+                  "scene file (JSON or MATLAB .mat) or OBJ model, as for\n'render'")
       ->required();
   cmd->add_option("X", args->x, "column of the pixel (0 = left)")
       ->required()
@@ -87,9 +89,12 @@ Command add_why_command(CLI::App& app) {
   cmd->add_flag("--json", args->json,
                 "print one JSON document instead of text (schema:\n"
                 "trace/why_schema.json)");
+  // Checked while parsing, as replay's -o is: a bad extension is a usage error before the
+  // story is printed, not an error after it (issue 36).
   cmd->add_option("--explain", args->explain,
-                  "also replay the faces around the pixel into OUT.mp4 or\n"
-                  "OUT_DIR/ (as 'replay' writes them)");
+                  "also replay the faces around the pixel into OUT.mp4,\n"
+                  "OUT_DIR/ or OUT.html (as 'replay' writes them)")
+      ->check(parsed_by([](const std::string& v) { viz::output_kind(v); }));
   cmd->footer(
       "Examples:\n"
       "  scantrace why scene.json 100 200\n"

@@ -71,6 +71,12 @@ TEST_CASE(
   REQUIRE(r.exit_code == 0);
   CHECK_THAT(r.err, Catch::Contains("--model-size is deprecated, use --size"));
   CHECK(trace::Trace::load(dir / "m2.jsonl").header().canvas.width == 42);
+  // And in render, as the README says of every command that takes a model (exit 2 before).
+  r = run_scantrace(dir.path(), {"render", kModel, "--model-size", "44x30", "-o", "m.png"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("--model-size is deprecated, use --size"));
+  CHECK(cv::imread((dir / "m.png").string()).size() == cv::Size(44, 30));
 }
 
 TEST_CASE(
@@ -123,11 +129,27 @@ TEST_CASE("a selection that matches nothing is an error, and nothing is written"
   r = run_scantrace(dir.path(), {"trace", "s.json", "--rows", "50:60", "-o", "t.jsonl"});
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.err, Catch::Contains("--rows: selects no row of the canvas (rows 0..9)"));
+  // Rows of the canvas that hold none of the selected faces (face 0 lies within rows 1..8, face 1
+  // within 2..9 of the 10): an empty trace before (issue 36).
+  r = run_scantrace(dir.path(),
+                    {"trace", "s.json", "--triangles", "0", "--rows", "9:9", "-o", "t.jsonl"});
+  CHECK(r.exit_code == 1);
+  CHECK(r.err ==
+        "scantrace: error: s.json: --rows: selects no row of the selected faces (its faces lie "
+        "within rows 1..8), so there is nothing to trace\n");
+  r = run_scantrace(dir.path(), {"trace", "--triangle", "1,5 9,6 4,8", "--size", "12x12", "--rows",
+                                 "0:3", "-o", "t.jsonl"});
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Catch::Contains("--rows: selects no row of the input (its faces lie within "
+                                    "rows 5..8)"));
   r = run_scantrace(dir.path(), {"explain", "s.json", "--triangles", "2-5", "-o", "e.mp4"});
   CHECK(r.exit_code == 1);
   CHECK(file_names(dir.path()) == std::vector<std::string>{"s.json"});
   // A selection that matches something still works.
   CHECK(run_scantrace(dir.path(), {"trace", "s.json", "--triangles", "1-5", "-o", "t.jsonl"})
+            .exit_code == 0);
+  CHECK(run_scantrace(dir.path(),
+                      {"trace", "s.json", "--triangles", "1", "--rows", "9:9", "-o", "t.jsonl"})
             .exit_code == 0);
 }
 
@@ -151,4 +173,10 @@ TEST_CASE("help and warnings name the right options", "[command][options]") {
       run_scantrace(dir.path(), {"trace", "s.json", "--max-bytes", "1024", "-o", "b.jsonl"});
   CHECK(bytes.exit_code == 0);
   CHECK_THAT(bytes.err, Catch::Contains("by its budget --max-bytes 1024"));
+  // Replaying the cut trace does not blame --max-events alone (the file does not say which).
+  const auto replayed =
+      run_scantrace(dir.path(), {"replay", "b.jsonl", "-o", "b/", "--steps", "1"});
+  CHECK(replayed.exit_code == 0);
+  CHECK_THAT(replayed.err, Catch::Contains("b.jsonl: the trace was truncated after") &&
+                               Catch::Contains("(--max-events or --max-bytes)"));
 }

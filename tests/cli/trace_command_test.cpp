@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "cli_test_support.hpp"
-#include "io/scene_json.hpp"
 #include "demo/demo_scene.hpp"
+#include "io/scene_json.hpp"
 #include "trace/event_json.hpp"
 #include "trace/record.hpp"
 
@@ -113,7 +113,7 @@ TEST_CASE("trace --polygon writes the narration of a polygon with a hole under a
   CHECK(e.scanline(0, 10).intervals->size() == 2);
 }
 
-TEST_CASE("trace --polygon: malformed polygons and the closed rule are usage errors",
+TEST_CASE("trace --polygon: malformed polygons, the closed rule and halfspace are usage errors",
           "[command][trace][polygon]") {
   TempDir dir;
   auto code = [&](std::vector<std::string> args) {
@@ -124,6 +124,10 @@ TEST_CASE("trace --polygon: malformed polygons and the closed rule are usage err
   CHECK(code({"--polygon", "0,0 9,0 | 1,1 2,2 3,1"}) == 2);  // a contour of two points
   CHECK(code({"--polygon", "0,0 9,0 x,1"}) == 2);
   CHECK(code({"--polygon", "0,0 9,0 0,9", "--fill-rule", "closed"}) == 2);
+  // As docs/polygons.md says (issue 36: exit 1, from the fill).
+  CHECK(code({"--polygon", "0,0 9,0 0,9", "--method", "halfspace"}) == 2);
+  CHECK(code({"--polygon", "0,0 9,0 0,9", "--method", "double"}) == 0);
+  std::filesystem::remove(dir / "x.jsonl");
   CHECK(code({"--polygon", "0,0 9,0 0,9", "--colors", "1,0,0 0,1,0 0,0,1 1,1,1"}) == 2);
   CHECK(code({"--polygon", "0,0 9,0 0,9", "--triangle", "0,0 9,0 0,9"}) == 2);
   CHECK(code({"--triangle", "0,0 9,0 0,9", "--winding", "non-zero"}) == 2);

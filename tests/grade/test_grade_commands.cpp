@@ -32,6 +32,10 @@ TEST_CASE("diff: an identical image exits 0, a wrong one 3 with diff.png and rep
   const auto same = run_scantrace(dir.path(), {"diff", "scene.json", "good.png", "-o", "same"});
   CHECK(same.exit_code == 0);
   CHECK(same.out.find("agrees") != std::string::npos);
+  // The paths printed are joined: `-o graded/` printed graded//diff.png (issue 36).
+  const auto slash = run_scantrace(dir.path(), {"diff", "scene.json", "good.png", "-o", "graded/"});
+  CHECK(slash.exit_code == 0);
+  CHECK_THAT(slash.err, Catch::Contains("-> graded/diff.png, report.json"));
   const auto report = nlohmann::json::parse(scantrace::test::read_text(dir / "same/report.json"));
   CHECK(report["differing_pixels"] == 0);
   CHECK(report["global"].empty());
@@ -118,4 +122,17 @@ TEST_CASE("why: text, JSON, a pixel outside the canvas", "[grade][cli]") {
   CHECK(outside.exit_code == 1);
   CHECK(lines(outside.err) == 1);
   CHECK(run_scantrace(dir.path(), {"why", "scene.json", "5"}).exit_code == 2);
+  // An --explain output replay cannot write is a usage error before any work: no story on
+  // stdout, as `replay -o x.avi` (issue 36: the story was printed, then exit 1).
+  const auto txt =
+      run_scantrace(dir.path(), {"why", "scene.json", "40", "40", "--explain", "why.txt"});
+  CHECK(txt.exit_code == 2);
+  CHECK(txt.out.empty());
+  CHECK_THAT(txt.err, Catch::Contains("--explain") && Catch::Contains("why.txt"));
+  // The help names every input and output it takes.
+  for (const char* sub : {"why", "diff"}) {
+    const auto help = run_scantrace(dir.path(), {sub, "--help"});
+    CHECK_THAT(help.out, Catch::Contains("JSON or MATLAB .mat"));
+  }
+  CHECK_THAT(run_scantrace(dir.path(), {"why", "--help"}).out, Catch::Contains("OUT.html"));
 }

@@ -126,16 +126,18 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
       } else {
         seen[i] = ids.ids[i];
       }
-      if (submitted.eight_bit) {
-        for (const auto& [rv, gv] : {std::pair{r.r, g.r}, {r.g, g.g}, {r.b, g.b}}) {
-          const int round = to_byte(rv), floor = static_cast<int>(std::floor(255.0 * rv + 1e-9));
-          const int got = static_cast<int>(std::lround(255.0 * gv));
-          if (round == floor) continue;
-          if (got == floor)
-            ++truncated;
-          else if (got == round)
-            ++rounded;
-        }
+      // 8-bit values: those of an image file, and those of a float array that holds multiples of
+      // 1/255 (floor(255·c)/255 written as floats had no note, issue 36).
+      for (const auto& [rv, gv] : {std::pair{r.r, g.r}, {r.g, g.g}, {r.b, g.b}}) {
+        const double level = 255.0 * gv;
+        if (!submitted.eight_bit && !(std::fabs(level - std::round(level)) < 1e-3)) continue;
+        const int round = to_byte(rv), floor = static_cast<int>(std::floor(255.0 * rv + 1e-9));
+        const int got = static_cast<int>(std::lround(level));
+        if (round == floor) continue;
+        if (got == floor)
+          ++truncated;
+        else if (got == round)
+          ++rounded;
       }
     }
   report.differing_pixels = static_cast<std::int64_t>(differing.size());

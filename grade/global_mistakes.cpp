@@ -14,8 +14,16 @@ double max_diff(Rgb32f a, Rgb32f b) {
   return std::max({std::fabs(a.r - b.r), std::fabs(a.g - b.g), std::fabs(a.b - b.b)});
 }
 
+// Three decimals at most, without trailing zeros: 0.99 as 0.99, 1 as 1, 252/255 as 0.988.
+std::string component(double v) {
+  std::string s = fmt::format("{:.3f}", v);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
 std::string rgb(Color c) {
-  return fmt::format("({:.3f}, {:.3f}, {:.3f})", c.r, c.g, c.b);
+  return "(" + component(c.r) + ", " + component(c.g) + ", " + component(c.b) + ")";
 }
 
 // A way the image may have been produced wrongly, as the pixel of the image that lands on the
@@ -130,22 +138,35 @@ std::vector<GlobalMistake> find_global_mistakes(const Scene& scene, const RgbIma
     }
 
   // The background: the most common colour where the reference shows none of the faces.
+  const auto background_pixel = [&](int x, int y) {
+    return ids.at(x, y) < 0 && compared[static_cast<std::size_t>(y) * W + x];
+  };
+  const auto bin = [](Rgb32f p) {  // the pixel's 8-bit colour, as one key
+    const Bgr8 b = Bgr8::from(p.color());
+    return static_cast<std::uint32_t>(b.r) << 16 | static_cast<std::uint32_t>(b.g) << 8 | b.b;
+  };
   std::unordered_map<std::uint32_t, std::int64_t> counts;
   std::int64_t bg_pixels = 0;
   for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      if (ids.at(x, y) >= 0 || !compared[static_cast<std::size_t>(y) * W + x]) continue;
-      ++bg_pixels;
-      const Rgb32f p = image(x, y);
-      const Bgr8 b = Bgr8::from(p.color());
-      ++counts[static_cast<std::uint32_t>(b.r) << 16 | static_cast<std::uint32_t>(b.g) << 8 | b.b];
-    }
+    for (int x = 0; x < W; ++x)
+      if (background_pixel(x, y)) ++bg_pixels, ++counts[bin(image(x, y))];
   std::uint32_t mode = 0;
   std::int64_t mode_count = 0;
   for (const auto& [key, n] : counts)
     if (n > mode_count || (n == mode_count && key < mode)) mode = key, mode_count = n;
   if (bg_pixels > 0 && 2 * mode_count >= bg_pixels) {
     const Color seen{(mode >> 16) / 255.0, ((mode >> 8) & 255) / 255.0, (mode & 255) / 255.0};
+    // Printed: the mean of the values in the mode's 8-bit bin, not the bin, so that a float
+    // image's 0.99 is not reported as 252/255 = 0.988 (issue 36).
+    double sum[3] = {0, 0, 0};
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        if (background_pixel(x, y) && bin(image(x, y)) == mode) {
+          const Rgb32f p = image(x, y);
+          sum[0] += p.r, sum[1] += p.g, sum[2] += p.b;
+        }
+    const double n = static_cast<double>(mode_count);
+    const Color seen_mean{sum[0] / n, sum[1] / n, sum[2] / n};
     // The mode is 8-bit; compare with half a level of slack on top of the tolerance.
     const Rgb32f expected = Rgb32f::from(scene.background);
     const Rgb32f seen_px = Rgb32f::from(seen);
@@ -153,7 +174,7 @@ std::vector<GlobalMistake> find_global_mistakes(const Scene& scene, const RgbIma
       found.push_back({"background",
                        fmt::format("the background is {} instead of {} ({} of {} background "
                                    "pixels)",
-                                   rgb(seen), rgb(scene.background), mode_count, bg_pixels),
+                                   rgb(seen_mean), rgb(scene.background), mode_count, bg_pixels),
                        undo});
       if (undo)
         for (int y = 0; y < H; ++y)

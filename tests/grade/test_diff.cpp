@@ -32,6 +32,12 @@ bool has_global(const DiffReport& r, const std::string& kind) {
                      [&](const auto& g) { return g.kind == kind; });
 }
 
+std::string global_text(const DiffReport& r, const std::string& kind) {
+  for (const auto& g : r.global)
+    if (g.kind == kind) return g.text;
+  return "(no " + kind + " mistake)";
+}
+
 // The faces the correct picture shows somewhere: per pixel the last face, in the test's own
 // painter's order, whose exact coverage holds the centre.
 std::set<int> visible_faces(const Scene& s) {
@@ -207,6 +213,12 @@ TEST_CASE("8-bit truncation stays inside the tolerance and is noted", "[grade][d
   CHECK(mentions(r.notes, "truncation"));
   const DiffReport rounded = diff(s, opts(Shading::gouraud), as_8bit(good, false));
   CHECK_FALSE(mentions(rounded.notes, "truncation"));
+  // The same values as a float .npy, floor(255·c)/255 (issue 36: no note for floats before); a
+  // float image of the exact colours is not 8-bit and gets none.
+  grade::SubmittedImage floats = as_8bit(good, true);
+  floats.format = "npy", floats.eight_bit = false;
+  CHECK(mentions(diff(s, opts(Shading::gouraud), floats).notes, "truncation"));
+  CHECK_FALSE(mentions(diff(s, opts(Shading::gouraud), as_npy(good)).notes, "truncation"));
 }
 
 TEST_CASE("global mistakes are one line each, undone, and the rest agrees", "[grade][diff]") {
@@ -258,6 +270,9 @@ TEST_CASE("global mistakes are one line each, undone, and the rest agrees", "[gr
     const RgbImage t = render_wrong(grey, Shading::gouraud, Mistake::none);
     const DiffReport r = diff(s, opts(Shading::gouraud), as_npy(t));
     CHECK(has_global(r, "background"));
+    // The float values as they are, not their 8-bit bin 252/255 = 0.988 (issue 36).
+    CHECK_THAT(global_text(r, "background"),
+               Catch::StartsWith("the background is (0.99, 0.99, 0.99) instead of (1, 1, 1) ("));
     CHECK(r.differing_pixels == 0);
     const DiffReport raw = diff(s, opts(Shading::gouraud), as_npy(t), {.undo = false});
     CHECK(raw.differing_pixels > 1000);

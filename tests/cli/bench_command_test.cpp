@@ -19,6 +19,11 @@ TEST_CASE("bench writes its report, CSV and plot", "[command][bench]") {
        {"### built-in scene", "### small triangles (10 px²)", "### vertex at −1e9",
         "## The float canvas", "## What the fill skips", "## Parallel render", "## Targets"})
     CHECK_THAT(r.out, Catch::Contains(heading));
+  // --quick draws the half-canvas triangle on 1024²: every heading says so (issue 36: the table
+  // said "half of 4096²").
+  CHECK_THAT(r.out, Catch::Contains("### half of 1024² (one triangle)") &&
+                        Catch::Contains("## One triangle over half of a 1024² canvas") &&
+                        !Catch::Contains("4096"));
   CHECK_THAT(r.out, Catch::Contains("| exact | flat |") && Catch::Contains("| opencv | flat |") &&
                         Catch::Contains("| memset |"));
   // Bit-identical parallel output is checked by the bench itself: every row of its table says

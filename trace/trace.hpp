@@ -5,7 +5,8 @@
 //   t.triangles();                        // the triangles traced, in order
 //   t.edge_table(0).edges[1].dx_dy;       // the edge table of triangle 0
 //   t.scanline(0, 42).active_points;      // triangle 0 at row 42: active edges, points, span…
-//   t.pixel_history(100, 200).final();    // who wrote pixel (100, 200), in order, and the last
+//   t.pixel_history(200, 200).final();    // who wrote pixel (200, 200), in order, and the last
+//                                         // (final() throws for a pixel nobody wrote)
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>

@@ -128,7 +128,7 @@ def trace_triangle(vertices, vcolors, *, shading="gouraud", fill_rule="top-left"
         t.edge_table(0).edges[1].dx_dy
         t.scanline(0, 42).active_points[0].x
         t.scanline(0, 42).span.x_begin
-        t.pixel_history(100, 200).final().color
+        t.pixel_history(200, 200).final().color   # (100, 200) is outside the triangle
         t.image                               # the image the traced fill drew (float64)
     """
     return _scantrace.trace_triangle(vertices, vcolors, shading=shading, fill_rule=fill_rule,

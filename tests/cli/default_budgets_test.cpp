@@ -1,5 +1,5 @@
 // The defaults the README and docs/robustness.md quote: `trace --max-bytes` 1 GiB, `--max-frames`
-// 20000 for replays, frame sizes even and 320x180 .. 7680x4320 (README "Outputs").
+// 20000 for replays, frame sizes even and 320x180 .. 7680x4320 (docs/usage.md "Outputs").
 #include <catch2/catch.hpp>
 #include <string>
 #include <vector>

@@ -35,7 +35,7 @@ SKIPPED = 77
 #   exit: expected status (default 0); files: paths that must exist afterwards (relative to the
 #   scratch directory; a trailing / is a non-empty directory); out / err: text that must appear.
 RUN = {
-    # README.md
+    # README.md, docs/usage.md
     "build/cli/scantrace render scantrace-demo/demo_scene.json": {"files": ["demo_scene.png"]},
     "build/cli/scantrace render scantrace-demo/demo_scene.json --shading flat -o flat.png": {
         "files": ["flat.png"]},
@@ -50,7 +50,7 @@ RUN = {
     'build/cli/scantrace explain --triangle "20,20 250,80 300,400" -o triangle.mp4': {
         "files": ["triangle.mp4"]},
     "build/cli/scantrace replay triangle.jsonl -o frames/ --steps 5:12 --video-size 1920x1080": {
-        # the frames are numbered as the steps (README "Outputs")
+        # the frames are numbered as the steps (docs/usage.md "Outputs")
         "files": ["frames/frame_00005.png", "frames/frame_00012.png"],
         "absent": ["frames/frame_00001.png", "frames/frame_00013.png"]},
     'build/cli/scantrace explain --triangle "2.3,1.2 13,4.5 5,11.6" --size 16x14 -o small.mp4': {

@@ -13,7 +13,7 @@ int main() {
   scene.depth = {1, 1, 1};
   const auto image = scantrace::render(scene);
 
-  // Pixel (x, y) is sampled at the integer point (x, y) (README "Scene files"). The hypotenuse
+  // Pixel (x, y) is sampled at the integer point (x, y) (docs/usage.md "Scene files"). The hypotenuse
   // x + y = 8 is a right edge, excluded by the top-left rule; the top edge y = 0 and the left
   // edge x = 0 are included. So the pixel is red iff x + y <= 7: 8 + 7 + … + 1 = 36 pixels; the
   // rest stay white.

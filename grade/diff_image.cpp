@@ -9,25 +9,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "grade/diff_picture.hpp"
 #include "io/atomic_write.hpp"
 
 namespace scantrace::grade {
 namespace {
-
-// One distinct colour per category (BGR), in kCategories' order.
-const cv::Vec3b kCategoryColour[] = {
-    {0, 0, 230},      // boundary: red
-    {0, 140, 255},    // near_boundary: orange
-    {0, 200, 200},    // shifted: olive yellow
-    {200, 0, 200},    // order: magenta
-    {230, 160, 230},  // order_tie: pale magenta
-    {230, 90, 0},     // missing_face: blue
-    {40, 40, 40},     // degenerate_drawn: black
-    {0, 170, 0},      // colour: green
-    {200, 200, 0},    // background: cyan
-    {120, 60, 120},   // other: plum
-};
-static_assert(sizeof kCategoryColour / sizeof kCategoryColour[0] == kCategories.size());
 
 constexpr int kWindow = 32, kZoom = 8, kPanel = 300;
 
@@ -38,19 +24,11 @@ void write_diff_image(const DiffReport& r, const std::filesystem::path& file) {
   const int height =
       std::max(H, 40 + 22 * static_cast<int>(kCategories.size()) + 30 + kWindow * kZoom + 40);
   cv::Mat out(height, W + kPanel, CV_8UC3, cv::Scalar(255, 255, 255));
+  const std::vector<std::uint8_t> picture = diff_picture(r);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
-      const std::uint8_t cat = r.category_map[static_cast<std::size_t>(y) * W + x];
-      cv::Vec3b& px = out.at<cv::Vec3b>(y, x);
-      if (cat) {
-        px = kCategoryColour[cat - 1];
-      } else {
-        // The reference as light grey: luminance squeezed into [150, 245].
-        const Rgb32f c = r.reference(x, y);
-        const double l = 0.299 * c.r + 0.587 * c.g + 0.114 * c.b;
-        const auto g = static_cast<unsigned char>(150 + 95 * std::clamp(l, 0.0, 1.0));
-        px = {g, g, g};
-      }
+      const std::uint8_t* p = &picture[3 * (static_cast<std::size_t>(y) * W + x)];
+      out.at<cv::Vec3b>(y, x) = {p[2], p[1], p[0]};  // OpenCV holds BGR
     }
   // The worst window: the most differing pixels, on a grid of half-window steps.
   int best_x = 0, best_y = 0, best_n = -1;
@@ -72,7 +50,10 @@ void write_diff_image(const DiffReport& r, const std::filesystem::path& file) {
   put(fmt::format("{} of {} pixels differ", r.differing_pixels, r.compared_pixels), px0, 22, 0.5);
   int y = 46;
   for (std::size_t c = 0; c < kCategories.size(); ++c, y += 22) {
-    cv::rectangle(out, {px0, y - 12, 14, 14}, cv::Scalar(kCategoryColour[c]), cv::FILLED);
+    cv::rectangle(
+        out, {px0, y - 12, 14, 14},
+        cv::Scalar(kCategoryColours[c][2], kCategoryColours[c][1], kCategoryColours[c][0]),
+        cv::FILLED);
     put(fmt::format("{}  {}", kCategories[c], r.categories.at(kCategories[c])), px0 + 22, y);
   }
   y += 10;

@@ -115,7 +115,7 @@ std::string shape_text(const std::vector<std::uint64_t>& shape) {
 
 }  // namespace
 
-NpyImage parse_npy(std::string_view bytes, const std::string& name, std::uint64_t max_bytes) {
+NpyHeader parse_npy_header(std::string_view bytes, const std::string& name) {
   if (bytes.size() < 10 || bytes.substr(0, 6) != kMagic)
     throw InputError(name, "", "not a NumPy .npy file (the magic \\x93NUMPY is missing)");
   const auto major = static_cast<unsigned char>(bytes[6]);
@@ -135,10 +135,17 @@ NpyImage parse_npy(std::string_view bytes, const std::string& name, std::uint64_
   if (header_len > bytes.size() - offset)
     throw InputError(name, "",
                      "truncated .npy header (declares " + std::to_string(header_len) + " bytes)");
-  std::string descr;
-  bool fortran = false;
-  std::vector<std::uint64_t> shape;
-  HeaderParser(bytes.substr(offset, header_len), name).parse(descr, fortran, shape);
+  NpyHeader h;
+  HeaderParser(bytes.substr(offset, header_len), name).parse(h.descr, h.fortran, h.shape);
+  h.data_offset = offset + header_len;
+  return h;
+}
+
+NpyImage parse_npy(std::string_view bytes, const std::string& name, std::uint64_t max_bytes) {
+  const NpyHeader header = parse_npy_header(bytes, name);
+  const std::string& descr = header.descr;
+  const bool fortran = header.fortran;
+  const std::vector<std::uint64_t>& shape = header.shape;
 
   NpyImage out;
   std::size_t item = 0;
@@ -170,7 +177,7 @@ NpyImage parse_npy(std::string_view bytes, const std::string& name, std::uint64_
     throw InputError(name, "header shape",
                      "shape " + shape_text(shape) + " declares " + format_bytes(count * item) +
                          ", more than the " + format_bytes(max_bytes) + " allowed");
-  const std::size_t data = offset + header_len;
+  const std::size_t data = header.data_offset;
   if (bytes.size() - data != count * item)
     throw InputError(name, "data",
                      "holds " + std::to_string(bytes.size() - data) + " bytes, the shape " +

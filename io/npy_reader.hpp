@@ -19,6 +19,16 @@ struct NpyImage {
   std::vector<float> values;  // height·width·3, row-major, RGB as stored (not scaled)
 };
 
+// The header of a .npy file: its dtype string, order and shape (any dtype, object arrays too),
+// and where the data begins. Throws InputError for a file that is not .npy or a broken header.
+struct NpyHeader {
+  std::string descr;
+  bool fortran = false;
+  std::vector<std::uint64_t> shape;
+  std::size_t data_offset = 0;
+};
+NpyHeader parse_npy_header(std::string_view bytes, const std::string& name);
+
 // Parses the bytes of a .npy file; `name` is used in error messages. Throws InputError.
 // `max_bytes` caps the declared data size before anything is allocated.
 NpyImage parse_npy(std::string_view bytes, const std::string& name,

@@ -8,7 +8,14 @@ The course's functions, with the course's signatures and conventions:
     render_img(faces, vertices, vcolors, depth, shading)   # 512 x 512 x 3 on white
 
 and beyond them: render(), load_scene(), write_png(), trace_triangle(), trace_scene(),
-Trace.load() and explain(). Coordinates are [x, y] with x the column and y the row (pointing
+Trace.load() and explain(); and the grading questions, on the same C++ code as the command line:
+
+    why(scene, x, y)        # PixelStory: why pixel (x, y) has its colour (scantrace why)
+    diff(scene, image)      # DiffReport: where and why an image differs (scantrace diff)
+    check(trace)            # CheckResult: does a trace agree with exact arithmetic (scantrace check)
+    Image(render_img(...))  # shows itself in Jupyter as a PNG
+
+A scene is a path, the dict load_scene() returns, or (faces, vertices, vcolors, depth). Coordinates are [x, y] with x the column and y the row (pointing
 down); pixel (x, y) is centred on the integer point (x, y) and is img[y, x]. The fill rule is
 top-left (half-open) unless fill_rule='closed'.
 
@@ -30,11 +37,19 @@ from ._api import (
     vector_interp,
     write_png,
 )
+from ._grade import CheckResult, DiffReport, PixelStory, check, diff, why
+from ._jupyter import Image
 from ._scantrace import __version__
 
 __all__ = [
+    "CheckResult",
+    "DiffReport",
+    "Image",
     "InputError",
+    "PixelStory",
     "Trace",
+    "check",
+    "diff",
     "explain",
     "f_shading",
     "g_shading",
@@ -44,6 +59,7 @@ __all__ = [
     "trace_scene",
     "trace_triangle",
     "vector_interp",
+    "why",
     "write_png",
     "__version__",
 ]

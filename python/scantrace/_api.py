@@ -96,7 +96,10 @@ def render(vertices, faces, vcolors, depth, *, shading="gouraud", fill_rule="top
 
 
 def load_scene(path, *, shading="gouraud"):
-    """Reads a scene file (the course's JSON keys) or an OBJ model into a dict of numpy arrays.
+    """Reads a scene into a dict of numpy arrays: a scene file (the course's JSON keys), the
+    course's own ``hw1.npy`` (a pickled dict of four arrays, read by a restricted reader that
+    constructs nothing but those arrays: never Python's unpickler), a MATLAB ``.mat`` scene of
+    the 2021 course, or an OBJ model.
 
     Returns ``{'vertices', 'faces', 'vcolors', 'depth', 'size', 'background'}``, ready for
     ``render(**scene)`` or ``trace_scene(**scene)``; ``render_img`` takes the first four. An OBJ
@@ -167,5 +170,7 @@ def explain(trace_or_vertices, vcolors=None, *, out="triangle.mp4", shading="gou
             raise TypeError("explain: vcolors is missing (3 x 3, one RGB colour per vertex)")
         trace = trace_triangle(trace_or_vertices, vcolors, shading=shading, fill_rule=fill_rule)
         source = "a triangle from Python"
-    return _scantrace.replay(trace, os.fspath(out), frame_size=frame_size, fps=fps, hold=hold,
-                             source=source)
+    from ._grade import _cv_module
+    video = _cv_module("explain (writing a video or PNG frames)")
+    return video.replay(trace, os.fspath(out), frame_size=frame_size, fps=fps, hold=hold,
+                        source=source)

@@ -54,6 +54,29 @@ void check_shape(const py::array& a, const char* name, const std::vector<Dim>& s
   if (!ok)
     throw_value_error(std::string(name) + ": expected an array of shape " + shape_text(shape) +
                       ", got " + shape_text(a));
+  // Scenes and images index with int: a longer dimension is refused before anything is copied.
+  for (py::ssize_t i = 0; i < a.ndim(); ++i)
+    if (a.shape(i) > INT_MAX)
+      throw_value_error(std::string(name) + ": dimension " + std::to_string(i) + " has " +
+                        std::to_string(a.shape(i)) + " elements, more than the 2^31 - 1 allowed");
+}
+
+// The array as `Target` (C order, converted): numpy's conversion, whose failure (out of memory)
+// is reported with the argument's name instead of an unset error.
+template <class Target>
+Target converted(const py::array& a, const char* name) {
+  Target d = Target::ensure(a);
+  if (!d) {
+    if (PyErr_Occurred()) {
+      py::error_already_set e;
+      throw_value_error(std::string(name) + ": cannot be converted to " +
+                        py::str(py::dtype::of<typename Target::value_type>()).cast<std::string>() +
+                        " (" + e.what() + ")");
+    }
+    throw_value_error(std::string(name) + ": cannot be converted to " +
+                      py::str(py::dtype::of<typename Target::value_type>()).cast<std::string>());
+  }
+  return d;
 }
 
 // "vertices[3]" for the row holding flat element i of a C-contiguous array.
@@ -71,8 +94,7 @@ DoubleArray float_array(py::handle value, const char* name, const std::vector<Di
     throw_type_error(std::string(name) + ": expected an array of numbers (float or int), got " +
                      "dtype " + dtype_text(a));
   check_shape(a, name, shape);
-  DoubleArray d = DoubleArray::ensure(a);  // no copy when a already is C-contiguous float64
-  if (!d) throw py::error_already_set();
+  DoubleArray d = converted<DoubleArray>(a, name);  // no copy when a already is C float64
   const double* p = d.data();
   for (py::ssize_t i = 0; i < d.size(); ++i)
     if (!std::isfinite(p[i]))
@@ -88,9 +110,16 @@ IndexArray index_array(py::handle value, const char* name, const std::vector<Dim
     throw_type_error(std::string(name) + ": expected an array of integers, got dtype " +
                      dtype_text(a));
   check_shape(a, name, shape);
-  IndexArray d = IndexArray::ensure(a);
-  if (!d) throw py::error_already_set();
-  return d;
+  if (kind == 'u' && a.itemsize() == 8) {
+    // uint64 values above 2^63 - 1 would wrap to negative int64 ("-1" for 2^64 - 1).
+    const auto u =
+        converted<py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>>(a, name);
+    for (py::ssize_t i = 0; i < u.size(); ++i)
+      if (u.data()[i] > static_cast<std::uint64_t>(INT64_MAX))
+        throw_value_error(element(name, u, i) + ": index " + std::to_string(u.data()[i]) +
+                          " is out of range");
+  }
+  return converted<IndexArray>(a, name);
 }
 
 py::array image_array(py::handle value, const char* name) {
@@ -161,16 +190,23 @@ FillRule fill_rule_argument(const std::string& s) {
   throw_value_error("fill_rule: expected 'top-left' or 'closed', got '" + s + "'");
 }
 
+FillOptions fill_options(const std::string& shading, const std::string& fill_rule) {
+  FillOptions opt;
+  opt.shading = shading_argument(shading);
+  opt.fill_rule = fill_rule_argument(fill_rule);
+  return opt;
+}
+
 Scene scene_from_arrays(py::handle vertices, py::handle faces, py::handle vcolors, py::handle depth,
                         std::pair<int, int> size, Color background) {
   const DoubleArray v = float_array(vertices, "vertices", {'L', 2});
   const py::ssize_t n = v.shape(0);
-  const DoubleArray c = float_array(vcolors, "vcolors", {n == 0 ? Dim('L') : Dim(int(n)), 3});
+  const DoubleArray c = float_array(vcolors, "vcolors", {n == 0 ? Dim('L') : Dim(n), 3});
   const IndexArray f = index_array(faces, "faces", {'K', 3});
   // depth: the course gives it as L or L×1.
   py::array d0 = as_numpy(depth, "depth");
   if (d0.ndim() == 2 && d0.shape(1) == 1) d0 = d0.attr("reshape")(-1);
-  const DoubleArray d = float_array(d0, "depth", {n == 0 ? Dim('L') : Dim(int(n))});
+  const DoubleArray d = float_array(d0, "depth", {n == 0 ? Dim('L') : Dim(n)});
 
   Scene scene;
   scene.width = size.first;

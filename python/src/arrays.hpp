@@ -24,7 +24,8 @@ using IndexArray = py::array_t<std::int64_t, py::array::c_style | py::array::for
 struct Dim {
   py::ssize_t size = -1;
   char any = 0;
-  Dim(int s) : size(s) {}  // NOLINT: Dim{3} and 3 read the same in a shape list
+  Dim(int s) : size(s) {}   // NOLINT: Dim{3} and 3 read the same in a shape list
+  Dim(long s) : size(s) {}  // NOLINT: an array's own length (py::ssize_t), never narrowed
   Dim(char letter) : any(letter) {}
 };
 
@@ -46,6 +47,7 @@ std::pair<int, int> size_argument(py::handle value, const char* name = "size");
 
 Shading shading_argument(const std::string& value);     // 'f', 'g', 'flat', 'gouraud'
 FillRule fill_rule_argument(const std::string& value);  // 'top-left', 'closed'
+FillOptions fill_options(const std::string& shading, const std::string& fill_rule);
 
 // A scene from the course's arrays, validated like a scene file (scene.hpp's validate()).
 Scene scene_from_arrays(py::handle vertices, py::handle faces, py::handle vcolors, py::handle depth,

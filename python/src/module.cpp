@@ -8,6 +8,7 @@
 namespace scantrace::python {
 void bind_course(pybind11::module_& m);
 void bind_trace(pybind11::module_& m);
+void bind_grade(pybind11::module_& m);
 }  // namespace scantrace::python
 
 PYBIND11_MODULE(_scantrace, m) {
@@ -17,4 +18,5 @@ PYBIND11_MODULE(_scantrace, m) {
   pybind11::register_exception<scantrace::InputError>(m, "InputError", PyExc_ValueError);
   scantrace::python::bind_course(m);
   scantrace::python::bind_trace(m);
+  scantrace::python::bind_grade(m);
 }

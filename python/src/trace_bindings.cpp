@@ -10,8 +10,8 @@
 
 #include "arrays.hpp"
 #include "casters.hpp"
+#include "py_trace.hpp"
 #include "trace/record.hpp"
-#include "viz/replay.hpp"
 
 namespace scantrace::python {
 
@@ -22,12 +22,6 @@ namespace {
 using namespace scantrace::trace;
 // The trace event's span (scantrace::Span, the fill's, is another type).
 using scantrace::trace::Span;
-
-// A trace and, when it was recorded here, the image its fill drew.
-struct PyTrace {
-  Trace trace;
-  std::optional<RgbImage> image;
-};
 
 py::object image_of(const PyTrace& t) {
   if (!t.image) return py::none();
@@ -42,6 +36,12 @@ py::object image_of(const PyTrace& t) {
   return out;
 }
 
+// repr() of a value as Python shows it (floats shortest, tuples, lists of bound objects).
+template <class T>
+std::string rep(const T& value) {
+  return py::repr(py::cast(value)).template cast<std::string>();
+}
+
 TraceLevel level_argument(const std::string& s) {
   try {
     return parse_level(s);
@@ -50,8 +50,24 @@ TraceLevel level_argument(const std::string& s) {
   }
 }
 
+// A count from Python: an int (not a bool, not a float) in 0 .. 2^63 - 1.
+std::int64_t count_argument(py::handle value, const char* name) {
+  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+    throw_type_error(std::string(name) + ": expected an int, got " +
+                     py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+  int overflow = 0;
+  const long long n = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+  if (overflow || n < 0)
+    throw_value_error(std::string(name) + ": expected a count in 0 .. 2^63 - 1, got " +
+                      py::repr(value).cast<std::string>());
+  return n;
+}
+
+// The selection of trace_scene/trace_triangle, refused as the command line refuses it
+// (cli/selection_check.cpp) when it selects nothing: no face of the `faces` there are, or no row
+// of a canvas `height` rows high; and rows given last before first.
 TraceFilter filter_argument(const std::string& level, py::handle triangles, py::handle rows,
-                            py::handle max_events) {
+                            py::handle max_events, std::int64_t faces, int height) {
   TraceFilter f;
   f.level = level_argument(level);
   if (!triangles.is_none()) {
@@ -71,17 +87,41 @@ TraceFilter filter_argument(const std::string& level, py::handle triangles, py::
     } catch (const std::invalid_argument& e) {
       throw_value_error(std::string("triangles: ") + e.what());
     }
+    const auto& r = f.triangles->ranges();
+    if (!r.empty() && r.front().first >= faces)
+      throw_value_error("triangles: '" + text + "' selects no face: the scene has " +
+                        std::to_string(faces) + " face" + (faces == 1 ? "" : "s") +
+                        " (indices 0.." + std::to_string(faces - 1) + ")");
   }
   if (!rows.is_none()) {
     const IndexArray a = index_array(rows, "rows", {2});
     f.rows = RowRange{a.data()[0], a.data()[1]};
+    if (f.rows->first > f.rows->last)
+      throw_value_error("rows: expected (first, last) with first <= last, got (" +
+                        std::to_string(f.rows->first) + ", " + std::to_string(f.rows->last) + ")");
+    if (f.rows->last < 0 || f.rows->first > height - 1)
+      throw_value_error("rows: (" + std::to_string(f.rows->first) + ", " +
+                        std::to_string(f.rows->last) + ") selects no row of the canvas (rows 0.." +
+                        std::to_string(height - 1) + ")");
   }
-  if (!max_events.is_none()) {
-    const auto n = max_events.cast<std::int64_t>();
-    if (n < 0) throw_value_error("max_events: expected a count >= 0, got " + std::to_string(n));
-    f.max_events = n;
-  }
+  if (!max_events.is_none()) f.max_events = count_argument(max_events, "max_events");
   return f;
+}
+
+std::string trace_repr(const PyTrace& t) {
+  const Header& h = t.trace.header();
+  const std::vector<int> tri = t.trace.triangles();
+  std::string faces;
+  for (std::size_t i = 0; i < tri.size() && i < 8; ++i)
+    faces += (i ? ", " : "") + std::to_string(tri[i]);
+  if (tri.size() > 8) faces += ", ...";
+  return "<Trace: " + std::to_string(tri.size()) + " triangle" + (tri.size() == 1 ? "" : "s") +
+         " [" + faces + "], " + std::to_string(t.trace.events().size()) + " events, level " +
+         rep(h.level) + ", " + std::to_string(h.canvas.width) + "x" +
+         std::to_string(h.canvas.height) + " " + h.shading + " " + h.fill_rule +
+         (t.trace.complete() ? std::string(t.trace.truncated() ? ", truncated" : "")
+                             : ", incomplete (no footer)") +
+         (t.image ? ", with its image" : "") + ">";
 }
 
 void bind_events(py::module_& m) {
@@ -94,7 +134,16 @@ void bind_events(py::module_& m) {
       .def_readonly("fill_rule", &Header::fill_rule)
       .def_readonly("subpixel_bits", &Header::subpixel_bits)
       .def_readonly("level", &Header::level)
-      .def_readonly("generator", &Header::generator);
+      .def_readonly("generator", &Header::generator)
+      .def_readonly("visibility", &Header::visibility)
+      .def("__repr__", [](const Header& h) {
+        return "Header(canvas=(" + std::to_string(h.canvas.width) + ", " +
+               std::to_string(h.canvas.height) + "), shading=" + rep(h.shading) +
+               ", fill_rule=" + rep(h.fill_rule) + ", level=" + rep(h.level) +
+               ", visibility=" + rep(h.visibility) +
+               ", subpixel_bits=" + std::to_string(h.subpixel_bits) +
+               ", generator=" + rep(h.generator) + ")";
+      });
   py::class_<TriangleBegin>(m, "TriangleBegin", "A traced triangle: vertices as given and snapped.")
       .def_readonly("triangle", &TriangleBegin::triangle)
       .def_readonly("vertices", &TriangleBegin::vertices)
@@ -124,11 +173,19 @@ void bind_events(py::module_& m) {
       .def_readonly("from_", &HorizontalEntry::from)
       .def_readonly("to", &HorizontalEntry::to)
       .def_readonly("y", &HorizontalEntry::y)
-      .def_readonly("reason", &HorizontalEntry::reason);
+      .def_readonly("reason", &HorizontalEntry::reason)
+      .def("__repr__", [](const HorizontalEntry& e) {
+        return "HorizontalEntry(edge=" + std::to_string(e.edge) + ", y=" + rep(e.y) +
+               ", reason=" + rep(e.reason) + ")";
+      });
   py::class_<EdgeTableEvent>(m, "EdgeTable", "A triangle's edge table, sorted by first row.")
       .def_readonly("triangle", &EdgeTableEvent::triangle)
       .def_readonly("edges", &EdgeTableEvent::edges)
-      .def_readonly("horizontal", &EdgeTableEvent::horizontal);
+      .def_readonly("horizontal", &EdgeTableEvent::horizontal)
+      .def("__repr__", [](const EdgeTableEvent& e) {
+        return "EdgeTable(triangle=" + std::to_string(e.triangle) + ", edges=" + rep(e.edges) +
+               ", horizontal=" + rep(e.horizontal) + ")";
+      });
   py::class_<scantrace::trace::EdgeCrossing>(
       m, "EdgeCrossing", "Where an active edge crosses a row: its edge and exact intersection x.")
       .def_readonly("edge", &scantrace::trace::EdgeCrossing::edge)
@@ -160,7 +217,10 @@ void bind_events(py::module_& m) {
       });
   py::class_<SpanColors>(m, "SpanColors", "Gouraud: colours of the first and last pixel.")
       .def_readonly("begin", &SpanColors::begin)
-      .def_readonly("end", &SpanColors::end);
+      .def_readonly("end", &SpanColors::end)
+      .def("__repr__", [](const SpanColors& c) {
+        return "SpanColors(begin=" + rep(c.begin) + ", end=" + rep(c.end) + ")";
+      });
   py::class_<Scanline>(m, "Scanline", "One row of one triangle, as the fill saw it.")
       .def_readonly("triangle", &Scanline::triangle)
       .def_readonly("y", &Scanline::y)
@@ -169,7 +229,13 @@ void bind_events(py::module_& m) {
       .def_readonly("active_edges", &Scanline::active_edges)
       .def_readonly("active_points", &Scanline::active_points)
       .def_readonly("span", &Scanline::span)
-      .def_readonly("span_colors", &Scanline::span_colors);
+      .def_readonly("span_colors", &Scanline::span_colors)
+      .def("__repr__", [](const Scanline& l) {
+        return "Scanline(triangle=" + std::to_string(l.triangle) + ", y=" + std::to_string(l.y) +
+               ", span=" + rep(l.span) + ", active_points=" + rep(l.active_points) +
+               ", entered=" + rep(l.entered) + ", retired=" + rep(l.retired) +
+               (l.span_colors ? ", span_colors=" + rep(*l.span_colors) : std::string()) + ")";
+      });
   py::class_<Pixel>(m, "Pixel", "A pixel event (level 'pixel').")
       .def_readonly("triangle", &Pixel::triangle)
       .def_readonly("x", &Pixel::x)
@@ -194,12 +260,25 @@ void bind_events(py::module_& m) {
         return "PixelWrite(triangle=" + std::to_string(w.triangle) +
                ", color=" + py::repr(py::cast(w.color)).cast<std::string>() + ")";
       });
-  py::class_<PixelHistory>(m, "PixelHistory", "Who wrote a pixel, in drawing order.")
+  py::class_<PixelHistory>(m, "PixelHistory",
+                           "Who wrote a pixel, in drawing order (empty when no triangle did).")
       .def_readonly("writes", &PixelHistory::writes)
       .def("__len__", [](const PixelHistory& h) { return h.writes.size(); })
       .def("empty", &PixelHistory::empty)
-      .def("final", &PixelHistory::final, py::return_value_policy::reference_internal,
-           "The visible (last) write; IndexError when no triangle wrote the pixel.");
+      .def(
+          "final",
+          [](const PixelHistory& h) -> std::optional<PixelWrite> {
+            if (h.empty()) return std::nullopt;
+            return h.final();
+          },
+          "The visible (last) write, or None when no triangle wrote the pixel (it shows the "
+          "background).")
+      .def("__repr__", [](const PixelHistory& h) {
+        if (h.empty()) return std::string("PixelHistory(empty: no triangle wrote this pixel)");
+        return "PixelHistory(" + std::to_string(h.writes.size()) + " write" +
+               (h.writes.size() == 1 ? "" : "s") + ", final=" + rep(h.final()) +
+               ", writes=" + rep(h.writes) + ")";
+      });
 }
 
 void bind_trace_class(py::module_& m) {
@@ -220,6 +299,11 @@ A query about a triangle or row that is not in the trace raises IndexError.)")
       .def_static(
           "load",
           [](const std::filesystem::path& path) {
+            // A directory opens as a stream on Linux and fails at the first read, in the
+            // library's words ("basic_filebuf::underflow"): said here instead.
+            std::error_code ec;
+            if (std::filesystem::is_directory(path, ec))
+              throw TraceError(path.string() + ": is a directory, not a trace file (.jsonl)");
             PyTrace t{Trace::load(path), std::nullopt};
             return t;
           },
@@ -229,6 +313,7 @@ A query about a triangle or row that is not in the trace raises IndexError.)")
       .def_property_readonly("complete", [](const PyTrace& t) { return t.trace.complete(); })
       .def_property_readonly("truncated", [](const PyTrace& t) { return t.trace.truncated(); })
       .def_property_readonly("image", &image_of)
+      .def("__repr__", &trace_repr)
       .def("__len__", [](const PyTrace& t) { return t.trace.events().size(); })
       .def("triangles", [](const PyTrace& t) { return t.trace.triangles(); })
       .def("has_triangle", [](const PyTrace& t, int i) { return t.trace.has_triangle(i); })
@@ -282,7 +367,8 @@ void bind_trace(py::module_& m) {
         FillOptions opt;
         opt.shading = shading_argument(shading);
         opt.fill_rule = fill_rule_argument(fill_rule);
-        const TraceFilter filter = filter_argument(level, py::none(), py::none(), py::none());
+        const TraceFilter filter =
+            filter_argument(level, py::none(), py::none(), py::none(), 1, in.height);
         py::gil_scoped_release free;
         RgbImage image;
         Trace t = record_triangle(in, opt, filter, &image);
@@ -301,7 +387,9 @@ void bind_trace(py::module_& m) {
         opt.fill_rule = fill_rule_argument(fill_rule);
         const Scene scene = scene_from_arrays(vertices, faces, vcolors, depth, size_argument(size),
                                               color_argument(background, "background"));
-        const TraceFilter filter = filter_argument(level, triangles, rows, max_events);
+        const TraceFilter filter =
+            filter_argument(level, triangles, rows, max_events,
+                            static_cast<std::int64_t>(scene.faces.size()), scene.height);
         py::gil_scoped_release free;
         RgbImage image;
         Trace t = record_scene(scene, opt, filter, &image);
@@ -310,36 +398,6 @@ void bind_trace(py::module_& m) {
       py::arg("vertices"), py::arg("faces"), py::arg("vcolors"), py::arg("depth"), py::kw_only(),
       py::arg("shading"), py::arg("fill_rule"), py::arg("level"), py::arg("triangles"),
       py::arg("rows"), py::arg("max_events"), py::arg("size"), py::arg("background"));
-  m.def(
-      "replay",
-      [](const PyTrace& t, const std::filesystem::path& out, py::handle frame_size, double fps,
-         double hold, const std::string& source) {
-        viz::ReplayOptions o;
-        const auto [w, h] = size_argument(frame_size, "frame_size");
-        o.size = {w, h};
-        o.fps = fps;
-        o.hold = hold;
-        o.source = source;
-        try {
-          viz::validate(o);
-        } catch (const std::invalid_argument& e) {
-          throw_value_error(e.what());
-        }
-        viz::ReplayResult r;
-        {
-          py::gil_scoped_release free;
-          r = viz::replay(t.trace, out, o);
-        }
-        py::dict d;
-        d["path"] = out;
-        d["format"] = r.format;
-        d["steps"] = r.steps;
-        d["frames"] = r.frames;
-        d["seconds"] = r.seconds;
-        return d;
-      },
-      py::arg("trace"), py::arg("out"), py::arg("frame_size"), py::arg("fps"), py::arg("hold"),
-      py::arg("source"));
 }
 
 }  // namespace scantrace::python

@@ -4,6 +4,7 @@ import os
 import pathlib
 import subprocess
 import sys
+import textwrap
 
 import pytest
 
@@ -26,3 +27,69 @@ def test_install_into_a_temporary_prefix(tmp_path):
                          capture_output=True, text=True, cwd=tmp_path).stdout.split()
     assert pathlib.Path(out[0]).is_relative_to(site)
     assert int(out[1]) > 500
+
+
+def source_files(root):
+    """Every file of the clone outside its build directories (what an install must not touch)."""
+    out = set()
+    for d, dirs, files in os.walk(root):
+        rel = pathlib.Path(d).relative_to(root)
+        dirs[:] = [x for x in dirs if not (rel == pathlib.Path(".") and
+                                           (x.startswith("build") or x == ".git"))
+                   and x != "__pycache__"]
+        out.update(str(rel / f) for f in files)
+    return out
+
+
+def test_wheel_installs_into_a_fresh_venv_and_imports_elsewhere(tmp_path):
+    """`python3 -m build --wheel --no-isolation` (setup.py driving this build's CMake), then the
+    wheel into a fresh `venv --system-site-packages`, imported from a directory outside the clone:
+    it renders, answers why/diff, loads no OpenCV, and names what explain() is missing."""
+    build = os.environ.get("SCANTRACE_BUILD_DIR")
+    source = os.environ.get("SCANTRACE_SOURCE_DIR")
+    if not build or not source:
+        pytest.skip("SCANTRACE_BUILD_DIR/SCANTRACE_SOURCE_DIR are not set (run through CTest)")
+    before = source_files(source)
+    dist = tmp_path / "dist"
+    env = {**os.environ, "SCANTRACE_CMAKE_BUILD_DIR": build, "SCANTRACE_JOBS": "1"}
+    subprocess.run([sys.executable, "-m", "build", "--wheel", "--no-isolation", "--outdir",
+                    str(dist), source], check=True, capture_output=True, env=env)
+    wheels = list(dist.glob("scantrace-*.whl"))
+    assert len(wheels) == 1, wheels
+    assert source_files(source) == before, "the wheel's build wrote into the clone"
+
+    venv = tmp_path / "venv"
+    subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", str(venv)],
+                   check=True, capture_output=True)
+    python = venv / "bin" / "python"
+    subprocess.run([str(python), "-m", "pip", "install", "--no-index", "--no-deps", "-q",
+                    str(wheels[0])], check=True, capture_output=True)
+    script = textwrap.dedent("""
+        import numpy as np, scantrace
+        img = scantrace.render_img([[0, 1, 2]], [[1, 1], [40, 2], [3, 30]], np.eye(3),
+                                   np.zeros(3), 'g')
+        scene = ([[0, 1, 2]], np.array([[1, 1], [40, 2], [3, 30]], float), np.eye(3), np.zeros(3))
+        story = scantrace.why(scene, 10, 10)
+        report = scantrace.diff(scene, img)
+        maps = open('/proc/self/maps').read()
+        try:
+            scantrace.explain([[1, 1], [40, 2], [3, 30]], np.eye(3), out='x/')
+            missing = ''
+        except ModuleNotFoundError as e:
+            missing = str(e)
+        print(scantrace.__file__)
+        print(int((img != 1).any(axis=2).sum()), story.final['face'], report.agrees)
+        print('opencv' in maps)
+        print(missing)
+    """)
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    out = subprocess.run([str(python), "-c", script], env=env, check=True, capture_output=True,
+                         text=True, cwd=elsewhere).stdout.splitlines()
+    assert pathlib.Path(out[0]).is_relative_to(venv)
+    pixels, face, agrees = out[1].split()
+    assert int(pixels) > 500 and face == "0" and agrees == "True"
+    assert out[2] == "False", "import scantrace loaded OpenCV"
+    assert "explain (writing a video or PNG frames) needs scantrace's OpenCV module" in out[3]
+    assert "SCANTRACE_PYTHON_OPENCV=1" in out[3]

@@ -1,0 +1,129 @@
+"""The build step of `pip install .` and `python3 -m build --wheel`: the C++ extension modules are
+built by the project's own CMake (the build is defined there once), then copied into the wheel.
+
+    pip install --no-build-isolation .       (into a venv made with --system-site-packages)
+
+Environment:
+    SCANTRACE_CMAKE_BUILD_DIR   the CMake build directory (default: build-python/ in the clone,
+                                the only place the install writes in it; kept, so a second
+                                install rebuilds only what changed). An existing build directory
+                                given here is built as it is configured, not reconfigured.
+    SCANTRACE_PYTHON_OPENCV=1   also build _scantrace_cv (explain's video, diff of PNG/JPEG/BMP
+                                files), which links OpenCV; without it the package loads no OpenCV.
+    SCANTRACE_JOBS              parallel compile jobs (default: the number of cores).
+
+The compile's progress goes to the terminal (/dev/tty, since pip captures the build's output
+unless -v is given) and to the build's output.
+"""
+
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+ROOT = pathlib.Path(__file__).resolve().parent
+BUILD = pathlib.Path(os.environ.get("SCANTRACE_CMAKE_BUILD_DIR", ROOT / "build-python")).resolve()
+WITH_OPENCV = os.environ.get("SCANTRACE_PYTHON_OPENCV", "0") not in ("", "0", "OFF", "off")
+
+
+def project_version():
+    text = (ROOT / "CMakeLists.txt").read_text()
+    return re.search(r"project\(scantrace VERSION ([0-9.]+)", text).group(1)
+
+
+class Progress:
+    """Echoes the build's output, and shows CMake's "[ 45%] Building ..." lines on the terminal."""
+
+    def __init__(self):
+        try:
+            self.tty = open("/dev/tty", "w")  # noqa: SIM115 (closed in close())
+        except OSError:
+            self.tty = None
+        self.start = time.monotonic()
+
+    def say(self, text, final=False):
+        if self.tty:
+            line = f"scantrace: {text}"[:110]
+            self.tty.write("\r\x1b[K" + line + ("\n" if final else ""))
+            self.tty.flush()
+        print(f"scantrace: {text}", flush=True)
+
+    def run(self, cmd, what):
+        self.say(f"{what}: {' '.join(cmd[:3])} ...")
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                             bufsize=1)
+        tail = []
+        for line in p.stdout:
+            sys.stdout.write(line)
+            tail = (tail + [line])[-30:]
+            m = re.match(r"\[\s*(\d+)%\]\s*(.*)", line)
+            if m and self.tty:
+                self.tty.write(f"\r\x1b[Kscantrace: {what} [{m.group(1):>3}%] "
+                               f"{m.group(2).strip()[:70]}")
+                self.tty.flush()
+        if p.wait() != 0:
+            self.say(f"{what} failed (exit {p.returncode}); its last lines:", final=True)
+            sys.stderr.write("".join(tail))
+            raise SystemExit(f"scantrace: {what} failed: {' '.join(cmd)}")
+
+    def close(self):
+        self.say(f"C++ modules built in {time.monotonic() - self.start:.0f} s", final=True)
+        if self.tty:
+            self.tty.close()
+
+
+class CMakeBuild(build_ext):
+    """Configures the CMake project once, builds every module's target, copies the modules."""
+
+    def run(self):
+        progress = Progress()
+        if not (BUILD / "CMakeCache.txt").exists():
+            BUILD.mkdir(parents=True, exist_ok=True)
+            cmd = ["cmake", "-S", str(ROOT), "-B", str(BUILD), "-DCMAKE_BUILD_TYPE=Release",
+                   "-DSCANTRACE_BUILD_TESTS=OFF", "-DSCANTRACE_BUILD_BENCH=OFF",
+                   "-DSCANTRACE_BUILD_PYTHON=ON", f"-DPython_EXECUTABLE={sys.executable}",
+                   f"-DSCANTRACE_PYTHON_OPENCV={'ON' if WITH_OPENCV else 'OFF'}"]
+            # As scripts/build.sh: ccache makes a build in another clone of the same sources cheap.
+            if shutil.which("ccache"):
+                cmd.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
+            progress.run(cmd, "configuring")
+        jobs = os.environ.get("SCANTRACE_JOBS", str(os.cpu_count() or 2))
+        env_targets = [ext.name.split(".")[-1] for ext in self.extensions]
+        os.environ.setdefault("CCACHE_BASEDIR", str(ROOT))
+        progress.run(["cmake", "--build", str(BUILD), "-j", jobs, "--target", *env_targets],
+                     "compiling the C++ core")
+        progress.close()
+        for ext in self.extensions:
+            self.copy_module(ext)
+
+    def copy_module(self, ext):
+        name = ext.name.split(".")[-1]
+        built = sorted((BUILD / "python" / "scantrace").glob(f"{name}.*.so")) or \
+            sorted((BUILD / "python" / "scantrace").glob(f"{name}.so"))
+        if not built:
+            raise SystemExit(f"scantrace: {name} was not built in {BUILD}/python/scantrace "
+                             "(is SCANTRACE_BUILD_PYTHON off in that build directory?)")
+        target = pathlib.Path(self.get_ext_fullpath(ext.name))
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(built[-1], target)
+
+
+extensions = [Extension("scantrace._scantrace", sources=[])]
+if WITH_OPENCV:
+    extensions.append(Extension("scantrace._scantrace_cv", sources=[]))
+
+BUILD.mkdir(parents=True, exist_ok=True)
+setup(
+    version=project_version(),
+    ext_modules=extensions,
+    cmdclass={"build_ext": CMakeBuild},
+    # setuptools' own files (egg-info, build/) go into the build directory, not the clone.
+    options={"egg_info": {"egg_base": str(BUILD)},
+             "build": {"build_base": str(BUILD / "setuptools")}},
+)

@@ -44,6 +44,7 @@ viz::ReplayOptions ReplayFlags::options(const std::string& source) const {
   o.source = source;
   o.max_frames = max_frames;
   o.marked_pixel = marked_pixel;
+  o.frame_format = format;
   return o;
 }
 
@@ -53,7 +54,8 @@ void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) 
                   "OUT.mp4: an H.264 video (MPEG-4 where H.264 is missing)\n"
                   "OUT_DIR/: numbered PNG frames, one per step\n"
                   "OUT.html: one self-contained page to step through\n"
-                  "(slider, keys, play; OUT.html#step=N links to step N)")
+                  "(slider, keys, play; OUT.html#step=N links to step N)\n"
+                  "OUT.svg: the SVG of the one step --steps N names")
       ->required()
       ->check(parsed_by([](const std::string& v) { viz::output_kind(v); }));
   command
@@ -95,6 +97,12 @@ void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) 
       ->check(CLI::IsMember({"auto", "triangles", "scene"}))
       ->capture_default_str();
   command
+      .add_option("--format", flags.format,
+                  "the files of OUT_DIR/: png (raster frames) or svg\n"
+                  "(vector frames, self-contained SVG 1.1)")
+      ->check(CLI::IsMember({"png", "svg"}))
+      ->capture_default_str();
+  command
       .add_option("--max-frames", flags.max_frames,
                   "refuse (before drawing) a replay that needs more frames")
       ->check(CLI::PositiveNumber)
@@ -122,10 +130,14 @@ void run_replay(const trace::Trace& trace, const ReplayFlags& flags, const std::
                  flags.output, steps, viz::to_string(r.mode),
                  r.format == "h264" ? "H.264" : "MPEG-4", options.size.width, options.size.height,
                  r.frames, options.fps, r.seconds, clock.ms() / 1000);
+  else if (r.kind == viz::OutputKind::svg)
+    spdlog::info("wrote {}: step {} of {} ({}), a {}x{} SVG, in {:.1f} s", flags.output,
+                 options.steps.first, r.steps_total, viz::to_string(r.mode), options.size.width,
+                 options.size.height, clock.ms() / 1000);
   else
-    spdlog::info("wrote {}: {} ({}), one {}x{} PNG per step, in {:.1f} s", flags.output, steps,
+    spdlog::info("wrote {}: {} ({}), one {}x{} {} per step, in {:.1f} s", flags.output, steps,
                  viz::to_string(r.mode), options.size.width, options.size.height,
-                 clock.ms() / 1000);
+                 r.format == "svg" ? "SVG" : "PNG", clock.ms() / 1000);
 }
 
 }  // namespace scantrace::cli

@@ -1,8 +1,9 @@
 #pragma once
 // The options of a replay, shared by `replay` and `explain` so they are spelled and explained the
 // same in both:
-//   -o OUT.mp4|OUT_DIR/|OUT.html [--fps N] [--hold SECONDS] [--video-size WxH] [--steps A:B]
-//   [--rows-per-step N] [--mode auto|triangles|scene]
+//   -o OUT.mp4|OUT_DIR/|OUT.html|OUT.svg [--fps N] [--hold SECONDS] [--video-size WxH] [--steps
+//   A:B]
+//   [--rows-per-step N] [--mode auto|triangles|scene] [--format png|svg]
 // --size means the canvas everywhere (cli/canvas_size.hpp); `replay`, which has no canvas,
 // still accepts its old --size for the frame as a deprecated alias (`size_is_free`).
 #include <string>
@@ -24,6 +25,7 @@ struct ReplayFlags {
   int rows_per_step = 0;
   std::string mode = "auto";
   std::size_t max_frames = viz::kDefaultMaxFrames;
+  std::string format = "png";                      // a frame directory's files: png or svg
   std::optional<viz::CanvasPixel> marked_pixel{};  // not an option: set by `why --explain`
 
   viz::ReplayOptions options(const std::string& source) const;

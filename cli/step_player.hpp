@@ -12,8 +12,8 @@
 #include <opencv2/core.hpp>
 
 #include "trace/trace.hpp"
+#include "viz/opencv/step_overlay_raster.hpp"
 #include "viz/replayer.hpp"
-#include "viz/step_overlay.hpp"
 
 namespace scantrace::cli {
 

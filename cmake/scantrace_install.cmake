@@ -28,13 +28,17 @@ foreach(component IN LISTS scantrace_components)
           DESTINATION ${SCANTRACE_INSTALL_CMAKEDIR} COMPONENT development)
 endforeach()
 
-# The PNG writer (libdeflate) that viz's write_png and the command share, in viz's export set.
-set_target_properties(scantrace_png PROPERTIES EXPORT_NAME png)
-get_target_property(png_links scantrace_png INTERFACE_LINK_LIBRARIES)
-list(REMOVE_ITEM png_links "$<LINK_ONLY:scantrace_warnings>")
-set_target_properties(scantrace_png PROPERTIES INTERFACE_LINK_LIBRARIES "${png_links}")
-install(TARGETS scantrace_png EXPORT scantrace-viz-targets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
+# The PNG writer (libdeflate) that viz's write_png and the command share, and viz's two libraries
+# without OpenCV (the frame composer; its SVG and canvas backends), in viz's export set.
+foreach(part png viz_composer viz_export)
+  set(target scantrace_${part})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${part})
+  get_target_property(part_links ${target} INTERFACE_LINK_LIBRARIES)
+  list(REMOVE_ITEM part_links "$<LINK_ONLY:scantrace_warnings>")
+  set_target_properties(${target} PROPERTIES INTERFACE_LINK_LIBRARIES "${part_links}")
+  install(TARGETS ${target} EXPORT scantrace-viz-targets
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
+endforeach()
 
 # The headers keep the repository's layout (src/ is the core) because they include each other
 # by their path from the repository root ("src/scene.hpp"): the installed targets therefore put

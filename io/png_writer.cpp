@@ -67,6 +67,8 @@ std::vector<std::uint8_t> up_filtered_rows(const RgbImage& image) {
   return out;
 }
 
+}  // namespace
+
 std::string encode(const RgbImage& image) {
   const std::vector<std::uint8_t> rows = up_filtered_rows(image);
   // Level 1, fast over small as OpenCV's encoder defaults to: a render's PNG is written to be
@@ -93,8 +95,6 @@ std::string encode(const RgbImage& image) {
   put_chunk(out, "IEND", "", 0);
   return out;
 }
-
-}  // namespace
 
 void write(const RgbImage& image, const std::filesystem::path& file) {
   if (image.width() <= 0 || image.height() <= 0)

@@ -5,6 +5,7 @@
 // dynamic linking before main() (docs/performance.md, "The one-shot command"); reading images
 // and writing videos stay on OpenCV.
 #include <filesystem>
+#include <string>
 
 #include "src/image.hpp"
 
@@ -14,5 +15,8 @@ namespace scantrace::png {
 // viz/image_file.hpp's write_png), under a temporary name renamed into place: a failed or
 // interrupted write never leaves a truncated file. Throws std::runtime_error naming the file.
 void write(const RgbImage& image, const std::filesystem::path& file);
+
+// The PNG file's bytes, as write() writes them (the SVG frames embed their canvas cells so).
+std::string encode(const RgbImage& image);
 
 }  // namespace scantrace::png

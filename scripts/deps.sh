@@ -29,6 +29,9 @@ packages+=(pkg-config libmatio-dev libxcb1-dev libhwy-dev libdeflate-dev libsimd
 # Stepping through replays: Qt's headers for the window's focus fix (cli/highgui_focus.hpp), and
 # for the tests a virtual display, xdotool and headless chromium.
 packages+=(qtbase5-dev xvfb xdotool chromium)
+# The display list's backends (viz/): xmllint validates the SVG frames in the tests; the Hershey
+# glyphs (viz/hershey/glyphs.inc) are generated from hershey-fonts-data by viz/hershey/generate.py.
+packages+=(libxml2-utils hershey-fonts-data)
 
 if [ "${1:-}" = "--demo" ]; then
   packages=("${demo_packages[@]}")

@@ -5,9 +5,9 @@
 #include <span>
 
 #include "src/depth_plane.hpp"
+#include "src/image.hpp"
 #include "src/scanline_fill.hpp"
 #include "src/winding_fill.hpp"
-#include "viz/opencv_image.hpp"
 
 namespace scantrace::viz {
 namespace {
@@ -41,17 +41,16 @@ struct StateCanvas {
 
 }  // namespace
 
-CanvasState::CanvasState(cv::Rect window, bool depth_test)
+CanvasState::CanvasState(Rect window, bool depth_test)
     : window_(window),
       depth_test_(depth_test),
-      image_(std::max(window.height, 1), std::max(window.width, 1), CV_8UC3, cv::Scalar::all(0)),
-      mask_(std::max(window.height, 1), std::max(window.width, 1), CV_8UC1, cv::Scalar::all(0)) {
-  if (depth_test_)
-    depth_ = cv::Mat(mask_.rows, mask_.cols, CV_64FC1,
-                     cv::Scalar::all(std::numeric_limits<double>::infinity()));
+      stride_(std::max(window.width, 1)),
+      image_(static_cast<std::size_t>(stride_) * std::max(window.height, 1)),
+      mask_(image_.size(), 0) {
+  if (depth_test_) depth_.assign(image_.size(), std::numeric_limits<double>::infinity());
 }
 
-CanvasState::CanvasState(cv::Rect window, const trace::Trace& trace)
+CanvasState::CanvasState(Rect window, const trace::Trace& trace)
     : CanvasState(window, trace.header().visibility == "zbuffer") {}
 
 bool CanvasState::inside(std::int64_t x, std::int64_t y) const {
@@ -60,34 +59,33 @@ bool CanvasState::inside(std::int64_t x, std::int64_t y) const {
 }
 
 CanvasState CanvasState::clone() const {
-  CanvasState c = *this;
-  c.image_ = image_.clone();
-  c.mask_ = mask_.clone();
-  c.depth_ = depth_.clone();
-  return c;
+  return *this;
+}
+
+std::size_t CanvasState::index(std::int64_t x, std::int64_t y) const {
+  return static_cast<std::size_t>(y - window_.y) * static_cast<std::size_t>(stride_) +
+         static_cast<std::size_t>(x - window_.x);
 }
 
 bool CanvasState::written(std::int64_t x, std::int64_t y) const {
   if (!inside(x, y)) return false;
-  return mask_.at<std::uint8_t>(static_cast<int>(y - window_.y), static_cast<int>(x - window_.x)) !=
-         0;
+  return mask_[index(x, y)] != 0;
 }
 
-cv::Vec3b CanvasState::bgr(std::int64_t x, std::int64_t y) const {
+Vec3b CanvasState::bgr(std::int64_t x, std::int64_t y) const {
   if (!written(x, y)) return {};
-  return image_.at<cv::Vec3b>(static_cast<int>(y - window_.y), static_cast<int>(x - window_.x));
+  return image_[index(x, y)];
 }
 
 void CanvasState::store(std::int64_t x, std::int64_t y, const Color& c) {
   ++writes_;
   if (!inside(x, y)) return;
-  const int row = static_cast<int>(y - window_.y), col = static_cast<int>(x - window_.x);
-  std::uint8_t& m = mask_.at<std::uint8_t>(row, col);
+  const std::size_t i = index(x, y);
+  std::uint8_t& m = mask_[i];
   if (m) ++overwrites_;
   m = 255;
-  image_.at<cv::Vec3b>(row, col) =
-      cv::Vec3b(to_byte(static_cast<float>(c.b)), to_byte(static_cast<float>(c.g)),
-                to_byte(static_cast<float>(c.r)));
+  image_[i] = Vec3b(to_byte(static_cast<float>(c.b)), to_byte(static_cast<float>(c.g)),
+                    to_byte(static_cast<float>(c.r)));
 }
 
 void CanvasState::reject(std::int64_t x, std::int64_t y) {
@@ -97,7 +95,7 @@ void CanvasState::reject(std::int64_t x, std::int64_t y) {
 
 void CanvasState::put(std::int64_t x, std::int64_t y, const Color& c, std::optional<double> depth) {
   if (depth_test_ && depth && inside(x, y)) {
-    double& z = depth_.at<double>(static_cast<int>(y - window_.y), static_cast<int>(x - window_.x));
+    double& z = depth_[index(x, y)];
     // The render's rule (src/zbuffer_canvas.hpp): strictly nearer wins, a tie keeps the first.
     if (!(*depth < z)) {
       reject(x, y);
@@ -153,9 +151,7 @@ void CanvasState::paint_rows(const trace::Trace& trace, int triangle, std::int64
         put(p->x, p->y, p->color);
       } else if (p->depth_test->passed) {
         // The recorded outcome is the truth; the stored depth follows it.
-        if (depth_test_ && inside(p->x, p->y))
-          depth_.at<double>(static_cast<int>(p->y - window_.y),
-                            static_cast<int>(p->x - window_.x)) = p->depth_test->depth;
+        if (depth_test_ && inside(p->x, p->y)) depth_[index(p->x, p->y)] = p->depth_test->depth;
         store(p->x, p->y, p->color);
       } else {
         reject(p->x, p->y);  // narrated, but not written

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include <opencv2/core.hpp>
+#include "viz/geometry.hpp"
 
 #include "trace/trace.hpp"
 
@@ -25,10 +25,10 @@ class CanvasState {
  public:
   // Keeps the canvas pixels inside `window` (canvas coordinates, already clipped to the canvas).
   // `depth_test`: the trace is of a z-buffer render (Header::visibility "zbuffer").
-  explicit CanvasState(cv::Rect window, bool depth_test = false);
+  explicit CanvasState(Rect window, bool depth_test = false);
   // The window, and the visibility of `trace`'s header.
-  CanvasState(cv::Rect window, const trace::Trace& trace);
-  // A deep copy (copying a CanvasState shares its pixels, as cv::Mat does).
+  CanvasState(Rect window, const trace::Trace& trace);
+  // A copy (the pixels are values: any copy is deep; kept for the callers that say so).
   CanvasState clone() const;
 
   // Writes the rows first_row..last_row of `triangle` (those the trace holds).
@@ -37,12 +37,10 @@ class CanvasState {
   // Every row of `triangle`; for a triangle-level trace, the triangle filled again (see above).
   void paint_triangle(const trace::Trace& trace, int triangle);
 
-  const cv::Rect& window() const { return window_; }
+  const Rect& window() const { return window_; }
   bool depth_test() const { return depth_test_; }
   bool written(std::int64_t x, std::int64_t y) const;
-  cv::Vec3b bgr(std::int64_t x, std::int64_t y) const;  // only meaningful where written()
-  const cv::Mat& image() const { return image_; }       // CV_8UC3, window-sized
-  const cv::Mat& mask() const { return mask_; }         // CV_8UC1, 255 where written
+  Vec3b bgr(std::int64_t x, std::int64_t y) const;  // only meaningful where written()
 
   std::int64_t writes() const { return writes_; }          // pixel writes so far
   std::int64_t overwrites() const { return overwrites_; }  // of them, onto a written pixel
@@ -50,7 +48,7 @@ class CanvasState {
 
   // Z-buffer: the pixels (inside the window) the depth test rejected since forget_recent(), which
   // the scene view marks on the frame of the step that drew them.
-  const std::vector<cv::Point>& recent_rejections() const { return recent_rejections_; }
+  const std::vector<Point>& recent_rejections() const { return recent_rejections_; }
   void forget_recent() { recent_rejections_.clear(); }
 
   // Writes pixel (x, y) in colour `c`; with a depth (z-buffer) only if it passes the test.
@@ -63,12 +61,16 @@ class CanvasState {
   void refill(const trace::Trace& trace, int triangle);
   bool inside(std::int64_t x, std::int64_t y) const;
 
-  cv::Rect window_;
+  Rect window_;
   bool depth_test_ = false;
-  cv::Mat image_, mask_;
-  cv::Mat depth_;  // CV_64FC1, window-sized, +inf: nothing drawn yet (z-buffer only)
+  std::size_t index(std::int64_t x, std::int64_t y) const;  // (x, y) inside the window
+
+  int stride_ = 1;                  // pixels per row of the window's storage
+  std::vector<Vec3b> image_;        // BGR, window-sized
+  std::vector<std::uint8_t> mask_;  // 255 where written
+  std::vector<double> depth_;       // +inf: nothing drawn yet (z-buffer only; else empty)
   std::int64_t writes_ = 0, overwrites_ = 0, rejected_ = 0;
-  std::vector<cv::Point> recent_rejections_;
+  std::vector<Point> recent_rejections_;
 };
 
 // The colour the trace gives pixel x of scanline `s` (x inside its span): the flat colour, or

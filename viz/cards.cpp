@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include <spdlog/fmt/fmt.h>
-#include <opencv2/imgproc.hpp>
 
 #include "viz/palette.hpp"
 #include "viz/panel_writer.hpp"
@@ -14,9 +13,9 @@ namespace scantrace::viz {
 namespace {
 
 // Text on the left, the picture on the right (card_picture_area).
-cv::Rect column(const cv::Mat& frame, const Typography& type) {
+Rect column(const FrameView& frame, const Typography& type) {
   const int left = type.px(60);
-  return {left, type.px(70), frame.cols * 56 / 100 - left, frame.rows - type.px(110)};
+  return {left, type.px(70), frame.width() * 56 / 100 - left, frame.height() - type.px(110)};
 }
 
 std::string shading_text(const trace::Header& h) {
@@ -45,8 +44,8 @@ std::string triangle_text(const trace::Trace& t, int triangle) {
   return s;
 }
 
-void footer(cv::Mat& frame, const Typography& type, const std::string& text) {
-  type.draw(frame, text, {type.px(40), frame.rows - type.px(40)}, TextStyle::small,
+void footer(FrameView& frame, const Typography& type, const std::string& text) {
+  type.draw(frame, text, {type.px(40), frame.height() - type.px(40)}, TextStyle::small,
             palette::kMutedText);
 }
 
@@ -105,7 +104,7 @@ std::vector<std::string> recap_lines(const trace::Trace& trace, const StepPlan& 
   return lines;
 }
 
-cv::Rect card_picture_area(cv::Size frame, const Typography& type) {
+Rect card_picture_area(Size frame, const Typography& type) {
   const int left = frame.width * 60 / 100, top = type.px(70);
   return {left, top, std::max(1, frame.width - type.px(60) - left),
           std::max(1, frame.height - type.px(70) - top)};
@@ -134,7 +133,7 @@ void numbered_steps(PanelWriter& w, const std::vector<std::string>& steps) {
 
 }  // namespace
 
-void draw_title_card(cv::Mat& frame, const Typography& type, const trace::Trace& trace,
+void draw_title_card(FrameView& frame, const Typography& type, const trace::Trace& trace,
                      const StepPlan& plan, const CardInfo& info) {
   PanelWriter w(frame, column(frame, type), type);
   const trace::Header& h = trace.header();
@@ -184,7 +183,7 @@ void draw_title_card(cv::Mat& frame, const Typography& type, const trace::Trace&
   footer(frame, type, fmt::format("trace: {}   ({}, level {})", info.source, h.generator, h.level));
 }
 
-void draw_end_card(cv::Mat& frame, const Typography& type, const trace::Trace& trace,
+void draw_end_card(FrameView& frame, const Typography& type, const trace::Trace& trace,
                    const StepPlan& plan, const CardInfo& info) {
   PanelWriter w(frame, column(frame, type), type);
   w.line("Done", TextStyle::huge);

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 #include "trace/trace.hpp"
 #include "viz/replay_steps.hpp"
@@ -28,11 +28,11 @@ bool uses_zbuffer(const trace::Header& header);
 std::vector<std::string> recap_lines(const trace::Trace& trace, const StepPlan& plan);
 
 // Where a card shows its picture (the triangle or the scene), right of its text.
-cv::Rect card_picture_area(cv::Size frame, const Typography& type);
+Rect card_picture_area(Size frame, const Typography& type);
 
-void draw_title_card(cv::Mat& frame, const Typography& type, const trace::Trace& trace,
+void draw_title_card(FrameView& frame, const Typography& type, const trace::Trace& trace,
                      const StepPlan& plan, const CardInfo& info);
-void draw_end_card(cv::Mat& frame, const Typography& type, const trace::Trace& trace,
+void draw_end_card(FrameView& frame, const Typography& type, const trace::Trace& trace,
                    const StepPlan& plan, const CardInfo& info);
 
 }  // namespace scantrace::viz

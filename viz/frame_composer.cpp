@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include <spdlog/fmt/fmt.h>
-#include <opencv2/imgproc.hpp>
 
 #include "viz/grid_view.hpp"
 #include "viz/legend.hpp"
@@ -56,7 +55,7 @@ PixelBox triangle_region(const trace::Trace& trace, int triangle) {
   return {r.x0 - margin, r.y0 - margin, r.x1 + margin, r.y1 + margin};
 }
 
-FrameComposer::FrameComposer(const trace::Trace& trace, const StepPlan& plan, cv::Size frame,
+FrameComposer::FrameComposer(const trace::Trace& trace, const StepPlan& plan, Size frame,
                              std::string source)
     : trace_(trace),
       plan_(plan),
@@ -74,7 +73,7 @@ std::optional<ViewGeometry> FrameComposer::geometry(const Step& step) const {
     case StepKind::title:
     case StepKind::end: {
       // The cards' picture: the one triangle of a single-triangle replay, else the canvas.
-      const cv::Rect area = card_picture_area(size_, type_);
+      const Rect area = card_picture_area(size_, type_);
       const bool one = plan_.mode == ReplayMode::triangles && plan_.order.size() == 1;
       return ViewGeometry(area,
                           one ? triangle_region(trace_, plan_.order.front()) : whole_canvas(trace_),
@@ -88,9 +87,9 @@ std::optional<ViewGeometry> FrameComposer::geometry(const Step& step) const {
   }
 }
 
-void FrameComposer::title_bar(cv::Mat& frame, const Step& step, std::size_t index) const {
-  const cv::Rect& bar = layout_.title_bar;
-  cv::rectangle(frame, bar, palette::kTitleBar, cv::FILLED);
+void FrameComposer::title_bar(FrameView& frame, const Step& step, std::size_t index) const {
+  const Rect& bar = layout_.title_bar;
+  frame.rectangle(bar, palette::kTitleBar, FILLED);
   const int m = layout_.margin;
   const int top = bar.y + (bar.height - type_.measure("A", TextStyle::heading).height) / 2;
   int x = type_.draw(frame, "scantrace", {m, top}, TextStyle::heading, palette::kTitleText);
@@ -113,7 +112,7 @@ void FrameComposer::title_bar(cv::Mat& frame, const Step& step, std::size_t inde
              TextStyle::strong, palette::kTitleText);
 }
 
-void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step, const CanvasState& state,
+void FrameComposer::triangle_frame(FrameView& frame, const Step& step, const CanvasState& state,
                                    std::vector<PlacedBox>* placed) const {
   const ViewGeometry g = *geometry(step);
   GridView view(frame, g, type_, canvas_);
@@ -153,14 +152,14 @@ void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step, const Canva
   std::vector<PlacedBox> insets;
   if (row && !view.grid_visible())
     insets = draw_zoom_insets(frame, g, type_, canvas_, state, b, table, *row, view.placement());
-  cv::rectangle(frame, g.view(), palette::kPanelBorder, 1);
+  frame.rectangle(g.view(), palette::kPanelBorder, 1);
   if (placed) {
     *placed = view.placement().boxes();
     placed->insert(placed->end(), insets.begin(), insets.end());
   }
 
   const int legend = legend_height(type_, LegendKind::triangle);
-  cv::Rect text = layout_.panel;
+  Rect text = layout_.panel;
   text.height -= legend;
   draw_triangle_panel(frame, text, type_, trace_, step);
   LegendShape shape;  // a polygon's legend names its outline and all of its edges
@@ -171,20 +170,21 @@ void FrameComposer::triangle_frame(cv::Mat& frame, const Step& step, const Canva
   draw_legend(frame, layout_.panel, type_, LegendKind::triangle, shape);
 }
 
-void FrameComposer::scene_frame(cv::Mat& frame, const Step& step, const CanvasState& state) const {
+void FrameComposer::scene_frame(FrameView& frame, const Step& step,
+                                const CanvasState& state) const {
   const ViewGeometry g = *geometry(step);
   draw_scene_view(frame, g, type_, canvas_, state, trace_, plan_, step);
-  cv::rectangle(frame, g.view(), palette::kPanelBorder, 1);
+  frame.rectangle(g.view(), palette::kPanelBorder, 1);
   const int legend = legend_height(type_, LegendKind::scene);
-  cv::Rect text = layout_.panel;
+  Rect text = layout_.panel;
   text.height -= legend;
   draw_scene_panel(frame, text, type_, trace_, plan_, scene_, step, state);
   draw_legend(frame, layout_.panel, type_, LegendKind::scene);
 }
 
-void FrameComposer::card_picture(cv::Mat& frame, const Step& step, const CanvasState& state,
+void FrameComposer::card_picture(FrameView& frame, const Step& step, const CanvasState& state,
                                  std::vector<PlacedBox>* placed) const {
-  const cv::Rect area = card_picture_area(size_, type_);
+  const Rect area = card_picture_area(size_, type_);
   const bool one = plan_.mode == ReplayMode::triangles && plan_.order.size() == 1;
   const ViewGeometry g = *geometry(step);
   GridView view(frame, g, type_, canvas_);
@@ -203,33 +203,34 @@ void FrameComposer::card_picture(cv::Mat& frame, const Step& step, const CanvasS
         view.outline(*b, palette::kOutline, one ? 2 : 1);
   if (one)
     if (const trace::TriangleBegin* b = find_begin(trace_, plan_.order.front())) view.vertices(*b);
-  cv::rectangle(frame, area, palette::kPanelBorder, 1);
+  frame.rectangle(area, palette::kPanelBorder, 1);
   if (placed) *placed = view.placement().boxes();
 }
 
-cv::Mat FrameComposer::compose(const Step& step, std::size_t index, const CanvasState& state,
-                               std::vector<PlacedBox>* placed) const {
-  cv::Mat frame(size_, CV_8UC3, palette::kFrame);
+Frame FrameComposer::compose(const Step& step, std::size_t index, const CanvasState& state,
+                             std::vector<PlacedBox>* placed) const {
+  Frame result(size_, palette::kFrame);
+  FrameView frame(result);
   if (placed) placed->clear();
   CardInfo info{source_, plan_.rows_per_step, state.writes(), state.overwrites(), state.rejected()};
   switch (step.kind) {
     case StepKind::title:
       draw_title_card(frame, type_, trace_, plan_, info);
       card_picture(frame, step, state, placed);
-      return frame;
+      return result;
     case StepKind::end:
       draw_end_card(frame, type_, trace_, plan_, info);
       card_picture(frame, step, state, placed);
-      return frame;
+      return result;
     case StepKind::painter_batch:
     case StepKind::scene_done:
       title_bar(frame, step, index);
       scene_frame(frame, step, state);
-      return frame;
+      return result;
     default:
       title_bar(frame, step, index);
       triangle_frame(frame, step, state, placed);
-      return frame;
+      return result;
   }
 }
 

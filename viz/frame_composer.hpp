@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 #include "trace/trace.hpp"
 #include "viz/canvas_state.hpp"
@@ -21,28 +21,27 @@ namespace scantrace::viz {
 
 class FrameComposer {
  public:
-  FrameComposer(const trace::Trace& trace, const StepPlan& plan, cv::Size frame,
-                std::string source);
+  FrameComposer(const trace::Trace& trace, const StepPlan& plan, Size frame, std::string source);
 
   // The frame of `step` (number `index` in the plan) with the pixels of `state`. `placed`, when
   // given, receives where the markers, labels and zoom insets on the canvas view were drawn.
-  cv::Mat compose(const Step& step, std::size_t index, const CanvasState& state,
-                  std::vector<PlacedBox>* placed = nullptr) const;
+  Frame compose(const Step& step, std::size_t index, const CanvasState& state,
+                std::vector<PlacedBox>* placed = nullptr) const;
   // Where the canvas is shown for `step` (nullopt: a card, no canvas).
   std::optional<ViewGeometry> geometry(const Step& step) const;
   const FrameLayout& layout() const { return layout_; }
 
  private:
-  void title_bar(cv::Mat& frame, const Step& step, std::size_t index) const;
-  void triangle_frame(cv::Mat& frame, const Step& step, const CanvasState& state,
+  void title_bar(FrameView& frame, const Step& step, std::size_t index) const;
+  void triangle_frame(FrameView& frame, const Step& step, const CanvasState& state,
                       std::vector<PlacedBox>* placed) const;
-  void scene_frame(cv::Mat& frame, const Step& step, const CanvasState& state) const;
-  void card_picture(cv::Mat& frame, const Step& step, const CanvasState& state,
+  void scene_frame(FrameView& frame, const Step& step, const CanvasState& state) const;
+  void card_picture(FrameView& frame, const Step& step, const CanvasState& state,
                     std::vector<PlacedBox>* placed) const;
 
   const trace::Trace& trace_;
   const StepPlan& plan_;
-  cv::Size size_, canvas_;
+  Size size_, canvas_;
   Typography type_;
   FrameLayout layout_;
   SceneSummary scene_;

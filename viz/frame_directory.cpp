@@ -16,7 +16,8 @@ namespace {
 
 bool is_frame_file(const std::filesystem::path& p) {
   const std::string name = p.filename().string();
-  return name.size() == 15 && name.rfind("frame_", 0) == 0 && name.compare(11, 4, ".png") == 0 &&
+  return name.size() == 15 && name.rfind("frame_", 0) == 0 &&
+         (name.compare(11, 4, ".png") == 0 || name.compare(11, 4, ".svg") == 0) &&
          name.find_first_not_of("0123456789", 6) == 11;
 }
 
@@ -37,14 +38,18 @@ void check_replaceable(const std::filesystem::path& dir) {
 
 }  // namespace
 
-std::string FrameDirectory::file_name(std::size_t number) {
+std::string FrameDirectory::file_name(std::size_t number, const std::string& extension) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "frame_%05zu.png", number);
-  return buf;
+  std::snprintf(buf, sizeof buf, "frame_%05zu.", number);
+  return buf + extension;
 }
 
-FrameDirectory::FrameDirectory(std::filesystem::path dir, cv::Size size, std::size_t first_number)
-    : dir_(std::move(dir)), size_(size), first_number_(first_number) {
+FrameDirectory::FrameDirectory(std::filesystem::path dir, cv::Size size, std::size_t first_number,
+                               std::string extension)
+    : dir_(std::move(dir)),
+      size_(size),
+      first_number_(first_number),
+      extension_(std::move(extension)) {
   // "out/" names the directory "out".
   if (!dir_.has_filename()) dir_ = dir_.parent_path();
   if (dir_.empty()) throw std::runtime_error("frame directory: empty path");
@@ -68,9 +73,13 @@ void FrameDirectory::write(const cv::Mat& frame, int /*repeat*/) {
   if (!cv::imencode(".png", frame, png))
     throw std::runtime_error(dir_.string() + ": cannot encode frame " +
                              std::to_string(frames_ + 1) + " as PNG");
-  const std::filesystem::path file = temp_ / file_name(first_number_ + frames_);
+  write_document(std::string(png.begin(), png.end()));
+}
+
+void FrameDirectory::write_document(const std::string& bytes) {
+  const std::filesystem::path file = temp_ / file_name(first_number_ + frames_, extension_);
   std::ofstream out(file, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   out.close();
   if (!out)
     throw std::runtime_error(dir_.string() + ": cannot write " + file.filename().string() +

@@ -5,7 +5,7 @@
 
 namespace scantrace::viz {
 
-FrameLayout FrameLayout::for_frame(cv::Size frame, const Typography& type) {
+FrameLayout FrameLayout::for_frame(Size frame, const Typography& type) {
   FrameLayout l;
   l.frame = frame;
   l.margin = type.px(12);

@@ -6,9 +6,8 @@
 #include <vector>
 
 #include <spdlog/fmt/fmt.h>
-#include <opencv2/imgproc.hpp>
 
-#include "viz/opencv_image.hpp"
+#include "src/image.hpp"
 #include "viz/palette.hpp"
 #include "viz/text_format.hpp"
 #include "viz/trace_lookup.hpp"
@@ -16,56 +15,56 @@
 namespace scantrace::viz {
 namespace {
 
-cv::Scalar to_scalar(const Color& c) {
+Scalar to_scalar(const Color& c) {
   return {static_cast<double>(to_byte(static_cast<float>(c.b))),
           static_cast<double>(to_byte(static_cast<float>(c.g))),
           static_cast<double>(to_byte(static_cast<float>(c.r)))};
 }
 
-bool is_dark(const cv::Vec3b& bgr) {
+bool is_dark(const Vec3b& bgr) {
   return 0.114 * bgr[0] + 0.587 * bgr[1] + 0.299 * bgr[2] < 110;
 }
 
 }  // namespace
 
-GridView::GridView(cv::Mat& frame, const ViewGeometry& geometry, const Typography& type,
-                   cv::Size canvas, int layer)
+GridView::GridView(FrameView& frame, const ViewGeometry& geometry, const Typography& type,
+                   Size canvas, int layer)
     : frame_(frame),
       geometry_(geometry),
       type_(type),
       canvas_(canvas),
       placement_(geometry.view(), layer) {}
 
-void GridView::label(const std::string& text, TextStyle style,
-                     const std::vector<cv::Rect>& candidates, const cv::Scalar& box,
-                     std::optional<cv::Scalar> border) {
-  const std::optional<cv::Rect> spot = placement_.place(PlacedKind::label, candidates, text);
+void GridView::label(const std::string& text, TextStyle style, const std::vector<Rect>& candidates,
+                     const Scalar& box, std::optional<Scalar> border) {
+  const std::optional<Rect> spot = placement_.place(PlacedKind::label, candidates, text);
   if (!spot) return;
-  const cv::Point offset = -type_.boxed_area(text, {0, 0}, style, border.has_value()).tl();
-  type_.draw_boxed(frame_, text, spot->tl() + offset, style, palette::kText, box, border);
+  const Point offset = -type_.boxed_area(text, {0, 0}, style, border.has_value()).tl();
+  type_.draw_boxed(frame_, text, spot->tl() + offset, style, palette::kText, box, border,
+                   mark(MarkKind::label, *spot, text));
 }
 
-std::vector<cv::Rect> GridView::around(const std::string& text, TextStyle style, bool bold_border,
-                                       cv::Point2d p, int radius, cv::Point2d preferred) const {
-  const cv::Size s = type_.boxed_area(text, {0, 0}, style, bold_border).size();
+std::vector<Rect> GridView::around(const std::string& text, TextStyle style, bool bold_border,
+                                   Point2d p, int radius, Point2d preferred) const {
+  const Size s = type_.boxed_area(text, {0, 0}, style, bold_border).size();
   return boxes_around(p, radius, s, preferred, type_.px(3), s.height / 2);
 }
 
 void GridView::cells(const CanvasState& state, std::optional<Color> background) {
-  const cv::Rect& v = geometry_.view();
+  const Rect& v = geometry_.view();
   std::vector<std::int64_t> columns(v.width);
   for (int u = 0; u < v.width; ++u) columns[u] = geometry_.pixel_x(v.x + u);
-  const cv::Scalar bg = background ? to_scalar(*background) : cv::Scalar{};
-  const cv::Vec3b empty =
-      background
-          ? cv::Vec3b(static_cast<std::uint8_t>(bg[0]), static_cast<std::uint8_t>(bg[1]),
-                      static_cast<std::uint8_t>(bg[2]))
-          : cv::Vec3b(palette::kEmptyCell[0], palette::kEmptyCell[1], palette::kEmptyCell[2]);
-  const cv::Vec3b outside(palette::kOutsideCanvas[0], palette::kOutsideCanvas[1],
-                          palette::kOutsideCanvas[2]);
+  const Scalar bg = background ? to_scalar(*background) : Scalar{};
+  const Vec3b empty =
+      background ? Vec3b(static_cast<std::uint8_t>(bg[0]), static_cast<std::uint8_t>(bg[1]),
+                         static_cast<std::uint8_t>(bg[2]))
+                 : Vec3b(palette::kEmptyCell[0], palette::kEmptyCell[1], palette::kEmptyCell[2]);
+  const Vec3b outside(palette::kOutsideCanvas[0], palette::kOutsideCanvas[1],
+                      palette::kOutsideCanvas[2]);
+  cells_.assign(static_cast<std::size_t>(v.width) * static_cast<std::size_t>(v.height), Vec3b{});
   for (int r = 0; r < v.height; ++r) {
     const std::int64_t y = geometry_.pixel_y(v.y + r);
-    auto* out = frame_.ptr<cv::Vec3b>(v.y + r) + v.x;
+    Vec3b* out = cells_.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(v.width);
     const bool row_on_canvas = y >= 0 && y < canvas_.height;
     for (int u = 0; u < v.width; ++u) {
       const std::int64_t x = columns[u];
@@ -75,40 +74,59 @@ void GridView::cells(const CanvasState& state, std::optional<Color> background) 
         out[u] = state.written(x, y) ? state.bgr(x, y) : empty;
     }
   }
+  // One block for the view; the backends crop it to the frame, as writing pixels did.
+  frame_.pixels(v, cells_, mark(MarkKind::cells, v & Rect({0, 0}, frame_.size()), {}));
+}
+
+Vec3b GridView::cell_colour(Point p) const {
+  // What cells() put at frame pixel `p` (inside the view): grid() draws the centres on it.
+  const Rect& v = geometry_.view();
+  return cells_[static_cast<std::size_t>(p.y - v.y) * static_cast<std::size_t>(v.width) +
+                static_cast<std::size_t>(p.x - v.x)];
+}
+
+Mark GridView::mark(MarkKind kind, const Rect& box, std::string what) const {
+  // Clipped to the view, as the placement keeps its boxes.
+  return {kind, std::move(what), (box & placement_.area()) + frame_.area().tl(),
+          placement_.layer()};
 }
 
 void GridView::grid() {
   if (!grid_visible()) return;
-  const cv::Rect& v = geometry_.view();
+  const Rect& v = geometry_.view();
   const PixelBox b = geometry_.visible();
   // Cell borders, then the centres on top, dark on light cells and light on dark ones.
   for (std::int64_t x = b.x0; x <= b.x1 + 1; ++x) {
     const int u = static_cast<int>(std::lround(at(static_cast<double>(x) - 0.5, 0).x));
     if (u >= v.x && u < v.x + v.width)
-      cv::line(frame_, {u, v.y}, {u, v.y + v.height - 1}, palette::kGridLine, 1);
+      frame_.line({u, v.y}, {u, v.y + v.height - 1}, palette::kGridLine, 1);
   }
   for (std::int64_t y = b.y0; y <= b.y1 + 1; ++y) {
     const int w = static_cast<int>(std::lround(at(0, static_cast<double>(y) - 0.5).y));
     if (w >= v.y && w < v.y + v.height)
-      cv::line(frame_, {v.x, w}, {v.x + v.width - 1, w}, palette::kGridLine, 1);
+      frame_.line({v.x, w}, {v.x + v.width - 1, w}, palette::kGridLine, 1);
   }
   const double cell = geometry_.cell();
   const int radius = cell >= 14 ? std::max(1, static_cast<int>(cell / 14)) : 0;
   for (std::int64_t y = b.y0; y <= b.y1; ++y)
     for (std::int64_t x = b.x0; x <= b.x1; ++x) {
-      const cv::Point2d c = at(static_cast<double>(x), static_cast<double>(y));
-      const cv::Point p(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)));
+      const Point2d c = at(static_cast<double>(x), static_cast<double>(y));
+      const Point p(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)));
       if (!v.contains(p)) continue;
-      const cv::Scalar colour =
-          is_dark(frame_.at<cv::Vec3b>(p)) ? palette::kCentreOnDark : palette::kCentreOnLight;
+      // Grid lines run between the cells (cells are 6 frame pixels or more here), so the pixel
+      // under a centre is its cell's colour.
+      const Scalar colour =
+          is_dark(cell_colour(p)) ? palette::kCentreOnDark : palette::kCentreOnLight;
       if (radius == 0)
-        frame_.at<cv::Vec3b>(p) = cv::Vec3b(colour[0], colour[1], colour[2]);
+        frame_.pixel(
+            p, Vec3b(static_cast<std::uint8_t>(colour[0]), static_cast<std::uint8_t>(colour[1]),
+                     static_cast<std::uint8_t>(colour[2])));
       else
-        cv::circle(frame_, p, radius, colour, cv::FILLED, cv::LINE_AA);
+        frame_.circle(p, radius, colour, FILLED, LINE_AA);
     }
 }
 
-void GridView::outline(std::span<const Vec2> polygon, const cv::Scalar& colour,
+void GridView::outline(std::span<const Vec2> polygon, const Scalar& colour,
                        double design_thickness) {
   const int t = type_.px(design_thickness);
   for (std::size_t i = 0; i < polygon.size(); ++i) {
@@ -117,7 +135,7 @@ void GridView::outline(std::span<const Vec2> polygon, const cv::Scalar& colour,
   }
 }
 
-void GridView::outline(const trace::TriangleBegin& polygon, const cv::Scalar& colour,
+void GridView::outline(const trace::TriangleBegin& polygon, const Scalar& colour,
                        double design_thickness) {
   for (const std::vector<Vec2>& c : contours_of(polygon)) outline(c, colour, design_thickness);
 }
@@ -148,7 +166,7 @@ const std::vector<Vec2>& corners_of(const trace::TriangleBegin& t) {
   return t.snapped.empty() ? t.vertices : t.snapped;
 }
 
-cv::Point rounded(cv::Point2d p) {
+Point rounded(Point2d p) {
   return {static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y))};
 }
 
@@ -158,12 +176,14 @@ void GridView::vertex_markers(const trace::TriangleBegin& triangle) {
   const std::vector<Vec2>& p = corners_of(triangle);
   const int r = type_.px(kVertexRadius), ring = r + type_.px(kRing);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const cv::Point q = rounded(at(p[i].x, p[i].y));
+    const Point q = rounded(at(p[i].x, p[i].y));
     if (!geometry_.view().contains(q)) continue;
     const Color col = i < triangle.colors.size() ? triangle.colors[i] : Color{};
-    cv::circle(frame_, q, ring, palette::kHalo, cv::FILLED, cv::LINE_AA);
-    cv::circle(frame_, q, r, to_scalar(col), cv::FILLED, cv::LINE_AA);
-    placement_.mark(PlacedKind::vertex, marker_box(q, ring), fmt::format("v{}", i));
+    const std::string name = fmt::format("v{}", i);
+    frame_.circle(q, ring, palette::kHalo, FILLED, LINE_AA,
+                  mark(MarkKind::vertex, marker_box(q, ring), name));
+    frame_.circle(q, r, to_scalar(col), FILLED, LINE_AA);
+    placement_.mark(PlacedKind::vertex, marker_box(q, ring), name);
   }
 }
 
@@ -172,13 +192,13 @@ void GridView::vertex_labels(const trace::TriangleBegin& triangle) {
   if (p.empty()) return;
   Vec2 centre{0, 0};
   for (const Vec2& v : p) centre = {centre.x + v.x / p.size(), centre.y + v.y / p.size()};
-  const cv::Point2d c = at(centre.x, centre.y);
+  const Point2d c = at(centre.x, centre.y);
   const int ring = type_.px(kVertexRadius) + type_.px(kRing);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const cv::Point2d q = at(p[i].x, p[i].y);
+    const Point2d q = at(p[i].x, p[i].y);
     if (!geometry_.view().contains(rounded(q))) continue;
     // Away from the polygon's centre first, so the label does not cover the polygon.
-    const cv::Point2d away = q == c ? cv::Point2d(0, -1) : q - c;
+    const Point2d away = q == c ? Point2d(0, -1) : q - c;
     const std::string text = fmt::format("v{} {}", i, point(p[i]));
     label(text, TextStyle::body, around(text, TextStyle::body, false, q, ring, away),
           palette::kLabelBox);
@@ -186,24 +206,28 @@ void GridView::vertex_labels(const trace::TriangleBegin& triangle) {
 }
 
 void GridView::scanline(std::int64_t y) {
-  const cv::Rect& v = geometry_.view();
+  const Rect& v = geometry_.view();
   const double w = at(0, static_cast<double>(y)).y;
-  draw_segment_with_halo(frame_, {static_cast<double>(v.x), w},
-                         {static_cast<double>(v.x + v.width), w}, v, palette::kScanline,
-                         type_.px(2), palette::kHalo, type_.px(1));
+  const int half = type_.px(2) / 2 + type_.px(1) + 1;
+  draw_segment_with_halo(
+      frame_, {static_cast<double>(v.x), w}, {static_cast<double>(v.x + v.width), w}, v,
+      palette::kScanline, type_.px(2), palette::kHalo, type_.px(1),
+      mark(MarkKind::scanline,
+           Rect(v.x, static_cast<int>(std::floor(w)) - half, v.width, 2 * half + 1) & v,
+           fmt::format("y = {}", y)));
 }
 
 void GridView::scanline_label(std::int64_t y) {
-  const cv::Rect& v = geometry_.view();
+  const Rect& v = geometry_.view();
   const double w = at(0, static_cast<double>(y)).y;
   const std::string text = fmt::format("y = {}", y);
-  const cv::Size s = type_.boxed_area(text, {0, 0}, TextStyle::strong).size();
+  const Size s = type_.boxed_area(text, {0, 0}, TextStyle::strong).size();
   // On the row at the view's left edge, where the eye looks for it; then the right edge, then
   // above and below the row, then along it.
   const int m = type_.px(4);
   const std::vector<int> xs{v.x + m, v.x + v.width - m - s.width, v.x + v.width / 4 - s.width / 2,
                             v.x + v.width / 2 - s.width / 2, v.x + 3 * v.width / 4 - s.width / 2};
-  std::vector<cv::Rect> candidates;
+  std::vector<Rect> candidates;
   for (const int dy : {0, -1, 1, -2, 2, -3, 3})
     for (std::size_t i = 0; i < xs.size(); ++i)
       if (i < 2 || dy == 0 || std::abs(dy) == 3)
@@ -214,19 +238,30 @@ void GridView::scanline_label(std::int64_t y) {
 
 void GridView::span(std::int64_t y, const trace::Span& span) {
   if (span.size() <= 0) return;
-  const cv::Point2d a = at(static_cast<double>(span.x_begin) - 0.5, static_cast<double>(y) - 0.5);
-  const cv::Point2d b = at(static_cast<double>(span.x_end) - 0.5, static_cast<double>(y) + 0.5);
+  const Point2d a = at(static_cast<double>(span.x_begin) - 0.5, static_cast<double>(y) - 0.5);
+  const Point2d b = at(static_cast<double>(span.x_end) - 0.5, static_cast<double>(y) + 0.5);
   // The box is drawn just outside the span's cells, so it frames their colours without covering
   // them; small cells get a box tall enough to be seen, centred on the row.
   const int thickness = type_.px(2), halo = type_.px(1);
   const double out = thickness / 2.0 + halo;
   const double min_height = type_.px(10);
   const double mid = (a.y + b.y) / 2, half = std::max((b.y - a.y) / 2 + out, min_height / 2);
-  const cv::Point2d tl(a.x - out, mid - half), br(b.x + out, mid + half);
-  const cv::Point2d tr(br.x, tl.y), bl(tl.x, br.y);
-  for (auto [p, q] : {std::pair{tl, tr}, std::pair{tr, br}, std::pair{br, bl}, std::pair{bl, tl}})
+  const Point2d tl(a.x - out, mid - half), br(b.x + out, mid + half);
+  const Point2d tr(br.x, tl.y), bl(tl.x, br.y);
+  // The box's mark rides on its first side: the area inside the halo's outer edge.
+  const double edge = thickness / 2.0 + halo;
+  std::optional<Mark> box = mark(MarkKind::span,
+                                 Rect(Point(static_cast<int>(std::floor(tl.x - edge)),
+                                            static_cast<int>(std::floor(tl.y - edge))),
+                                      Point(static_cast<int>(std::ceil(br.x + edge)) + 1,
+                                            static_cast<int>(std::ceil(br.y + edge)) + 1)) &
+                                     geometry_.view(),
+                                 fmt::format("[{}, {})", span.x_begin, span.x_end));
+  for (auto [p, q] : {std::pair{tl, tr}, std::pair{tr, br}, std::pair{br, bl}, std::pair{bl, tl}}) {
     draw_segment_with_halo(frame_, p, q, geometry_.view(), palette::kSpan, thickness,
-                           palette::kHalo, halo);
+                           palette::kHalo, halo, std::move(box));
+    box.reset();
+  }
 }
 
 void GridView::active_points(const trace::Scanline& row) {
@@ -237,11 +272,13 @@ void GridView::active_points(const trace::Scanline& row) {
 void GridView::active_point_markers(const trace::Scanline& row) {
   const int r = type_.px(kPointRadius), ring = r + type_.px(kRing);
   for (const trace::ActivePoint& p : row.active_points) {
-    const cv::Point q = rounded(at(p.x, static_cast<double>(row.y)));
+    const Point q = rounded(at(p.x, static_cast<double>(row.y)));
     if (!geometry_.view().contains(q)) continue;
-    cv::circle(frame_, q, ring, palette::edge_colour(p.edge), cv::FILLED, cv::LINE_AA);
-    cv::circle(frame_, q, r, to_scalar(p.color), cv::FILLED, cv::LINE_AA);
-    placement_.mark(PlacedKind::active_point, marker_box(q, ring), fmt::format("e{}", p.edge));
+    const std::string name = fmt::format("e{}", p.edge);
+    frame_.circle(q, ring, palette::edge_colour(p.edge), FILLED, LINE_AA,
+                  mark(MarkKind::active_point, marker_box(q, ring), name));
+    frame_.circle(q, r, to_scalar(p.color), FILLED, LINE_AA);
+    placement_.mark(PlacedKind::active_point, marker_box(q, ring), name);
   }
 }
 
@@ -250,12 +287,12 @@ void GridView::active_point_labels(const trace::Scanline& row) {
   const int ring = type_.px(kPointRadius) + type_.px(kRing);
   for (std::size_t i = 0; i < n; ++i) {
     const trace::ActivePoint& p = row.active_points[i];
-    const cv::Point2d q = at(p.x, static_cast<double>(row.y));
+    const Point2d q = at(p.x, static_cast<double>(row.y));
     if (!geometry_.view().contains(rounded(q))) continue;
     // The leftmost label goes left of its point, the rightmost right of it, so the two x values
     // of a row read apart even where the points meet at a vertex. With more points (general
     // polygons) the ones between alternate above and below the row.
-    cv::Point2d preferred(0, -1);
+    Point2d preferred(0, -1);
     if (n >= 2 && i == 0) preferred = {-1, -1};
     if (n >= 2 && i == n - 1) preferred = {1, -1};
     if (n > 2 && i > 0 && i + 1 < n && i % 2 == 1) preferred = {0, 1};

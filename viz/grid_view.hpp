@@ -7,9 +7,12 @@
 // (viz/label_placement.hpp), so the order of the calls is the order of importance: all markers,
 // then the labels that matter most for the step.
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
+#include <vector>
 
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 #include "trace/events.hpp"
 #include "viz/canvas_state.hpp"
@@ -25,7 +28,7 @@ class GridView {
   static constexpr double kMinGridCell = 6;
 
   // `layer` numbers the view in the placements it reports: 0 the main view, k a zoom inset.
-  GridView(cv::Mat& frame, const ViewGeometry& geometry, const Typography& type, cv::Size canvas,
+  GridView(FrameView& frame, const ViewGeometry& geometry, const Typography& type, Size canvas,
            int layer = 0);
 
   bool grid_visible() const { return geometry_.cell() >= kMinGridCell; }
@@ -34,10 +37,9 @@ class GridView {
   // finished image as rendered).
   void cells(const CanvasState& state, std::optional<Color> background = std::nullopt);
   void grid();
-  void outline(std::span<const Vec2> polygon, const cv::Scalar& colour, double design_thickness);
+  void outline(std::span<const Vec2> polygon, const Scalar& colour, double design_thickness);
   // Every closed contour of the polygon (one for a triangle).
-  void outline(const trace::TriangleBegin& polygon, const cv::Scalar& colour,
-               double design_thickness);
+  void outline(const trace::TriangleBegin& polygon, const Scalar& colour, double design_thickness);
   // An edge of the edge table in its own colour; `active` ones are drawn bold.
   void edge(Vec2 from, Vec2 to, int id, bool active);
   // Markers, then labels "v0 (x, y)", each away from the polygon's centre where there is room.
@@ -62,20 +64,25 @@ class GridView {
   const Placement& placement() const { return placement_; }
 
  private:
-  cv::Point2d at(double x, double y) const { return geometry_.to_frame(x, y); }
+  Point2d at(double x, double y) const { return geometry_.to_frame(x, y); }
   // Draws `text` boxed in the first free area of `candidates` (areas of boxed_area's size);
   // nothing when none is free.
-  void label(const std::string& text, TextStyle style, const std::vector<cv::Rect>& candidates,
-             const cv::Scalar& box, std::optional<cv::Scalar> border = std::nullopt);
+  void label(const std::string& text, TextStyle style, const std::vector<Rect>& candidates,
+             const Scalar& box, std::optional<Scalar> border = std::nullopt);
   // Label areas for `text` around a marker at `p`, towards `preferred` first.
-  std::vector<cv::Rect> around(const std::string& text, TextStyle style, bool bold_border,
-                               cv::Point2d p, int radius, cv::Point2d preferred) const;
+  std::vector<Rect> around(const std::string& text, TextStyle style, bool bold_border, Point2d p,
+                           int radius, Point2d preferred) const;
 
-  cv::Mat& frame_;
+  Vec3b cell_colour(Point p) const;
+  // A mark of this view (its layer), `box` in the view's frame coordinates.
+  Mark mark(MarkKind kind, const Rect& box, std::string what) const;
+
+  FrameView& frame_;
   const ViewGeometry& geometry_;
   const Typography& type_;
-  cv::Size canvas_;
+  Size canvas_;
   Placement placement_;
+  std::vector<Vec3b> cells_;  // what cells() drew over the view, row by row
 };
 
 }  // namespace scantrace::viz

@@ -6,20 +6,20 @@
 
 namespace scantrace::viz {
 
-void Placement::mark(PlacedKind kind, const cv::Rect& box, std::string text) {
-  const cv::Rect clipped = box & area_;
+void Placement::mark(PlacedKind kind, const Rect& box, std::string text) {
+  const Rect clipped = box & area_;
   if (!clipped.empty()) boxes_.push_back({kind, clipped, std::move(text), layer_});
 }
 
-bool Placement::free(const cv::Rect& box) const {
+bool Placement::free(const Rect& box) const {
   if ((box & area_) != box) return false;
   return std::none_of(boxes_.begin(), boxes_.end(),
                       [&](const PlacedBox& b) { return !(b.box & box).empty(); });
 }
 
-std::optional<cv::Rect> Placement::place(PlacedKind kind, std::span<const cv::Rect> candidates,
-                                         std::string text) {
-  for (cv::Rect c : candidates) {
+std::optional<Rect> Placement::place(PlacedKind kind, std::span<const Rect> candidates,
+                                     std::string text) {
+  for (Rect c : candidates) {
     // A box near the view's edge slides inside rather than being given up: it may then cover its
     // own marker, which free() refuses like any other.
     c.x = std::clamp(c.x, area_.x, std::max(area_.x, area_.x + area_.width - c.width));
@@ -32,20 +32,20 @@ std::optional<cv::Rect> Placement::place(PlacedKind kind, std::span<const cv::Re
   return std::nullopt;
 }
 
-std::vector<cv::Rect> boxes_around(cv::Point2d p, int radius, cv::Size size, cv::Point2d preferred,
-                                   int gap, int step, int rings) {
-  std::array<cv::Point, 8> directions{cv::Point{-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}, {0, 1},
-                                      {-1, 1},           {-1, 0}};
-  std::stable_sort(directions.begin(), directions.end(), [&](cv::Point a, cv::Point b) {
-    const auto score = [&](cv::Point d) {
+std::vector<Rect> boxes_around(Point2d p, int radius, Size size, Point2d preferred, int gap,
+                               int step, int rings) {
+  std::array<Point, 8> directions{Point{-1, -1}, {0, -1}, {1, -1}, {1, 0},
+                                  {1, 1},        {0, 1},  {-1, 1}, {-1, 0}};
+  std::stable_sort(directions.begin(), directions.end(), [&](Point a, Point b) {
+    const auto score = [&](Point d) {
       return (d.x * preferred.x + d.y * preferred.y) / std::hypot(double(d.x), double(d.y));
     };
     return score(a) > score(b);
   });
-  std::vector<cv::Rect> out;
+  std::vector<Rect> out;
   for (int ring = 0; ring < rings; ++ring) {
     const double reach = radius + gap + ring * step;
-    for (const cv::Point d : directions) {
+    for (const Point d : directions) {
       const double x = d.x < 0   ? p.x - reach - size.width
                        : d.x > 0 ? p.x + reach
                                  : p.x - size.width / 2.0;
@@ -59,7 +59,7 @@ std::vector<cv::Rect> boxes_around(cv::Point2d p, int radius, cv::Size size, cv:
   return out;
 }
 
-cv::Rect marker_box(cv::Point2d p, int radius) {
+Rect marker_box(Point2d p, int radius) {
   const int cx = static_cast<int>(std::lround(p.x)), cy = static_cast<int>(std::lround(p.y));
   const int r = radius + 1;
   return {cx - r, cy - r, 2 * r + 1, 2 * r + 1};

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include <spdlog/fmt/fmt.h>
-#include <opencv2/imgproc.hpp>
 
 #include "viz/palette.hpp"
 #include "viz/view_geometry.hpp"
@@ -13,21 +12,21 @@
 namespace scantrace::viz {
 namespace {
 
-using Icon = std::function<void(cv::Mat&, const cv::Rect&, const Typography&)>;
+using Icon = std::function<void(FrameView&, const Rect&, const Typography&)>;
 
 struct Entry {
   Icon icon;
   std::string text;
 };
 
-cv::Point2d mid_left(const cv::Rect& r) {
+Point2d mid_left(const Rect& r) {
   return {static_cast<double>(r.x), r.y + r.height / 2.0};
 }
-cv::Point2d mid_right(const cv::Rect& r) {
+Point2d mid_right(const Rect& r) {
   return {static_cast<double>(r.x + r.width), r.y + r.height / 2.0};
 }
 
-void line_icon(cv::Mat& f, const cv::Rect& r, const cv::Scalar& c, int thickness, int halo) {
+void line_icon(FrameView& f, const Rect& r, const Scalar& c, int thickness, int halo) {
   if (halo > 0)
     draw_segment_with_halo(f, mid_left(r), mid_right(r), r, c, thickness, palette::kHalo, halo);
   else
@@ -42,71 +41,68 @@ std::string edge_names(LegendShape shape) {
 
 std::vector<Entry> entries(LegendKind kind, LegendShape shape = {}) {
   std::vector<Entry> e;
-  auto cells = [](cv::Mat& f, const cv::Rect& r, const Typography&) {
+  auto cells = [](FrameView& f, const Rect& r, const Typography&) {
     const int s = r.height;
-    cv::rectangle(f, {r.x, r.y, s, s}, cv::Scalar(60, 60, 230), cv::FILLED);
-    cv::rectangle(f, {r.x + s, r.y, s, s}, palette::kEmptyCell, cv::FILLED);
-    cv::rectangle(f, {r.x, r.y, 2 * s, s}, palette::kGridLine, 1);
-    cv::line(f, {r.x + s, r.y}, {r.x + s, r.y + s - 1}, palette::kGridLine, 1);
+    f.rectangle({r.x, r.y, s, s}, Scalar(60, 60, 230), FILLED);
+    f.rectangle({r.x + s, r.y, s, s}, palette::kEmptyCell, FILLED);
+    f.rectangle({r.x, r.y, 2 * s, s}, palette::kGridLine, 1);
+    f.line({r.x + s, r.y}, {r.x + s, r.y + s - 1}, palette::kGridLine, 1);
   };
-  auto outside = [](cv::Mat& f, const cv::Rect& r, const Typography&) {
-    cv::rectangle(f, {r.x, r.y, 2 * r.height, r.height}, palette::kOutsideCanvas, cv::FILLED);
+  auto outside = [](FrameView& f, const Rect& r, const Typography&) {
+    f.rectangle({r.x, r.y, 2 * r.height, r.height}, palette::kOutsideCanvas, FILLED);
   };
   if (kind == LegendKind::triangle) {
-    e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
                    line_icon(f, r, palette::kOutline, t.px(2), 0);
                  },
                  shape.polygon ? "polygon outline (snapped)" : "triangle outline (snapped)"});
-    e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
                    line_icon(f, r, palette::kScanline, t.px(2), t.px(1));
                  },
                  "current scanline"});
-    e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
                    for (int i = 0; i < 3; ++i) {
-                     const cv::Rect part(r.x + i * r.width / 3, r.y, r.width / 3 - t.px(2),
-                                         r.height);
+                     const Rect part(r.x + i * r.width / 3, r.y, r.width / 3 - t.px(2), r.height);
                      line_icon(f, part, palette::edge_colour(i), t.px(3), t.px(1));
                    }
                  },
                  "edges " + edge_names(shape) + " (bold: active)"});
-    e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
-                   const cv::Point c(r.x + r.height / 2 + t.px(2), r.y + r.height / 2);
-                   cv::circle(f, c, r.height / 2, palette::edge_colour(0), cv::FILLED, cv::LINE_AA);
-                   cv::circle(f, c, r.height / 2 - t.px(2), cv::Scalar(60, 60, 230), cv::FILLED,
-                              cv::LINE_AA);
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
+                   const Point c(r.x + r.height / 2 + t.px(2), r.y + r.height / 2);
+                   f.circle(c, r.height / 2, palette::edge_colour(0), FILLED, LINE_AA);
+                   f.circle(c, r.height / 2 - t.px(2), Scalar(60, 60, 230), FILLED, LINE_AA);
                  },
                  "active point: edge meets row, x"});
-    e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
-                   const cv::Rect box(r.x + t.px(2), r.y + t.px(2), r.width - t.px(4),
-                                      r.height - t.px(4));
-                   cv::rectangle(f, box, palette::kHalo, t.px(4));
-                   cv::rectangle(f, box, palette::kSpan, t.px(2));
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
+                   const Rect box(r.x + t.px(2), r.y + t.px(2), r.width - t.px(4),
+                                  r.height - t.px(4));
+                   f.rectangle(box, palette::kHalo, t.px(4));
+                   f.rectangle(box, palette::kSpan, t.px(2));
                  },
                  "span: the pixels of this row"});
-    e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
-                   const cv::Point c(r.x + r.height / 2 + t.px(2), r.y + r.height / 2);
-                   cv::circle(f, c, r.height / 2, palette::kHalo, cv::FILLED, cv::LINE_AA);
-                   cv::circle(f, c, r.height / 2 - t.px(2), cv::Scalar(0, 0, 255), cv::FILLED,
-                              cv::LINE_AA);
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
+                   const Point c(r.x + r.height / 2 + t.px(2), r.y + r.height / 2);
+                   f.circle(c, r.height / 2, palette::kHalo, FILLED, LINE_AA);
+                   f.circle(c, r.height / 2 - t.px(2), Scalar(0, 0, 255), FILLED, LINE_AA);
                  },
                  "vertex, in its colour"});
     e.push_back({cells, "pixel filled (final colour) / not"});
-    e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
                    const int s = r.height;
                    for (int i = 0; i < 2; ++i) {
-                     cv::rectangle(f, {r.x + i * s, r.y, s + 1, s}, palette::kGridLine, 1);
-                     cv::circle(f, {r.x + i * s + s / 2, r.y + s / 2}, std::max(1, t.px(1.5)),
-                                palette::kCentreOnLight, cv::FILLED, cv::LINE_AA);
+                     f.rectangle({r.x + i * s, r.y, s + 1, s}, palette::kGridLine, 1);
+                     f.circle({r.x + i * s + s / 2, r.y + s / 2}, std::max(1, t.px(1.5)),
+                              palette::kCentreOnLight, FILLED, LINE_AA);
                    }
                  },
                  "pixel grid and centres (big cells)"});
     e.push_back({outside, "outside the canvas"});
   } else {
-    e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
                    line_icon(f, r, palette::kCurrentTriangle, t.px(3), t.px(1));
                  },
                  "triangle drawn last (highlighted)"});
-    e.push_back({[](cv::Mat& f, const cv::Rect& r, const Typography& t) {
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
                    line_icon(f, r, palette::kBatchOutline, t.px(1), 0);
                  },
                  "the other triangles of this step"});
@@ -129,12 +125,12 @@ int legend_height(const Typography& type, LegendKind kind) {
   return type.line_height(TextStyle::small) * (rows + 1) + type.px(6);
 }
 
-void draw_legend(cv::Mat& frame, const cv::Rect& area, const Typography& type, LegendKind kind,
+void draw_legend(FrameView& frame, const Rect& area, const Typography& type, LegendKind kind,
                  LegendShape shape) {
   const std::vector<Entry> list = entries(kind, shape);
   const int h = legend_height(type, kind);
   int y = area.y + area.height - h;
-  cv::line(frame, {area.x, y}, {area.x + area.width, y}, palette::kPanelBorder, 1);
+  frame.line({area.x, y}, {area.x + area.width, y}, palette::kPanelBorder, 1);
   y += type.px(6);
   type.draw(frame, "Legend", {area.x, y}, TextStyle::small, palette::kMutedText);
   y += type.line_height(TextStyle::small);

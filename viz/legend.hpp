@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 #include "viz/typography.hpp"
 
@@ -23,7 +23,7 @@ std::vector<std::string> legend_texts(LegendKind kind, LegendShape shape = {});
 
 int legend_height(const Typography& type, LegendKind kind);
 // Draws the legend in `area`, bottom-aligned.
-void draw_legend(cv::Mat& frame, const cv::Rect& area, const Typography& type, LegendKind kind,
+void draw_legend(FrameView& frame, const Rect& area, const Typography& type, LegendKind kind,
                  LegendShape shape = {});
 
 }  // namespace scantrace::viz

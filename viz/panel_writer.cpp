@@ -2,23 +2,21 @@
 
 #include <algorithm>
 
-#include <opencv2/imgproc.hpp>
-
-#include "viz/opencv_image.hpp"
+#include "src/image.hpp"
 #include "viz/palette.hpp"
 
 namespace scantrace::viz {
 
-void draw_swatch(cv::Mat& frame, cv::Rect where, const Color& c) {
-  const cv::Scalar bgr(to_byte(static_cast<float>(c.b)), to_byte(static_cast<float>(c.g)),
-                       to_byte(static_cast<float>(c.r)));
-  cv::rectangle(frame, where, bgr, cv::FILLED);
-  cv::rectangle(frame, where, palette::kMutedText, 1);
+void draw_swatch(FrameView& frame, Rect where, const Color& c) {
+  const Scalar bgr(to_byte(static_cast<float>(c.b)), to_byte(static_cast<float>(c.g)),
+                   to_byte(static_cast<float>(c.r)));
+  frame.rectangle(where, bgr, FILLED);
+  frame.rectangle(where, palette::kMutedText, 1);
 }
 
-PanelWriter::PanelWriter(cv::Mat& frame, cv::Rect area, const Typography& type)
-    : frame_(frame(area & cv::Rect(0, 0, frame.cols, frame.rows))),
-      area_(0, 0, frame_.cols, frame_.rows),
+PanelWriter::PanelWriter(FrameView& frame, Rect area, const Typography& type)
+    : frame_(frame(area & Rect(0, 0, frame.width(), frame.height()))),
+      area_(0, 0, frame_.width(), frame_.height()),
       type_(type),
       y_(0) {}
 
@@ -31,12 +29,11 @@ void PanelWriter::heading(const std::string& text) {
   y_ += type_.line_height(TextStyle::heading) + type_.px(2);
 }
 
-void PanelWriter::paragraph(const std::string& text, TextStyle style, const cv::Scalar& colour) {
+void PanelWriter::paragraph(const std::string& text, TextStyle style, const Scalar& colour) {
   for (const std::string& l : type_.wrap(text, style, area_.width)) line(l, style, colour);
 }
 
-void PanelWriter::line(const std::string& text, TextStyle style, const cv::Scalar& colour,
-                       int indent) {
+void PanelWriter::line(const std::string& text, TextStyle style, const Scalar& colour, int indent) {
   type_.draw(frame_, text, {area_.x + indent, y_}, style, colour);
   y_ += type_.line_height(style);
 }
@@ -74,13 +71,11 @@ void PanelWriter::table(const std::vector<TableColumn>& columns,
   for (const TableRow& r : rows) {
     const int pad = type_.px(2);
     if (r.highlighted)
-      cv::rectangle(
-          frame_,
+      frame_.rectangle(
           {area_.x, y_ - pad, std::min(at - gutter, area_.x + area_.width) - area_.x, row_height},
-          palette::kHighlightRow, cv::FILLED);
+          palette::kHighlightRow, FILLED);
     if (r.marker)
-      cv::rectangle(frame_, {area_.x, y_ - pad, marker_width, row_height - pad}, *r.marker,
-                    cv::FILLED);
+      frame_.rectangle({area_.x, y_ - pad, marker_width, row_height - pad}, *r.marker, FILLED);
     for (std::size_t c = 0; c < columns.size() && c < r.cells.size(); ++c)
       type_.draw(frame_, r.cells[c], {place(c, r.cells[c], body), y_}, body,
                  r.muted ? palette::kMutedText : palette::kText);
@@ -98,8 +93,7 @@ void PanelWriter::swatch(const Color& c, const std::string& text, TextStyle styl
 void PanelWriter::formula(const std::vector<std::string>& lines) {
   const int pad = type_.px(6);
   const int h = static_cast<int>(lines.size()) * type_.line_height(TextStyle::body) + pad;
-  cv::rectangle(frame_, {area_.x, y_ - pad, area_.width, h + pad}, palette::kFormulaBox,
-                cv::FILLED);
+  frame_.rectangle({area_.x, y_ - pad, area_.width, h + pad}, palette::kFormulaBox, FILLED);
   for (const std::string& l : lines) line(l, TextStyle::body, palette::kText, pad);
   y_ += pad;
 }

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 #include "src/color.hpp"
 #include "viz/palette.hpp"
@@ -20,19 +20,19 @@ struct TableColumn {
 
 struct TableRow {
   std::vector<std::string> cells;
-  std::optional<cv::Scalar> marker;  // a colour bar before the row (an edge's colour)
-  bool highlighted = false;          // pale background: the entry this step is about
-  bool muted = false;                // grey text: no longer (or not yet) in play
+  std::optional<Scalar> marker;  // a colour bar before the row (an edge's colour)
+  bool highlighted = false;      // pale background: the entry this step is about
+  bool muted = false;            // grey text: no longer (or not yet) in play
 };
 
 // Everything is drawn into the area only (a view of the frame, in the area's own coordinates), so
 // a text that runs long is cut at the area's edge instead of painting over its neighbours.
 class PanelWriter {
  public:
-  PanelWriter(cv::Mat& frame, cv::Rect area, const Typography& type);
+  PanelWriter(FrameView& frame, Rect area, const Typography& type);
 
   // For drawings of a caller's own, in the same coordinates as y() and left().
-  cv::Mat& canvas() { return frame_; }
+  FrameView& canvas() { return frame_; }
   int y() const { return y_; }
   int bottom() const { return area_.height; }
   int left() const { return 0; }
@@ -44,10 +44,10 @@ class PanelWriter {
   void heading(const std::string& text);
   // Wrapped to the panel's width.
   void paragraph(const std::string& text, TextStyle style = TextStyle::body,
-                 const cv::Scalar& colour = palette::kText);
+                 const Scalar& colour = palette::kText);
   // One line, never wrapped (text that is cut by the panel edge is the caller's mistake).
   void line(const std::string& text, TextStyle style = TextStyle::body,
-            const cv::Scalar& colour = palette::kText, int indent = 0);
+            const Scalar& colour = palette::kText, int indent = 0);
   void table(const std::vector<TableColumn>& columns, const std::vector<TableRow>& rows);
   // A colour sample followed by its text.
   void swatch(const Color& c, const std::string& text, TextStyle style = TextStyle::body);
@@ -55,13 +55,13 @@ class PanelWriter {
   void formula(const std::vector<std::string>& lines);
 
  private:
-  cv::Mat frame_;  // the area of the frame (shares its pixels)
-  cv::Rect area_;
+  FrameView frame_;  // the area of the frame
+  Rect area_;
   const Typography& type_;
   int y_;
 };
 
 // A filled square of colour `c` (RGB in [0, 1]) with a thin border.
-void draw_swatch(cv::Mat& frame, cv::Rect where, const Color& c);
+void draw_swatch(FrameView& frame, Rect where, const Color& c);
 
 }  // namespace scantrace::viz

@@ -7,10 +7,12 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "io/atomic_write.hpp"
 #include "io/interrupt.hpp"
 #include "viz/frame_directory.hpp"
 #include "viz/html_player.hpp"
 #include "viz/replayer.hpp"
+#include "viz/svg_frame.hpp"
 #include "viz/video_writer.hpp"
 
 namespace scantrace::viz {
@@ -56,6 +58,9 @@ void validate(const ReplayOptions& o) {
                     o.size.height));
   if (!(o.fps > 0 && o.fps <= 240)) throw std::invalid_argument("fps must be in (0, 240]");
   if (!(o.hold > 0 && o.hold <= 60)) throw std::invalid_argument("hold must be in (0, 60] seconds");
+  if (o.frame_format != "png" && o.frame_format != "svg")
+    throw std::invalid_argument(
+        fmt::format("--format: \"{}\" is neither png nor svg", o.frame_format));
   if (o.plan.rows_per_step < 0) throw std::invalid_argument("rows per step must be >= 0");
 }
 
@@ -68,9 +73,12 @@ OutputKind output_kind(const std::filesystem::path& out) {
   const std::string ext = out.extension().string();
   if (ext == ".mp4" || ext == ".MP4") return OutputKind::video;
   if (ext == ".html" || ext == ".htm" || ext == ".HTML") return OutputKind::html;
+  if (ext == ".svg" || ext == ".SVG") return OutputKind::svg;
   if (ext.empty()) return OutputKind::frames;
   throw std::invalid_argument(
-      fmt::format("{}: the output must be an .mp4 file, an .html page or a directory (DIR/)", s));
+      fmt::format("{}: the output must be an .mp4 file, an .html page, an .svg file or a "
+                  "directory (DIR/)",
+                  s));
 }
 
 ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
@@ -112,6 +120,35 @@ ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
     result.format = h.format;
     result.frames = h.steps;
     result.bytes = h.bytes;
+    return result;
+  }
+  if (options.frame_format == "svg" &&
+      (result.kind == OutputKind::video || result.kind == OutputKind::html))
+    throw std::invalid_argument(fmt::format(
+        "{}: --format svg writes SVG frames to a directory (-o DIR/) or one step to OUT.svg",
+        out.string()));
+  if (result.kind == OutputKind::svg) {
+    if (result.steps != 1)
+      throw std::invalid_argument(fmt::format(
+          "{}: an .svg file holds one step and the replay has {} (choose one with --steps N, or "
+          "write a directory: -o DIR/ --format svg)",
+          out.string(), result.steps));
+    write_file_atomically(out, to_svg(replayer.display_list(first)));
+    result.format = "svg";
+    result.frames = 1;
+    return result;
+  }
+  if (result.kind == OutputKind::frames && options.frame_format == "svg") {
+    FrameDirectory dir(out, options.size, first + 1, "svg");
+    for (std::size_t i = first; i <= last; ++i) {
+      check_interrupt();
+      dir.write_document(to_svg(replayer.display_list(i)));
+      if (progress) progress->update(dir.frames(), work);
+    }
+    dir.commit();
+    if (progress) progress->finish();
+    result.format = dir.format();
+    result.frames = dir.frames();
     return result;
   }
   std::unique_ptr<FrameSink> sink;

@@ -41,20 +41,23 @@ struct ReplayOptions {
   std::size_t max_frames = kDefaultMaxFrames;
   // A pixel ringed on every frame that shows the canvas (`why --explain`: the pixel asked about).
   std::optional<CanvasPixel> marked_pixel{};
+  // A frame directory's files: "png" (OpenCV's raster) or "svg" (viz/svg_frame.hpp).
+  std::string frame_format = "png";
 };
 
 // Throws std::invalid_argument naming the option that is out of range.
 void validate(const ReplayOptions& options);
 
-enum class OutputKind { video, frames, html };
-// ".mp4" is a video; ".html" (".htm") a self-contained interactive page (viz/html_player.hpp); a
-// path ending in '/', an existing directory or a name without extension is a frame directory;
-// anything else throws std::invalid_argument.
+enum class OutputKind { video, frames, html, svg };
+// ".mp4" is a video; ".html" (".htm") a self-contained interactive page (viz/html_player.hpp);
+// ".svg" the SVG of one step (the range must hold exactly one); a path ending in '/', an existing
+// directory or a name without extension is a frame directory; anything else throws
+// std::invalid_argument.
 OutputKind output_kind(const std::filesystem::path& out);
 
 struct ReplayResult {
   OutputKind kind = OutputKind::video;
-  std::string format;           // "h264", "mpeg4", "png" or (html) the frames' "webp"
+  std::string format;           // "h264", "mpeg4", "png", "svg" or (html) the frames' "webp"
   std::size_t steps_total = 0;  // steps in the plan
   std::size_t steps = 0;        // rendered (the selected range)
   std::size_t frames = 0;       // written (video: steps times their hold; frames: = steps)

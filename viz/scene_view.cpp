@@ -5,7 +5,6 @@
 #include <string>
 
 #include <spdlog/fmt/fmt.h>
-#include <opencv2/imgproc.hpp>
 
 #include "viz/cards.hpp"
 #include "viz/grid_view.hpp"
@@ -28,20 +27,19 @@ std::string depth_text(const std::optional<double>& d) {
 // A bar from the farthest depth (left) to the nearest (right), filled up to the depth reached.
 void depth_bar(PanelWriter& w, const Typography& type, const SceneSummary& scene,
                const std::optional<double>& current) {
-  cv::Mat& frame = w.canvas();
+  FrameView& frame = w.canvas();
   if (!scene.min_depth || !scene.max_depth) return;
   const double far = *scene.max_depth, near = *scene.min_depth;
   const int h = type.px(12);
-  const cv::Rect bar(w.left(), w.y(), w.width(), h);
-  cv::rectangle(frame, bar, palette::kPanelBorder, cv::FILLED);
+  const Rect bar(w.left(), w.y(), w.width(), h);
+  frame.rectangle(bar, palette::kPanelBorder, FILLED);
   if (current) {
     const double f = far > near ? (far - *current) / (far - near) : 1.0;
     const int x = bar.x + static_cast<int>(std::clamp(f, 0.0, 1.0) * bar.width);
-    cv::rectangle(frame, {bar.x, bar.y, x - bar.x, h}, palette::kCurrentTriangle, cv::FILLED);
-    cv::line(frame, {x, bar.y - type.px(3)}, {x, bar.y + h + type.px(3)}, palette::kText,
-             type.px(2));
+    frame.rectangle({bar.x, bar.y, x - bar.x, h}, palette::kCurrentTriangle, FILLED);
+    frame.line({x, bar.y - type.px(3)}, {x, bar.y + h + type.px(3)}, palette::kText, type.px(2));
   }
-  cv::rectangle(frame, bar, palette::kMutedText, 1);
+  frame.rectangle(bar, palette::kMutedText, 1);
   w.gap(16);
   const std::string left = fmt::format("far: depth {}", number(far, 3));
   const std::string right = fmt::format("near: depth {}", number(near, 3));
@@ -68,8 +66,8 @@ SceneSummary summarize_scene(const trace::Trace& trace, const StepPlan& plan) {
   return s;
 }
 
-void draw_scene_view(cv::Mat& frame, const ViewGeometry& geometry, const Typography& type,
-                     cv::Size canvas, const CanvasState& state, const trace::Trace& trace,
+void draw_scene_view(FrameView& frame, const ViewGeometry& geometry, const Typography& type,
+                     Size canvas, const CanvasState& state, const trace::Trace& trace,
                      const StepPlan& plan, const Step& step) {
   GridView view(frame, geometry, type, canvas);
   view.cells(state);
@@ -78,12 +76,12 @@ void draw_scene_view(cv::Mat& frame, const ViewGeometry& geometry, const Typogra
   // there, crossed out (when cells are big enough to hold a mark).
   if (state.depth_test() && geometry.cell() >= 5) {
     const int r = std::max(1, static_cast<int>(geometry.cell() * 0.3));
-    for (const cv::Point& p : state.recent_rejections()) {
-      const cv::Point2d c = geometry.to_frame(p.x, p.y);
-      const cv::Point q(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)));
+    for (const Point& p : state.recent_rejections()) {
+      const Point2d c = geometry.to_frame(p.x, p.y);
+      const Point q(static_cast<int>(std::lround(c.x)), static_cast<int>(std::lround(c.y)));
       if (!geometry.view().contains(q)) continue;
-      cv::line(frame, q + cv::Point(-r, -r), q + cv::Point(r, r), palette::kRejected, 1);
-      cv::line(frame, q + cv::Point(-r, r), q + cv::Point(r, -r), palette::kRejected, 1);
+      frame.line(q + Point(-r, -r), q + Point(r, r), palette::kRejected, 1);
+      frame.line(q + Point(-r, r), q + Point(r, -r), palette::kRejected, 1);
     }
   }
   if (step.kind != StepKind::painter_batch) return;
@@ -102,7 +100,7 @@ void draw_scene_view(cv::Mat& frame, const ViewGeometry& geometry, const Typogra
   }
 }
 
-void draw_scene_panel(cv::Mat& frame, const cv::Rect& area, const Typography& type,
+void draw_scene_panel(FrameView& frame, const Rect& area, const Typography& type,
                       const trace::Trace& trace, const StepPlan& plan, const SceneSummary& scene,
                       const Step& step, const CanvasState& state) {
   PanelWriter w(frame, area, type);

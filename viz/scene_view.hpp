@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 #include "trace/trace.hpp"
 #include "viz/canvas_state.hpp"
@@ -23,11 +23,11 @@ struct SceneSummary {
 };
 SceneSummary summarize_scene(const trace::Trace& trace, const StepPlan& plan);
 
-void draw_scene_view(cv::Mat& frame, const ViewGeometry& geometry, const Typography& type,
-                     cv::Size canvas, const CanvasState& state, const trace::Trace& trace,
+void draw_scene_view(FrameView& frame, const ViewGeometry& geometry, const Typography& type,
+                     Size canvas, const CanvasState& state, const trace::Trace& trace,
                      const StepPlan& plan, const Step& step);
 
-void draw_scene_panel(cv::Mat& frame, const cv::Rect& area, const Typography& type,
+void draw_scene_panel(FrameView& frame, const Rect& area, const Typography& type,
                       const trace::Trace& trace, const StepPlan& plan, const SceneSummary& scene,
                       const Step& step, const CanvasState& state);
 

@@ -389,7 +389,7 @@ std::string explain_skip(const std::string& reason) {
   return fmt::format("Reason: {}.", reason);
 }
 
-int draw_triangle_panel(cv::Mat& frame, const cv::Rect& area, const Typography& type,
+int draw_triangle_panel(FrameView& frame, const Rect& area, const Typography& type,
                         const trace::Trace& trace, const Step& step) {
   PanelWriter w(frame, area, type);
   const TriangleBegin* b = find_begin(trace, step.triangle);

@@ -2,7 +2,7 @@
 // The right half of a triangle frame (docs/design.md §6): what the fill knows at this step — the
 // vertices, the edge table, the active edge table, the active points and their colours, the span,
 // and the formula being applied.
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 #include "trace/trace.hpp"
 #include "viz/replay_steps.hpp"
@@ -11,7 +11,7 @@
 namespace scantrace::viz {
 
 // Writes the panel for `step` (a triangle step) into `area`; returns the height it used.
-int draw_triangle_panel(cv::Mat& frame, const cv::Rect& area, const Typography& type,
+int draw_triangle_panel(FrameView& frame, const Rect& area, const Typography& type,
                         const trace::Trace& trace, const Step& step);
 
 // Why the fill gave up on a triangle, in a sentence (from a triangle_skipped reason).

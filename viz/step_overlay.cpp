@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include <spdlog/fmt/fmt.h>
-#include <opencv2/imgproc.hpp>
 
 #include "viz/palette.hpp"
 #include "viz/trace_lookup.hpp"
@@ -12,7 +11,7 @@
 namespace scantrace::viz {
 namespace {
 
-const cv::Scalar kSelection{255, 0, 255};  // magenta: no edge, span or fill colour uses it
+const Scalar kSelection{255, 0, 255};  // magenta: no edge, span or fill colour uses it
 
 std::string colour_text(const Color& c) {
   auto byte = [](double v) { return static_cast<int>(std::lround(255 * std::clamp(v, 0.0, 1.0))); };
@@ -37,25 +36,25 @@ bool written_by_step(const StepPlan& plan, std::size_t index, int triangle, std:
 
 }  // namespace
 
-std::optional<CanvasPixel> pixel_at(const ViewGeometry& g, cv::Point p, cv::Size canvas) {
+std::optional<CanvasPixel> pixel_at(const ViewGeometry& g, Point p, Size canvas) {
   if (!g.view().contains(p)) return std::nullopt;
   const CanvasPixel px{g.pixel_x(p.x), g.pixel_y(p.y)};
   if (px.x < 0 || px.y < 0 || px.x >= canvas.width || px.y >= canvas.height) return std::nullopt;
   return px;
 }
 
-void mark_pixel(cv::Mat& frame, const ViewGeometry& g, CanvasPixel p) {
-  const cv::Point2d a = g.to_frame(p.x - 0.5, p.y - 0.5), b = g.to_frame(p.x + 0.5, p.y + 0.5);
-  const cv::Point2d c = (a + b) * 0.5;
+void mark_pixel(FrameView& frame, const ViewGeometry& g, CanvasPixel p) {
+  const Point2d a = g.to_frame(p.x - 0.5, p.y - 0.5), b = g.to_frame(p.x + 0.5, p.y + 0.5);
+  const Point2d c = (a + b) * 0.5;
   // Small cells get a ring larger than the cell, so the pixel stays findable.
   const double half = std::max((b.x - a.x) / 2 + 2, 6.0);
-  const cv::Rect ring(
-      cv::Point(static_cast<int>(std::floor(c.x - half)), static_cast<int>(std::floor(c.y - half))),
-      cv::Point(static_cast<int>(std::ceil(c.x + half)), static_cast<int>(std::ceil(c.y + half))));
-  cv::Mat view = frame(g.view() & cv::Rect(0, 0, frame.cols, frame.rows));
-  const cv::Rect local = ring - g.view().tl();
-  cv::rectangle(view, local, palette::kHalo, 4);
-  cv::rectangle(view, local, kSelection, 2);
+  const Rect ring(
+      Point(static_cast<int>(std::floor(c.x - half)), static_cast<int>(std::floor(c.y - half))),
+      Point(static_cast<int>(std::ceil(c.x + half)), static_cast<int>(std::ceil(c.y + half))));
+  FrameView view = frame(g.view() & Rect(0, 0, frame.width(), frame.height()));
+  const Rect local = ring - g.view().tl();
+  view.rectangle(local, palette::kHalo, 4);
+  view.rectangle(local, kSelection, 2);
 }
 
 std::vector<std::string> pixel_history_lines(const trace::Trace& trace, const StepPlan& plan,
@@ -87,7 +86,7 @@ std::vector<std::string> pixel_history_lines(const trace::Trace& trace, const St
   return lines;
 }
 
-void draw_history_box(cv::Mat& frame, const cv::Rect& area, const Typography& type,
+void draw_history_box(FrameView& frame, const Rect& area, const Typography& type,
                       const std::vector<std::string>& lines) {
   // The newest writes matter most: when the box would be taller than half the panel, the first
   // writes give way (the header line stays).
@@ -100,9 +99,9 @@ void draw_history_box(cv::Mat& frame, const cv::Rect& area, const Typography& ty
     shown.insert(shown.begin() + 1, "...");
   }
   const int h = static_cast<int>(shown.size()) * line + 2 * pad;
-  const cv::Rect box(area.x, area.y + area.height - h, area.width, h);
-  cv::rectangle(frame, box, palette::kPanel, cv::FILLED);
-  cv::rectangle(frame, box, kSelection, 2);
+  const Rect box(area.x, area.y + area.height - h, area.width, h);
+  frame.rectangle(box, palette::kPanel, FILLED);
+  frame.rectangle(box, kSelection, 2);
   int y = box.y + pad;
   for (const std::string& s : shown) {
     type.draw(frame, s, {box.x + pad, y}, s == shown.front() ? TextStyle::strong : TextStyle::small,
@@ -125,16 +124,16 @@ std::vector<std::string> key_help_lines() {
           "q / Esc              quit"};
 }
 
-void draw_key_help(cv::Mat& frame, const Typography& type) {
+void draw_key_help(FrameView& frame, const Typography& type) {
   const std::vector<std::string> lines = key_help_lines();
   const int line = type.line_height(TextStyle::body), pad = type.px(14);
   int w = 0;
   for (const std::string& s : lines) w = std::max(w, type.width(s, TextStyle::body));
-  const cv::Size size(w + 2 * pad, static_cast<int>(lines.size()) * line + 2 * pad);
-  const cv::Rect box((frame.cols - size.width) / 2, (frame.rows - size.height) / 2, size.width,
-                     size.height);
-  cv::rectangle(frame, box, palette::kTitleBar, cv::FILLED);
-  cv::rectangle(frame, box, palette::kScanline, 2);
+  const Size size(w + 2 * pad, static_cast<int>(lines.size()) * line + 2 * pad);
+  const Rect box((frame.width() - size.width) / 2, (frame.height() - size.height) / 2, size.width,
+                 size.height);
+  frame.rectangle(box, palette::kTitleBar, FILLED);
+  frame.rectangle(box, palette::kScanline, 2);
   int y = box.y + pad;
   for (const std::string& s : lines) {
     type.draw(frame, s, {box.x + pad, y}, TextStyle::body, palette::kTitleText);
@@ -142,15 +141,16 @@ void draw_key_help(cv::Mat& frame, const Typography& type) {
   }
 }
 
-cv::Mat status_strip(int width, int height, const Typography& type, const std::string& left,
-                     const std::string& right) {
-  cv::Mat strip(height, width, CV_8UC3, palette::kTitleBar);
+Frame compose_status_strip(int width, int height, const Typography& type, const std::string& left,
+                           const std::string& right) {
+  Frame frame({width, height}, palette::kTitleBar);
+  FrameView strip(frame);
   const int top = (height - type.measure("A", TextStyle::small).height) / 2;
   const int x = type.draw(strip, left, {type.px(10), top}, TextStyle::strong, palette::kTitleText);
   const int rw = type.width(right, TextStyle::small);
   if (width - type.px(10) - rw > x + type.px(20))
     type.draw(strip, right, {width - type.px(10) - rw, top}, TextStyle::small, palette::kTitleText);
-  return strip;
+  return frame;
 }
 
 }  // namespace scantrace::viz

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 #include "trace/trace.hpp"
 #include "viz/replay_steps.hpp"
@@ -18,11 +18,11 @@ namespace scantrace::viz {
 
 // The canvas pixel shown at frame point `p`, when `p` lies on the magnified canvas `g` and the
 // pixel on the canvas (`canvas` pixels wide and high).
-std::optional<CanvasPixel> pixel_at(const ViewGeometry& g, cv::Point p, cv::Size canvas);
+std::optional<CanvasPixel> pixel_at(const ViewGeometry& g, Point p, Size canvas);
 
 // A ring around the pixel's cell (at least a few frame pixels wide, so a pixel is visible even
 // when cells are one frame pixel), clipped to the view.
-void mark_pixel(cv::Mat& frame, const ViewGeometry& g, CanvasPixel pixel);
+void mark_pixel(FrameView& frame, const ViewGeometry& g, CanvasPixel pixel);
 
 // The history of `pixel` up to and including step `index` of `plan`, from the trace: every write
 // in drawing order — which triangle (face), the row and span that wrote it, with which colour.
@@ -30,15 +30,15 @@ std::vector<std::string> pixel_history_lines(const trace::Trace& trace, const St
                                              std::size_t index, CanvasPixel pixel);
 
 // `lines` on a boxed panel at the bottom of `area` (the side panel), over what is there.
-void draw_history_box(cv::Mat& frame, const cv::Rect& area, const Typography& type,
+void draw_history_box(FrameView& frame, const Rect& area, const Typography& type,
                       const std::vector<std::string>& lines);
 
 // The keys of the player, boxed in the middle of the frame.
-void draw_key_help(cv::Mat& frame, const Typography& type);
+void draw_key_help(FrameView& frame, const Typography& type);
 std::vector<std::string> key_help_lines();
 
 // A strip `height` high: `left` (the step counter, a prompt) and `right` (the key hint).
-cv::Mat status_strip(int width, int height, const Typography& type, const std::string& left,
-                     const std::string& right);
+Frame compose_status_strip(int width, int height, const Typography& type, const std::string& left,
+                           const std::string& right);
 
 }  // namespace scantrace::viz

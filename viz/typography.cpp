@@ -4,11 +4,9 @@
 #include <cmath>
 #include <sstream>
 
-#include <opencv2/imgproc.hpp>
-
 namespace scantrace::viz {
 
-Typography::Typography(cv::Size frame)
+Typography::Typography(Size frame)
     // Wide or tall frames scale by their tighter side, so a text never outgrows its panel.
     : unit_(std::min(frame.height / 720.0, frame.width / 1280.0)) {}
 
@@ -45,13 +43,13 @@ bool Typography::bold(TextStyle style) {
   return style == TextStyle::strong || style == TextStyle::heading;
 }
 
-int Typography::font(TextStyle style) const {
-  return style == TextStyle::small ? cv::FONT_HERSHEY_SIMPLEX : cv::FONT_HERSHEY_DUPLEX;
+HersheyFont Typography::font(TextStyle style) const {
+  return style == TextStyle::small ? HersheyFont::simplex : HersheyFont::duplex;
 }
 
-cv::Size Typography::measure(const std::string& text, TextStyle style) const {
+Size Typography::measure(const std::string& text, TextStyle style) const {
   int baseline = 0;
-  cv::Size s = cv::getTextSize(text, font(style), scale(style), thickness(style), &baseline);
+  Size s = hershey_text_size(text, font(style), scale(style), thickness(style), &baseline);
   if (bold(style)) s.width += std::max(1, px(0.8));
   return s;
 }
@@ -59,45 +57,44 @@ cv::Size Typography::measure(const std::string& text, TextStyle style) const {
 int Typography::box_height(TextStyle style) const {
   int baseline = 0;
   const int ascent =
-      cv::getTextSize("A", font(style), scale(style), thickness(style), &baseline).height;
+      hershey_text_size("A", font(style), scale(style), thickness(style), &baseline).height;
   return ascent + baseline;
 }
 
 int Typography::line_height(TextStyle style) const {
   int baseline = 0;
-  const cv::Size s = cv::getTextSize("Ag", font(style), scale(style), thickness(style), &baseline);
+  const Size s = hershey_text_size("Ag", font(style), scale(style), thickness(style), &baseline);
   return s.height + baseline + px(style == TextStyle::small ? 3 : 5);
 }
 
-int Typography::draw(cv::Mat& image, const std::string& text, cv::Point top_left, TextStyle style,
-                     const cv::Scalar& colour) const {
+int Typography::draw(FrameView& image, const std::string& text, Point top_left, TextStyle style,
+                     const Scalar& colour) const {
   // Lines of one style share one ascent ("A"), so mixed texts on one line share a baseline.
   int baseline = 0;
   const int ascent =
-      cv::getTextSize("A", font(style), scale(style), thickness(style), &baseline).height;
-  const cv::Point origin(top_left.x, top_left.y + ascent);
-  cv::putText(image, text, origin, font(style), scale(style), colour, thickness(style),
-              cv::LINE_AA);
+      hershey_text_size("A", font(style), scale(style), thickness(style), &baseline).height;
+  const Point origin(top_left.x, top_left.y + ascent);
+  image.text(text, origin, font(style), scale(style), colour, thickness(style), LINE_AA);
   if (bold(style))
-    cv::putText(image, text, origin + cv::Point(std::max(1, px(0.8)), 0), font(style), scale(style),
-                colour, thickness(style), cv::LINE_AA);
+    image.text(text, origin + Point(std::max(1, px(0.8)), 0), font(style), scale(style), colour,
+               thickness(style), LINE_AA);
   return top_left.x + measure(text, style).width;
 }
 
-void Typography::draw_boxed(cv::Mat& image, const std::string& text, cv::Point top_left,
-                            TextStyle style, const cv::Scalar& colour, const cv::Scalar& box,
-                            std::optional<cv::Scalar> border) const {
+void Typography::draw_boxed(FrameView& image, const std::string& text, Point top_left,
+                            TextStyle style, const Scalar& colour, const Scalar& box,
+                            std::optional<Scalar> border, std::optional<Mark> mark) const {
   const int m = px(3);
-  const cv::Rect r(top_left.x - m, top_left.y - m, width(text, style) + 2 * m,
-                   box_height(style) + 2 * m);
+  const Rect r(top_left.x - m, top_left.y - m, width(text, style) + 2 * m,
+               box_height(style) + 2 * m);
   // Keep in step with boxed_area.
-  cv::rectangle(image, r, box, cv::FILLED);
-  cv::rectangle(image, r, border.value_or(colour), border ? px(2) : 1, cv::LINE_AA);
+  image.rectangle(r, box, FILLED, LINE_8, std::move(mark));
+  image.rectangle(r, border.value_or(colour), border ? px(2) : 1, LINE_AA);
   draw(image, text, top_left, style, colour);
 }
 
-cv::Rect Typography::boxed_area(const std::string& text, cv::Point top_left, TextStyle style,
-                                bool bold_border) const {
+Rect Typography::boxed_area(const std::string& text, Point top_left, TextStyle style,
+                            bool bold_border) const {
   // draw_boxed's box is `m` around the text; its border line is centred on the box's edge and
   // anti-aliased one pixel wider.
   const int out = px(3) + (bold_border ? px(2) / 2 + 1 : 1);

@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include <opencv2/imgproc.hpp>
-
 namespace scantrace::viz {
 
-ViewGeometry::ViewGeometry(cv::Rect view, PixelBox region, double max_cell) : view_(view) {
+ViewGeometry::ViewGeometry(Rect view, PixelBox region, double max_cell) : view_(view) {
   if (region.empty()) region = {0, 0, 0, 0};
   const double w = static_cast<double>(region.width()), h = static_cast<double>(region.height());
   cell_ = std::min({view.width / w, view.height / h, max_cell});
@@ -23,7 +21,7 @@ ViewGeometry::ViewGeometry(cv::Rect view, PixelBox region, double max_cell) : vi
   }
 }
 
-cv::Point2d ViewGeometry::to_frame(double x, double y) const {
+Point2d ViewGeometry::to_frame(double x, double y) const {
   return {view_.x + (x - left_) * cell_, view_.y + (y - top_) * cell_};
 }
 
@@ -41,8 +39,7 @@ PixelBox ViewGeometry::visible() const {
           pixel_y(view_.y + view_.height - 1)};
 }
 
-std::optional<std::pair<cv::Point2d, cv::Point2d>> clip_segment(cv::Point2d p, cv::Point2d q,
-                                                                const cv::Rect2d& r) {
+std::optional<std::pair<Point2d, Point2d>> clip_segment(Point2d p, Point2d q, const Rect2d& r) {
   const double dx = q.x - p.x, dy = q.y - p.y;
   double t0 = 0, t1 = 1;
   const double ps[4] = {-dx, dx, -dy, dy};
@@ -59,36 +56,37 @@ std::optional<std::pair<cv::Point2d, cv::Point2d>> clip_segment(cv::Point2d p, c
       t1 = std::min(t1, t);
     if (t0 > t1) return std::nullopt;
   }
-  return std::make_pair(cv::Point2d{p.x + t0 * dx, p.y + t0 * dy},
-                        cv::Point2d{p.x + t1 * dx, p.y + t1 * dy});
+  return std::make_pair(Point2d{p.x + t0 * dx, p.y + t0 * dy},
+                        Point2d{p.x + t1 * dx, p.y + t1 * dy});
 }
 
 namespace {
 constexpr int kShift = 4;  // cv::line's fixed-point bits: positions to 1/16 pixel
 
-cv::Point fixed_point(cv::Point2d p) {
+Point fixed_point(Point2d p) {
   return {static_cast<int>(std::lround(p.x * (1 << kShift))),
           static_cast<int>(std::lround(p.y * (1 << kShift)))};
 }
 }  // namespace
 
-void draw_segment(cv::Mat& image, cv::Point2d p, cv::Point2d q, const cv::Rect& clip,
-                  const cv::Scalar& colour, int thickness) {
+void draw_segment(FrameView& image, Point2d p, Point2d q, const Rect& clip, const Scalar& colour,
+                  int thickness, std::optional<Mark> mark) {
   // Pixel centres of the frame are at integer positions; the clip box reaches half a pixel out.
-  const cv::Rect2d box(clip.x - 0.5, clip.y - 0.5, clip.width, clip.height);
+  const Rect2d box(clip.x - 0.5, clip.y - 0.5, clip.width, clip.height);
   const auto inside = clip_segment(p, q, box);
   if (!inside) return;
-  cv::Mat roi = image(clip);
-  const cv::Point2d o(clip.x, clip.y);
-  cv::line(roi, fixed_point(inside->first - o), fixed_point(inside->second - o), colour, thickness,
-           cv::LINE_AA, kShift);
+  // Drawn in the view's own area, as OpenCV drew it into a region of interest.
+  FrameView roi = image(clip);
+  const Point2d o(clip.x, clip.y);
+  roi.line(fixed_point(inside->first - o), fixed_point(inside->second - o), colour, thickness,
+           LINE_AA, kShift, std::move(mark));
 }
 
-void draw_segment_with_halo(cv::Mat& image, cv::Point2d p, cv::Point2d q, const cv::Rect& clip,
-                            const cv::Scalar& colour, int thickness, const cv::Scalar& halo,
-                            int halo_width) {
+void draw_segment_with_halo(FrameView& image, Point2d p, Point2d q, const Rect& clip,
+                            const Scalar& colour, int thickness, const Scalar& halo, int halo_width,
+                            std::optional<Mark> mark) {
   draw_segment(image, p, q, clip, halo, thickness + 2 * halo_width);
-  draw_segment(image, p, q, clip, colour, thickness);
+  draw_segment(image, p, q, clip, colour, thickness, std::move(mark));
 }
 
 }  // namespace scantrace::viz

@@ -6,7 +6,7 @@
 #include <optional>
 #include <utility>
 
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 namespace scantrace::viz {
 
@@ -29,34 +29,33 @@ class ViewGeometry {
   // Fits `region` into `view` (centred, cells square). Cells never exceed `max_cell` frame
   // pixels; from 4 px up they are a whole number of frame pixels, so grid lines stay crisp. The
   // view is then filled: pixels around the region are shown too.
-  ViewGeometry(cv::Rect view, PixelBox region, double max_cell);
+  ViewGeometry(Rect view, PixelBox region, double max_cell);
 
-  const cv::Rect& view() const { return view_; }
+  const Rect& view() const { return view_; }
   double cell() const { return cell_; }
   // Frame position of the canvas point (x, y).
-  cv::Point2d to_frame(double x, double y) const;
+  Point2d to_frame(double x, double y) const;
   // The canvas pixel shown at frame pixel (u, v) (which must lie in the view).
   std::int64_t pixel_x(int u) const;
   std::int64_t pixel_y(int v) const;
   PixelBox visible() const;  // every pixel with at least part of its cell in the view
 
  private:
-  cv::Rect view_;
+  Rect view_;
   double cell_ = 1;
   double left_ = 0, top_ = 0;  // canvas coordinates at the view's left and top edges
 };
 
 // The part of segment p-q inside `r` (Liang-Barsky), in double so that a vertex at 1e9 pixels
-// does not overflow OpenCV's integer coordinates; nullopt when nothing is inside.
-std::optional<std::pair<cv::Point2d, cv::Point2d>> clip_segment(cv::Point2d p, cv::Point2d q,
-                                                                const cv::Rect2d& r);
+// does not overflow the backends' integer coordinates; nullopt when nothing is inside.
+std::optional<std::pair<Point2d, Point2d>> clip_segment(Point2d p, Point2d q, const Rect2d& r);
 
-// cv::line with subpixel precision, clipped to `clip` first.
-void draw_segment(cv::Mat& image, cv::Point2d p, cv::Point2d q, const cv::Rect& clip,
-                  const cv::Scalar& colour, int thickness);
+// A line with subpixel precision (1/16 pixel, cv::line's shift 4), clipped to `clip` first.
+void draw_segment(FrameView& image, Point2d p, Point2d q, const Rect& clip, const Scalar& colour,
+                  int thickness, std::optional<Mark> mark = std::nullopt);
 // The same line drawn over a thicker `halo`, which keeps it visible on any background.
-void draw_segment_with_halo(cv::Mat& image, cv::Point2d p, cv::Point2d q, const cv::Rect& clip,
-                            const cv::Scalar& colour, int thickness, const cv::Scalar& halo,
-                            int halo_width);
+void draw_segment_with_halo(FrameView& image, Point2d p, Point2d q, const Rect& clip,
+                            const Scalar& colour, int thickness, const Scalar& halo, int halo_width,
+                            std::optional<Mark> mark = std::nullopt);
 
 }  // namespace scantrace::viz

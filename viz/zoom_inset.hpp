@@ -8,7 +8,7 @@
 // they are left out (the view never loses a vertex or an x value to them).
 #include <vector>
 
-#include <opencv2/core.hpp>
+#include "viz/frame.hpp"
 
 #include "trace/trace.hpp"
 #include "viz/canvas_state.hpp"
@@ -20,8 +20,8 @@ namespace scantrace::viz {
 
 // `placed` holds the view's markers and labels; the insets are added to it, and what was placed
 // inside them is returned (layers 1 and 2).
-std::vector<PlacedBox> draw_zoom_insets(cv::Mat& frame, const ViewGeometry& main,
-                                        const Typography& type, cv::Size canvas,
+std::vector<PlacedBox> draw_zoom_insets(FrameView& frame, const ViewGeometry& main,
+                                        const Typography& type, Size canvas,
                                         const CanvasState& state, const trace::TriangleBegin* b,
                                         const trace::EdgeTableEvent* table,
                                         const trace::Scanline& row, Placement& placed);

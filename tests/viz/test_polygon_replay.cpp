@@ -7,6 +7,7 @@
 #include "viz/canvas_state.hpp"
 #include "viz/frame_composer.hpp"
 #include "viz/legend.hpp"
+#include "viz/opencv/frame_raster.hpp"
 #include "viz/replay_steps.hpp"
 #include "viz_test_support.hpp"
 
@@ -62,7 +63,7 @@ TEST_CASE("every step of a polygon's replay composes into a frame", "[viz][polyg
     const viz::Step& step = plan.steps[i];
     if (step.kind == viz::StepKind::scanlines)
       state.paint_rows(t, 0, step.first_row, step.last_row);
-    const cv::Mat frame = composer.compose(step, i, state);
+    const cv::Mat frame = viz::rasterize(composer.compose(step, i, state));
     CHECK(frame.cols == 960);
     CHECK(frame.rows == 540);
   }

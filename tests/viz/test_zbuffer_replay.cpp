@@ -2,6 +2,8 @@
 // the replayed canvas must equal the rendered image, not a painter's overwrite.
 #include <catch2/catch.hpp>
 
+#include <opencv2/core.hpp>
+
 #include "trace/record.hpp"
 #include "viz/canvas_state.hpp"
 

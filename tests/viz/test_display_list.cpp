@@ -1,0 +1,207 @@
+// The display list (issue 32): every frame of a replay carries the marks its trace implies — one
+// per visible vertex, one per visible active point, the span's box, the scanline — at the places
+// the view's geometry puts them (computed here from the trace, not taken from the composer); and
+// the composer's text metrics are OpenCV's own, so a layout measured without OpenCV is the one
+// OpenCV draws.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <spdlog/fmt/fmt.h>
+#include <opencv2/imgproc.hpp>
+
+#include "trace/record.hpp"
+#include "viz/frame_sequence.hpp"
+#include "viz/hershey.hpp"
+#include "viz/trace_lookup.hpp"
+#include "viz/typography.hpp"
+#include "viz_test_support.hpp"
+
+using namespace scantrace;
+
+namespace {
+
+struct Case {
+  std::string name;
+  trace::Trace trace;
+};
+
+std::vector<Case> cases() {
+  std::vector<Case> out;
+  trace::TriangleInput course;
+  course.vertices = {Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}};
+  course.colors = {Color{1, 0, 0}, Color{0, 1, 0}, Color{0, 0, 1}};
+  course.width = course.height = 512;
+  out.push_back({"course triangle", test::record(course)});
+  out.push_back({"small", test::record(test::small_triangle())});
+  out.push_back({"medium", test::record(test::medium_triangle(), Shading::flat)});
+  trace::GeneralPolygonInput p;
+  p.contours = {{{10, 1}, {15.5, 18.2}, {1.3, 7.3}, {18.7, 7.3}, {4.5, 18.2}}};
+  p.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {1, 0, 1}};
+  p.width = p.height = 20;
+  FillOptions options;
+  options.winding_rule = WindingRule::non_zero;
+  out.push_back({"star", trace::record_polygon(p, options)});
+  return out;
+}
+
+viz::Point rounded(viz::Point2d p) {
+  return {int(std::lround(p.x)), int(std::lround(p.y))};
+}
+
+viz::Point2d centre(const viz::Rect& r) {
+  return {r.x + r.width / 2.0, r.y + r.height / 2.0};
+}
+
+std::vector<viz::Mark> main_view(const std::vector<viz::Mark>& marks, viz::MarkKind kind) {
+  std::vector<viz::Mark> out;
+  for (const viz::Mark& m : marks)
+    if (m.kind == kind && m.layer == 0) out.push_back(m);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every frame of a replay has the marks its trace implies", "[viz][display-list]") {
+  for (const Case& c : cases()) {
+    viz::StepOptions every_row;
+    every_row.rows_per_step = 1;
+    every_row.max_scanline_steps = 1 << 20;
+    viz::FrameSequence s(c.trace, every_row, {1280, 720}, "test");
+    const viz::Typography type(s.frame_size());
+    const trace::TriangleBegin& b = c.trace.triangle_begin(0);
+    const std::vector<Vec2>& corners = b.snapped.empty() ? b.vertices : b.snapped;
+    std::size_t scanline_frames = 0;
+    for (std::size_t i = 0; i < s.steps().size(); ++i) {
+      const viz::Step& step = s.steps()[i];
+      INFO(c.name << ", step " << i);
+      const viz::Frame f = s.frame(i);
+      CHECK(f.size() == viz::Size(1280, 720));
+      const std::vector<viz::Mark> marks = f.marks();
+      const std::optional<viz::ViewGeometry> g = s.geometry(i);
+      if (!g) continue;
+      const viz::Rect& view = g->view();
+
+      // One vertex mark per vertex the view shows, centred on it, named after it.
+      const std::vector<viz::Mark> vertices = main_view(marks, viz::MarkKind::vertex);
+      std::size_t visible = 0;
+      for (std::size_t v = 0; v < corners.size(); ++v) {
+        const viz::Point q = rounded(g->to_frame(corners[v].x, corners[v].y));
+        if (!view.contains(q)) continue;
+        ++visible;
+        const std::string name = fmt::format("v{}", v);
+        INFO("vertex " << name << " at " << q.x << "," << q.y);
+        const auto it = std::find_if(vertices.begin(), vertices.end(),
+                                     [&](const viz::Mark& m) { return m.what == name; });
+        REQUIRE(it != vertices.end());
+        const int ring = type.px(7) + type.px(2);
+        // The box is the marker's, clipped to the view: inside, its centre is the vertex.
+        if ((viz::Rect(q.x - ring, q.y - ring, 2 * ring + 1, 2 * ring + 1) & view) ==
+            viz::Rect(q.x - ring, q.y - ring, 2 * ring + 1, 2 * ring + 1)) {
+          CHECK(std::abs(centre(it->box).x - (q.x + 0.5)) <= 0.5);
+          CHECK(std::abs(centre(it->box).y - (q.y + 0.5)) <= 0.5);
+        }
+      }
+      CHECK(vertices.size() == visible);
+
+      const trace::Scanline* row = step.kind == viz::StepKind::scanlines
+                                       ? viz::find_scanline(c.trace, step.triangle, step.last_row)
+                                       : nullptr;
+      if (!row) {
+        CHECK(main_view(marks, viz::MarkKind::active_point).empty());
+        CHECK(main_view(marks, viz::MarkKind::span).empty());
+        continue;
+      }
+      ++scanline_frames;
+      // One mark per visible active point, named after its edge, on the point.
+      const std::vector<viz::Mark> points = main_view(marks, viz::MarkKind::active_point);
+      std::size_t shown = 0;
+      for (const trace::ActivePoint& p : row->active_points) {
+        const viz::Point q = rounded(g->to_frame(p.x, double(row->y)));
+        if (!view.contains(q)) continue;
+        ++shown;
+        INFO("active point of edge " << p.edge << " at x = " << p.x);
+        const bool found = std::any_of(points.begin(), points.end(), [&](const viz::Mark& m) {
+          return m.what == fmt::format("e{}", p.edge) && m.box.contains(q);
+        });
+        CHECK(found);
+      }
+      CHECK(points.size() == shown);
+      // The scanline, once, on the row.
+      const std::vector<viz::Mark> lines = main_view(marks, viz::MarkKind::scanline);
+      REQUIRE(lines.size() == 1);
+      CHECK(lines[0].what == fmt::format("y = {}", row->y));
+      const double y = g->to_frame(0, double(row->y)).y;
+      CHECK(std::abs(centre(lines[0].box).y - y) <= 1.5);
+      // One box per span (or per inside interval), around its cells.
+      std::vector<trace::Span> spans;
+      if (row->intervals)
+        for (const trace::Interval& iv : *row->intervals) spans.push_back(iv.pixels);
+      else if (row->span)
+        spans.push_back(*row->span);
+      std::erase_if(spans, [](const trace::Span& sp) { return sp.size() <= 0; });
+      const std::vector<viz::Mark> boxes = main_view(marks, viz::MarkKind::span);
+      CHECK(boxes.size() == spans.size());
+      for (const trace::Span& sp : spans) {
+        const std::string name = fmt::format("[{}, {})", sp.x_begin, sp.x_end);
+        INFO("span " << name);
+        const auto it = std::find_if(boxes.begin(), boxes.end(),
+                                     [&](const viz::Mark& m) { return m.what == name; });
+        REQUIRE(it != boxes.end());
+        // The span's first and last cells' centres lie inside the box (where the view shows them).
+        for (std::int64_t x : {sp.x_begin, sp.x_end - 1}) {
+          const viz::Point q = rounded(g->to_frame(double(x), double(row->y)));
+          if (view.contains(q)) CHECK(it->box.contains(q));
+        }
+      }
+    }
+    CHECK(scanline_frames > 0);
+  }
+}
+
+TEST_CASE("the composer's text metrics are cv::getTextSize's", "[viz][display-list][text]") {
+  std::string printable;
+  for (char ch = ' '; ch <= '~'; ++ch) printable += ch;
+  std::vector<std::string> texts{"", "A", "Ag", "x = 12.34", "v0 (20, 20)", printable};
+  for (char ch = ' '; ch <= '~'; ++ch) texts.emplace_back(1, ch);
+  for (const auto& [font, cv_font] :
+       {std::pair{viz::HersheyFont::simplex, cv::FONT_HERSHEY_SIMPLEX},
+        std::pair{viz::HersheyFont::duplex, cv::FONT_HERSHEY_DUPLEX}})
+    for (const double scale : {0.42 * 0.5, 0.42, 0.48, 0.6, 0.9, 1.3, 1.3 * 1.5, 0.48 * 2.7})
+      for (const int thickness : {1, 2, 3})
+        for (const std::string& text : texts) {
+          INFO("font " << int(font) << " scale " << scale << " thickness " << thickness << " \""
+                       << text << "\"");
+          int cv_base = 0, our_base = 0;
+          const cv::Size want = cv::getTextSize(text, cv_font, scale, thickness, &cv_base);
+          const viz::Size got = viz::hershey_text_size(text, font, scale, thickness, &our_base);
+          CHECK(got.width == want.width);
+          CHECK(got.height == want.height);
+          CHECK(our_base == cv_base);
+        }
+}
+
+TEST_CASE("the Hershey strokes lie where OpenCV draws the text", "[viz][display-list][text]") {
+  // Each stroke point of the composer's glyphs is on (or next to) a pixel putText inked.
+  for (const viz::HersheyFont font : {viz::HersheyFont::simplex, viz::HersheyFont::duplex}) {
+    cv::Mat m(80, 900, CV_8UC1, cv::Scalar(0));
+    // Characters whose glyph is OpenCV's own (viz/hershey/glyphs.inc marks the few that are not).
+    const std::string text = "scantrace: x = 12.34, v0 (20, 20) |&$!?+-/";
+    cv::putText(m, text, {5, 50}, int(font), 1.1, cv::Scalar(255), 1, cv::LINE_8);
+    std::size_t points = 0, near = 0;
+    for (const auto& stroke : viz::hershey_strokes(text, font, 1.1, {5, 50}))
+      for (const viz::Point2d& p : stroke) {
+        ++points;
+        const int x = int(std::lround(p.x)), y = int(std::lround(p.y));
+        bool inked = false;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) inked |= m.at<std::uint8_t>(y + dy, x + dx) != 0;
+        near += inked;
+      }
+    INFO("font " << int(font));
+    CHECK(points > 200);
+    CHECK(near == points);
+  }
+}

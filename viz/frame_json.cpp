@@ -1,0 +1,165 @@
+#include "viz/frame_json.hpp"
+
+#include <sstream>
+
+#include "viz/frame_text.hpp"
+
+namespace scantrace::viz {
+namespace {
+
+using frame_text::hex_colour;
+using frame_text::json_string;
+using frame_text::number;
+
+std::string box(const Rect& r) {
+  return "[" + std::to_string(r.x) + "," + std::to_string(r.y) + "," + std::to_string(r.width) +
+         "," + std::to_string(r.height) + "]";
+}
+
+struct Writer {
+  std::ostringstream& out;
+  void operator()(const RectOp& r) const {
+    out << "\"R\"," << r.rect.x << "," << r.rect.y << "," << r.rect.width << "," << r.rect.height
+        << ",\"" << hex_colour(r.colour) << "\"," << r.thickness;
+  }
+  void operator()(const LineOp& l) const {
+    const double s = 1.0 / (1 << l.shift);
+    out << "\"L\"," << number(l.a.x * s) << "," << number(l.a.y * s) << "," << number(l.b.x * s)
+        << "," << number(l.b.y * s) << ",\"" << hex_colour(l.colour) << "\"," << l.thickness;
+  }
+  void operator()(const CircleOp& c) const {
+    out << "\"C\"," << c.centre.x << "," << c.centre.y << "," << c.radius << ",\""
+        << hex_colour(c.colour) << "\"," << c.thickness;
+  }
+  void operator()(const TextOp& t) const {
+    out << "\"T\"," << json_string(t.text) << ",\"" << hex_colour(t.colour) << "\"," << t.thickness
+        << ",[";
+    bool first_stroke = true;
+    for (const auto& stroke : hershey_strokes(t.text, t.font, t.scale, t.origin)) {
+      out << (first_stroke ? "[" : ",[");
+      first_stroke = false;
+      for (std::size_t i = 0; i < stroke.size(); ++i)
+        out << (i ? "," : "") << number(stroke[i].x) << "," << number(stroke[i].y);
+      out << "]";
+    }
+    out << "]";
+  }
+  void operator()(const PixelsOp& p) const {
+    if (p.area.area() == 1) {  // a grid's centre dot: a filled rectangle, not an image
+      const Vec3b& c = p.bgr.front();
+      (*this)(RectOp{p.area, Scalar(c[0], c[1], c[2]), FILLED});
+      return;
+    }
+    out << "\"P\"," << p.area.x << "," << p.area.y << "," << p.area.width << "," << p.area.height
+        << ",\"" << frame_text::png_data_uri(p) << "\"";
+  }
+};
+
+}  // namespace
+
+std::string to_json(const Frame& frame) {
+  std::ostringstream out;
+  out << "{\"w\":" << frame.size().width << ",\"h\":" << frame.size().height << ",\"bg\":\""
+      << hex_colour(frame.background()) << "\",\"ops\":[";
+  bool first = true;
+  for (const DrawOp& op : frame.ops()) {
+    out << (first ? "[" : ",\n[");
+    first = false;
+    // The kind first, then clip and mark: written after the body's kind, as the format says.
+    std::ostringstream body;
+    std::visit(Writer{body}, op.body);
+    const std::string b = body.str();
+    const std::size_t comma = b.find(',');
+    out << b.substr(0, comma) << "," << (op.clip ? box(*op.clip) : "null") << ",";
+    if (op.mark)
+      out << "{\"kind\":\"" << to_string(op.mark->kind)
+          << "\",\"what\":" << json_string(op.mark->what) << ",\"box\":" << box(op.mark->box)
+          << ",\"layer\":" << op.mark->layer << "}";
+    else
+      out << "null";
+    out << b.substr(comma) << "]";
+  }
+  out << "]}\n";
+  return out.str();
+}
+
+const char* frame_canvas_script() {
+  // Coordinates are OpenCV's (pixel centres on integers): strokes are drawn half a pixel right and
+  // down, filled rectangles and pixel blocks over the pixels they cover, as the SVG backend does.
+  return R"JS(function drawScantraceFrame(ctx, frame) {
+  // The pixel blocks are PNG data URIs, which load asynchronously: load them all, then draw
+  // every op in order.
+  const blocks = frame.ops.filter((op) => op[0] === 'P').map((op) => new Promise((ok, fail) => {
+    const img = new Image();
+    img.onload = () => ok(img);
+    img.onerror = fail;
+    img.src = op[7];
+  }));
+  return Promise.all(blocks).then((images) => {
+    let k = 0;
+    ctx.fillStyle = frame.bg;
+    ctx.fillRect(0, 0, frame.w, frame.h);
+    for (const op of frame.ops) {
+      const [kind, clip] = op;
+      const a = op.slice(3);
+      ctx.save();
+      if (clip) {
+        ctx.beginPath();
+        ctx.rect(clip[0], clip[1], clip[2], clip[3]);
+        ctx.clip();
+        ctx.translate(clip[0], clip[1]);
+      }
+      ctx.lineCap = 'round';
+      ctx.lineJoin = 'round';
+      if (kind === 'R') {
+        const [x, y, w, h, c, t] = a;
+        if (t < 0) {
+          ctx.fillStyle = c;
+          ctx.fillRect(x, y, w, h);
+        } else {
+          ctx.strokeStyle = c;
+          ctx.lineWidth = t;
+          ctx.strokeRect(x + 0.5, y + 0.5, w - 1, h - 1);
+        }
+      } else if (kind === 'L') {
+        const [x1, y1, x2, y2, c, t] = a;
+        ctx.strokeStyle = c;
+        ctx.lineWidth = t;
+        ctx.beginPath();
+        ctx.moveTo(x1 + 0.5, y1 + 0.5);
+        ctx.lineTo(x2 + 0.5, y2 + 0.5);
+        ctx.stroke();
+      } else if (kind === 'C') {
+        const [x, y, r, c, t] = a;
+        ctx.beginPath();
+        ctx.arc(x + 0.5, y + 0.5, t < 0 ? r + 0.5 : r, 0, 2 * Math.PI);
+        if (t < 0) {
+          ctx.fillStyle = c;
+          ctx.fill();
+        } else {
+          ctx.strokeStyle = c;
+          ctx.lineWidth = t;
+          ctx.stroke();
+        }
+      } else if (kind === 'T') {
+        const [, c, t, strokes] = a;
+        ctx.strokeStyle = c;
+        ctx.lineWidth = t;
+        ctx.beginPath();
+        for (const s of strokes) {
+          ctx.moveTo(s[0] + 0.5, s[1] + 0.5);
+          for (let i = 2; i < s.length; i += 2) ctx.lineTo(s[i] + 0.5, s[i + 1] + 0.5);
+        }
+        ctx.stroke();
+      } else if (kind === 'P') {
+        ctx.imageSmoothingEnabled = false;
+        ctx.drawImage(images[k++], a[0], a[1]);
+      }
+      ctx.restore();
+    }
+  });
+}
+)JS";
+}
+
+}  // namespace scantrace::viz

@@ -1,0 +1,30 @@
+#pragma once
+// The canvas backend's half on this side (docs/design.md §6): a display list as compact JSON for
+// a browser, drawn on an HTML <canvas> by the JavaScript of frame_canvas_script().
+//
+//   {"w": 1280, "h": 720, "bg": "#f6f6f6", "ops": [OP, ...]}
+//
+// Every OP is an array [kind, clip, mark, ...]: clip null or [x, y, w, h] (the op's coordinates
+// are then relative to that area's corner and it draws nothing outside it), mark null or
+// {"kind", "what", "box": [x, y, w, h], "layer"} (absolute box). Coordinates are OpenCV's: a
+// pixel's centre on integers.
+//   ["R", clip, mark, x, y, w, h, colour, thickness]   thickness -1: filled
+//   ["L", clip, mark, x1, y1, x2, y2, colour, thickness]   end points in pixels (subpixel)
+//   ["C", clip, mark, cx, cy, radius, colour, thickness]   thickness -1: a disc
+//   ["T", clip, mark, text, colour, thickness, [[x, y, x, y, ...], ...]]   the Hershey strokes
+//   ["P", clip, mark, x, y, w, h, "data:image/png;base64,..."]   a block of pixels
+// Colours are "#rrggbb". Text comes as its strokes, so the browser needs no font and draws the
+// glyphs the composer measured.
+#include <string>
+
+#include "viz/frame.hpp"
+
+namespace scantrace::viz {
+
+std::string to_json(const Frame& frame);
+
+// `drawScantraceFrame(ctx, frame)`: draws a parsed to_json() frame on a 2D canvas context of the
+// frame's size; returns a Promise that resolves when the pixel blocks (images) are drawn too.
+const char* frame_canvas_script();
+
+}  // namespace scantrace::viz

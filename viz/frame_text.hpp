@@ -1,0 +1,21 @@
+#pragma once
+// What the text backends of the display list (SVG, the canvas JSON) write alike: numbers, colours,
+// escaped strings, and a block of pixels as a PNG data URI.
+#include <string>
+
+#include "viz/frame.hpp"
+
+namespace scantrace::viz::frame_text {
+
+// At most two decimals, trailing zeros dropped ("12.5", "3", "-0.25").
+std::string number(double v);
+// "#rrggbb" of a BGR colour.
+std::string hex_colour(const Scalar& c);
+// `s` with & < > " escaped (XML attribute and text content).
+std::string xml_escape(const std::string& s);
+// `s` as a JSON string literal, quotes included.
+std::string json_string(const std::string& s);
+// "data:image/png;base64,..." of the block's pixels.
+std::string png_data_uri(const PixelsOp& pixels);
+
+}  // namespace scantrace::viz::frame_text

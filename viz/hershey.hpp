@@ -1,0 +1,30 @@
+#pragma once
+// Text metrics and glyph strokes of the two Hershey fonts frames use, without OpenCV
+// (docs/design.md §6, "Text"). Layout depends on how wide a text is, so every backend must agree
+// on it: the composer measures here, with OpenCV's own arithmetic (cv::getTextSize: the sum of
+// the glyphs' advances times the scale, the thickness added, rounded as cvRound), and the glyph
+// data is the Hershey fonts OpenCV embeds, generated from Debian's hershey-fonts-data
+// (viz/hershey/generate.py). The SVG and canvas backends draw the same strokes, so a label has the
+// same extent in every backend.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "viz/geometry.hpp"
+
+namespace scantrace::viz {
+
+// OpenCV's font numbers (cv::FONT_HERSHEY_SIMPLEX, cv::FONT_HERSHEY_DUPLEX).
+enum class HersheyFont { simplex = 0, duplex = 2 };
+
+// cv::getTextSize: width and cap height of `text`; `baseline` (when given) receives the depth of
+// the descenders below the baseline.
+Size hershey_text_size(std::string_view text, HersheyFont font, double scale, int thickness,
+                       int* baseline = nullptr);
+
+// The strokes of `text` as putText draws them from `origin` (on the baseline): polylines in frame
+// coordinates (double; OpenCV rounds them to 1/65536 pixel).
+std::vector<std::vector<Point2d>> hershey_strokes(std::string_view text, HersheyFont font,
+                                                  double scale, Point origin);
+
+}  // namespace scantrace::viz

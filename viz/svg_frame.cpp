@@ -1,0 +1,107 @@
+#include "viz/svg_frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+
+#include "viz/frame_text.hpp"
+
+namespace scantrace::viz {
+namespace {
+
+using frame_text::hex_colour;
+using frame_text::number;
+
+// A pixel-centre coordinate (OpenCV) as an SVG coordinate.
+std::string at(double v) {
+  return number(v + 0.5);
+}
+
+struct Writer {
+  std::ostringstream& out;
+
+  void operator()(const RectOp& r) const {
+    if (r.thickness < 0) {
+      out << "<rect x=\"" << r.rect.x << "\" y=\"" << r.rect.y << "\" width=\"" << r.rect.width
+          << "\" height=\"" << r.rect.height << "\" fill=\"" << hex_colour(r.colour) << "\"/>\n";
+      return;
+    }
+    // The outline runs through the centres of the first and last rows and columns.
+    out << "<rect x=\"" << at(r.rect.x) << "\" y=\"" << at(r.rect.y) << "\" width=\""
+        << std::max(0, r.rect.width - 1) << "\" height=\"" << std::max(0, r.rect.height - 1)
+        << "\" fill=\"none\" stroke=\"" << hex_colour(r.colour) << "\" stroke-width=\""
+        << r.thickness << "\"/>\n";
+  }
+  void operator()(const LineOp& l) const {
+    const double s = 1.0 / (1 << l.shift);
+    out << "<line x1=\"" << at(l.a.x * s) << "\" y1=\"" << at(l.a.y * s) << "\" x2=\""
+        << at(l.b.x * s) << "\" y2=\"" << at(l.b.y * s) << "\" stroke=\"" << hex_colour(l.colour)
+        << "\" stroke-width=\"" << l.thickness << "\" stroke-linecap=\"round\"/>\n";
+  }
+  void operator()(const CircleOp& c) const {
+    out << "<circle cx=\"" << at(c.centre.x) << "\" cy=\"" << at(c.centre.y) << "\" r=\"";
+    if (c.thickness < 0)  // the disc covers the pixels whose centres are within the radius
+      out << number(c.radius + 0.5) << "\" fill=\"" << hex_colour(c.colour) << "\"/>\n";
+    else
+      out << c.radius << "\" fill=\"none\" stroke=\"" << hex_colour(c.colour)
+          << "\" stroke-width=\"" << c.thickness << "\"/>\n";
+  }
+  void operator()(const TextOp& t) const {
+    out << "<path fill=\"none\" stroke=\"" << hex_colour(t.colour) << "\" stroke-width=\""
+        << t.thickness << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\" d=\"";
+    for (const auto& stroke : hershey_strokes(t.text, t.font, t.scale, t.origin)) {
+      for (std::size_t i = 0; i < stroke.size(); ++i)
+        out << (i == 0 ? "M" : "L") << at(stroke[i].x) << " " << at(stroke[i].y);
+    }
+    out << "\"><title>" << frame_text::xml_escape(t.text) << "</title></path>\n";
+  }
+  void operator()(const PixelsOp& p) const {
+    if (p.area.area() == 1) {  // a grid's centre dot: a rectangle, not an image
+      const Vec3b& c = p.bgr.front();
+      (*this)(RectOp{p.area, Scalar(c[0], c[1], c[2]), FILLED});
+      return;
+    }
+    out << "<image x=\"" << p.area.x << "\" y=\"" << p.area.y << "\" width=\"" << p.area.width
+        << "\" height=\"" << p.area.height << "\" preserveAspectRatio=\"none\" xlink:href=\""
+        << frame_text::png_data_uri(p) << "\"/>\n";
+  }
+};
+
+}  // namespace
+
+std::string to_svg(const Frame& frame) {
+  std::ostringstream out;
+  const Size s = frame.size();
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" "
+         "version=\"1.1\" width=\""
+      << s.width << "\" height=\"" << s.height << "\" viewBox=\"0 0 " << s.width << " " << s.height
+      << "\">\n"
+      << "<rect width=\"" << s.width << "\" height=\"" << s.height << "\" fill=\""
+      << hex_colour(frame.background()) << "\"/>\n";
+  // Consecutive ops confined to one area share a group clipped to it and moved to its corner.
+  std::optional<Rect> open;
+  int clips = 0;
+  for (const DrawOp& op : frame.ops()) {
+    if (op.clip != open) {
+      if (open) out << "</g>\n";
+      open = op.clip;
+      if (open) {
+        const Rect& c = *open;
+        out << "<clipPath id=\"c" << clips << "\"><rect x=\"0\" y=\"0\" width=\"" << c.width
+            << "\" height=\"" << c.height << "\"/></clipPath>\n"
+            << "<g transform=\"translate(" << c.x << "," << c.y << ")\" clip-path=\"url(#c" << clips
+            << ")\">\n";
+        ++clips;
+      }
+    }
+    std::visit(Writer{out}, op.body);
+  }
+  if (open) out << "</g>\n";
+  out << "</svg>\n";
+  return out.str();
+}
+
+}  // namespace scantrace::viz

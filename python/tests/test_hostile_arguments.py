@@ -226,3 +226,48 @@ def test_ctrl_c_interrupts_a_long_render():
     if word == "finished":
         pytest.skip(f"the render finished in {seconds} s, before the signal")
     assert word == "interrupted" and float(seconds) < 2.0, out
+
+
+def bad_files(tmp_path):
+    """Files a careless caller hands to the readers, by name."""
+    files = {
+        "empty": b"",
+        "garbage": bytes(range(256)) * 4,
+        "empty JSON object": b"{}",
+        "truncated JSON": b'{"vertices": [[0, 0], [1',
+        "npy magic only": b"\x93NUMPY",
+        "pickle opcode only": b"\x80\x04",
+        "trace header only": b'{"type":"header"}\n',
+    }
+    out = {}
+    for name, data in files.items():
+        p = tmp_path / (name.replace(" ", "_") + ".npy")
+        p.write_bytes(data)
+        out[name] = p
+    return out
+
+
+def test_no_error_message_is_empty(tmp_path):
+    """Every refusal of a bad file says something (the course's hw1.npy once raised InputError()
+    with an empty message), in one line that names the file."""
+    files = bad_files(tmp_path)
+    calls = []
+    for name, p in files.items():
+        calls += [(f"load_scene({name})", lambda p=p: scantrace.load_scene(p)),
+                  (f"Trace.load({name})", lambda p=p: scantrace.Trace.load(p)),
+                  (f"check({name})", lambda p=p: scantrace.check(p)),
+                  (f"diff image ({name})", lambda p=p: scantrace.diff(
+                      (small_scene()["faces"], small_scene()["vertices"],
+                       small_scene()["vcolors"], small_scene()["depth"]), p))]
+    calls += [("load_scene(missing)", lambda: scantrace.load_scene(tmp_path / "missing.json")),
+              ("load_scene(directory)", lambda: scantrace.load_scene(tmp_path))]
+    for what, call in calls:
+        try:
+            result = call()
+        except Exception as e:  # noqa: BLE001: every kind of refusal is looked at
+            message = str(e)
+            assert message.strip(), f"{what}: {type(e).__name__} with an empty message"
+            assert "\n" not in message, f"{what}: {message!r}"
+        else:
+            # check() gives its verdict as a result: then the problem is the message.
+            assert isinstance(result, scantrace.CheckResult) and result.problem.strip(), what

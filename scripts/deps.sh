@@ -26,6 +26,9 @@ packages+=(pkg-config libmatio-dev libxcb1-dev libhwy-dev libdeflate-dev libsimd
 # Stepping through replays: Qt's headers for the window's focus fix (cli/highgui_focus.hpp), and
 # for the tests a virtual display, xdotool and headless chromium.
 packages+=(qtbase5-dev xvfb xdotool chromium)
+# The Python package's build (pip install ., python3 -m build) and its benchmark's alternatives
+# (python/bench/bench_alternatives.py: OpenCV's and PIL's polygon fills).
+packages+=(python3-setuptools python3-wheel python3-build python3-venv python3-opencv python3-pil)
 
 if [ "${1:-}" = "--demo" ]; then
   packages=("${demo_packages[@]}")

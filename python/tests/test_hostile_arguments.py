@@ -96,6 +96,19 @@ def test_load_scene_reads_mat_files_as_mat(tmp_path):
     assert "JSON" not in str(e.value) and str(e.value).startswith(str(fake))
 
 
+@pytest.mark.parametrize("name", ["two_triangles_v5.mat", "two_triangles_v73.mat"])
+def test_load_scene_of_a_mat_file_renders_as_the_command(tmp_path, name):
+    from conftest import SCANTRACE, SOURCE_DIR
+    PIL = pytest.importorskip("PIL.Image")
+    path = SOURCE_DIR / "fuzz" / "corpus" / "mat_scene" / name
+    s = scantrace.load_scene(path)
+    assert s["faces"].tolist() == [[0, 1, 2], [1, 3, 2]]  # MATLAB's 1-based faces, 0-based here
+    subprocess.run([SCANTRACE, "render", str(path), "-o", str(tmp_path / "m.png")], check=True,
+                   capture_output=True)
+    np.testing.assert_array_equal(scantrace.render(**s, dtype=np.uint8),
+                                  np.asarray(PIL.open(tmp_path / "m.png").convert("RGB")))
+
+
 def test_rows_and_triangles_that_select_nothing_are_refused_as_the_command_does():
     s = small_scene()
     with pytest.raises(ValueError, match=r"rows: expected \(first, last\) with first <= last, "

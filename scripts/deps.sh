@@ -32,6 +32,9 @@ packages+=(qtbase5-dev xvfb xdotool chromium)
 # The display list's backends (viz/): xmllint validates the SVG frames in the tests; the Hershey
 # glyphs (viz/hershey/glyphs.inc) are generated from hershey-fonts-data by viz/hershey/generate.py.
 packages+=(libxml2-utils hershey-fonts-data)
+# The Python package's build (pip install ., python3 -m build) and its benchmark's alternatives
+# (python/bench/bench_alternatives.py: OpenCV's and PIL's polygon fills).
+packages+=(python3-setuptools python3-wheel python3-build python3-venv python3-opencv python3-pil)
 
 if [ "${1:-}" = "--demo" ]; then
   packages=("${demo_packages[@]}")

@@ -96,6 +96,19 @@ def test_load_scene_reads_mat_files_as_mat(tmp_path):
     assert "JSON" not in str(e.value) and str(e.value).startswith(str(fake))
 
 
+@pytest.mark.parametrize("name", ["two_triangles_v5.mat", "two_triangles_v73.mat"])
+def test_load_scene_of_a_mat_file_renders_as_the_command(tmp_path, name):
+    from conftest import SCANTRACE, SOURCE_DIR
+    PIL = pytest.importorskip("PIL.Image")
+    path = SOURCE_DIR / "fuzz" / "corpus" / "mat_scene" / name
+    s = scantrace.load_scene(path)
+    assert s["faces"].tolist() == [[0, 1, 2], [1, 3, 2]]  # MATLAB's 1-based faces, 0-based here
+    subprocess.run([SCANTRACE, "render", str(path), "-o", str(tmp_path / "m.png")], check=True,
+                   capture_output=True)
+    np.testing.assert_array_equal(scantrace.render(**s, dtype=np.uint8),
+                                  np.asarray(PIL.open(tmp_path / "m.png").convert("RGB")))
+
+
 def test_rows_and_triangles_that_select_nothing_are_refused_as_the_command_does():
     s = small_scene()
     with pytest.raises(ValueError, match=r"rows: expected \(first, last\) with first <= last, "
@@ -226,3 +239,48 @@ def test_ctrl_c_interrupts_a_long_render():
     if word == "finished":
         pytest.skip(f"the render finished in {seconds} s, before the signal")
     assert word == "interrupted" and float(seconds) < 2.0, out
+
+
+def bad_files(tmp_path):
+    """Files a careless caller hands to the readers, by name."""
+    files = {
+        "empty": b"",
+        "garbage": bytes(range(256)) * 4,
+        "empty JSON object": b"{}",
+        "truncated JSON": b'{"vertices": [[0, 0], [1',
+        "npy magic only": b"\x93NUMPY",
+        "pickle opcode only": b"\x80\x04",
+        "trace header only": b'{"type":"header"}\n',
+    }
+    out = {}
+    for name, data in files.items():
+        p = tmp_path / (name.replace(" ", "_") + ".npy")
+        p.write_bytes(data)
+        out[name] = p
+    return out
+
+
+def test_no_error_message_is_empty(tmp_path):
+    """Every refusal of a bad file says something (the course's hw1.npy once raised InputError()
+    with an empty message), in one line that names the file."""
+    files = bad_files(tmp_path)
+    calls = []
+    for name, p in files.items():
+        calls += [(f"load_scene({name})", lambda p=p: scantrace.load_scene(p)),
+                  (f"Trace.load({name})", lambda p=p: scantrace.Trace.load(p)),
+                  (f"check({name})", lambda p=p: scantrace.check(p)),
+                  (f"diff image ({name})", lambda p=p: scantrace.diff(
+                      (small_scene()["faces"], small_scene()["vertices"],
+                       small_scene()["vcolors"], small_scene()["depth"]), p))]
+    calls += [("load_scene(missing)", lambda: scantrace.load_scene(tmp_path / "missing.json")),
+              ("load_scene(directory)", lambda: scantrace.load_scene(tmp_path))]
+    for what, call in calls:
+        try:
+            result = call()
+        except Exception as e:  # noqa: BLE001: every kind of refusal is looked at
+            message = str(e)
+            assert message.strip(), f"{what}: {type(e).__name__} with an empty message"
+            assert "\n" not in message, f"{what}: {message!r}"
+        else:
+            # check() gives its verdict as a result: then the problem is the message.
+            assert isinstance(result, scantrace.CheckResult) and result.problem.strip(), what

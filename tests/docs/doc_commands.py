@@ -102,7 +102,8 @@ NOT_RUN = {
     "bash scripts/model_images.sh": "regenerates committed images in the source tree",
     "cmake --install build --prefix ~/.local": "installs into the home directory; "
         "the install test installs into a temporary prefix",
-    "cmake --install build --prefix ~/.local --component python": "installs into the home directory",
+    "python3 -m venv --system-site-packages ~/venvs/scantrace": "makes a venv in the home "
+        "directory; python/tests/test_install.py installs a wheel into a fresh venv",
     "build/cli/scantrace step scantrace-demo/triangle.jsonl": "a window: tests/interactive",
     'build/cli/scantrace step --triangle "20,20 250,80 300,400"': "a window: tests/interactive",
     "echo $?": "prints the previous command's status, which RUN checks",

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "io/json_input.hpp"
+#include "io/memory_budget.hpp"
 #include "io/scene_json.hpp"
 #include "io/scene_json_fast.hpp"
 
@@ -217,8 +218,10 @@ Scene parse_scene(std::istream& in, const std::string& name_for_errors, ColorCla
 }
 
 Scene load_scene(const std::filesystem::path& file, ColorClamping* clamping) {
-  const std::string text = json_input::read_text_file(file);
-  return parse(text, text.capacity() - text.size(), file.string(), clamping);
+  return within_memory(file.string(), [&] {
+    const std::string text = json_input::read_text_file(file);
+    return parse(text, text.capacity() - text.size(), file.string(), clamping);
+  });
 }
 
 }  // namespace scantrace

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <optional>
 #include <span>
 #include <string>
@@ -16,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/log.hpp"
+#include "cli/validators.hpp"
 #include "io/interrupt.hpp"
 
 namespace {
@@ -105,6 +107,7 @@ int run_app(int argc, char** argv, std::span<const AddCommand> add,
 
   std::vector<scantrace::cli::Command> commands;
   for (const AddCommand add_command : add) commands.push_back(add_command(app));
+  require_finite_numbers(app);
   // --quiet belongs to the main command but works after any subcommand: say so in their help.
   for (const auto& command : commands)
     command.app->footer(command.app->get_footer() +
@@ -134,6 +137,12 @@ int run_app(int argc, char** argv, std::span<const AddCommand> add,
   } catch (const scantrace::Interrupted& e) {
     spdlog::error("error: {}", e.what());
     return e.exit_status();  // 130 (SIGINT) or 143 (SIGTERM), as the shell reports a signal
+  } catch (const std::bad_alloc&) {
+    // The readers name their file (io/memory_budget.hpp's within_memory); anything else that
+    // runs out still says what happened in one line, not "std::bad_alloc".
+    spdlog::error("error: ran out of memory; SCANTRACE_MAX_MEMORY sets the budget that is checked "
+                  "before large allocations");
+    return kExitBadInput;
   } catch (const std::exception& e) {
     spdlog::error("error: {}", e.what());
     return kExitBadInput;

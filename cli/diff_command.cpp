@@ -14,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/grade_scene.hpp"
 #include "cli/stopwatch.hpp"
+#include "cli/validators.hpp"
 #include "grade/diff_image.hpp"
 #include "grade/diff_report.hpp"
 #include "grade/image_input.hpp"
@@ -50,8 +51,10 @@ void run_diff(const DiffArgs& args) {
     if (ec)
       throw std::runtime_error(args.output + ": cannot create the directory: " + ec.message());
     const std::filesystem::path dir(args.output);
-    grade::write_diff_image(report, dir / "diff.png");
-    write_file_atomically(dir / "report.json", report.to_json().dump(2) + "\n");
+    // Both or neither (a report.json that is a directory left diff.png behind).
+    const std::string png = grade::diff_image_png(report, dir / "diff.png");
+    const std::string json = report.to_json().dump(2) + "\n";
+    write_files_atomically({{dir / "diff.png", png}, {dir / "report.json", json}});
   }
   const std::string out = args.json ? report.to_json().dump(2) + "\n" : report.to_markdown();
   std::fwrite(out.data(), 1, out.size(), stdout);
@@ -96,7 +99,10 @@ Command add_diff_command(CLI::App& app) {
   cmd->add_flag("--no-undo", args->no_undo,
                 "report global mistakes but classify the pixels as they are");
   cmd->add_option("-o,--output", args->output,
-                  "directory for diff.png and report.json (created if needed)");
+                  "directory for diff.png and report.json (created if needed)")
+      ->check(parsed_by([](const std::string& v) {
+        if (v.empty()) throw std::invalid_argument("an empty name is not a directory");
+      }));
   cmd->add_flag("--json", args->json, "print report.json's content instead of Markdown");
   cmd->footer(
       "Examples:\n"

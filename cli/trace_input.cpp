@@ -1,21 +1,19 @@
 #include "cli/trace_input.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 
 #include <spdlog/spdlog.h>
+
+#include "io/input_file.hpp"
 
 namespace scantrace::cli {
 
 // By default an incomplete trace is an error — a video of half a fill that looks complete would
 // mislead; with --partial the complete lines are used and a warning says so.
 trace::Trace load_trace(const std::string& file, bool partial) {
-  {
-    // The reader says only that it cannot open the file; the system says why.
-    std::ifstream probe(file, std::ios::binary);
-    if (!probe) throw trace::TraceError(file + ": cannot open trace: " + std::strerror(errno));
-  }
+  // The reader says only that it cannot open the file; the system says why (or that it is a
+  // FIFO or a device, which the reader does not open: io/input_file.hpp).
+  if (const std::string problem = regular_file_problem(file); !problem.empty())
+    throw trace::TraceError(file + ": cannot open trace: " + problem);
   if (!partial) {
     trace::Trace t = trace::Trace::load(file);
     if (!t.complete())

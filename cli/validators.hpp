@@ -1,6 +1,8 @@
 #pragma once
 // A CLI11 validator from a parser that throws: option values are checked while the command line
 // is parsed, so a malformed value is a usage error (exit status 2) that quotes the parser's reason.
+#include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <string>
 
@@ -31,6 +33,32 @@ CLI::Validator parsed_by(Parse parse) {
         }
       },
       "");
+}
+
+// Refuses NaN and the infinities (and literals beyond a double, which strtod makes infinite):
+// CLI11 reads "nan" and "inf" into a double, and its Range(0, 1) lets NaN through, so `diff
+// --tolerance nan` passed every image. require_finite_numbers puts it on every option of type
+// FLOAT; options whose text holds numbers (X,Y,Z, WxH, A:B) refuse them in their own parsers.
+inline CLI::Validator finite_number() {
+  return CLI::Validator(
+      [](std::string& value) -> std::string {
+        const char* text = value.c_str();
+        char* end = nullptr;
+        const double v = std::strtod(text, &end);
+        if (end != text && !std::isfinite(v)) return "\"" + value + "\" is not a finite number";
+        return {};  // not a number at all: CLI11's conversion says so
+      },
+      "");
+}
+
+// Adds finite_number() to every floating-point option of `app` and of its subcommands, at any
+// depth: no command takes NaN or an infinity for a number (tests/cli/finite_options_test.cpp
+// walks every option of every subcommand's --help).
+inline void require_finite_numbers(CLI::App& app) {
+  for (CLI::Option* option : app.get_options())
+    if (option->get_type_name().find("FLOAT") != std::string::npos) option->check(finite_number());
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+    require_finite_numbers(*sub);
 }
 
 }  // namespace scantrace::cli

@@ -1,6 +1,8 @@
 // scantrace why SCENE X Y [fill options] [model options] [--json] [--explain OUT]
 // The history of one pixel in the algorithm's terms (grade/pixel_story.hpp).
+#include <charconv>
 #include <cstdio>
+#include <stdexcept>
 #include <ctime>
 #include <memory>
 #include <string>
@@ -16,9 +18,14 @@
 #include "cli/validators.hpp"
 #include "grade/pixel_story.hpp"
 #include "grade/scene_around.hpp"
+#include "io/memory_budget.hpp"
+#include "trace/record.hpp"
 
 namespace scantrace::cli {
 namespace {
+
+// The faces --explain replays at most: each is a frame per row of it.
+constexpr std::size_t kMaxExplainedFaces = 100;
 
 struct WhyArgs {
   std::string scene;
@@ -36,6 +43,14 @@ void run_why(const WhyArgs& args) {
                      "pixel (" + std::to_string(args.x) + ", " + std::to_string(args.y) +
                          ") is outside the " + std::to_string(g.scene.width) + "x" +
                          std::to_string(g.scene.height) + " canvas");
+  // The memory why() takes is linear in the faces around the pixel: refused up front past the
+  // budget, in the usual one line.
+  const std::size_t around =
+      grade::faces_around(g.scene, args.x, args.y, grade::snap_margin(g.options)).size();
+  check_memory(static_cast<std::uint64_t>(around) * grade::kWhyBytesPerFace,
+               "explaining pixel (" + std::to_string(args.x) + ", " + std::to_string(args.y) +
+                   ") through the " + std::to_string(around) + " faces around it",
+               args.scene, "X Y");
   const Stopwatch clock;
   const std::clock_t cpu = std::clock();
   const grade::PixelStory story = grade::why(g.scene, g.options, args.x, args.y);
@@ -50,9 +65,21 @@ void run_why(const WhyArgs& args) {
       ms, cpu_ms, story.faces.size(), g.scene.faces.size());
   if (!args.explain.empty()) {
     // Only the faces around the pixel, every row of them, named by their scene index: the replay
-    // shows how each one was filled, with the pixel ringed on every frame.
-    const trace::Trace t =
-        grade::trace_around(g.scene, g.options, args.x, args.y, TraceLevel::scanline);
+    // shows how each one was filled, with the pixel ringed on every frame. Every row of 10k faces
+    // took over a minute and 1.75 GB: past kMaxExplainedFaces, the last ones drawn are shown
+    // (the pixel's final colour is theirs), and a warning says how many were left out.
+    std::vector<int> shown;
+    for (const grade::FaceStep& s : story.faces) shown.push_back(s.face);
+    if (shown.size() > kMaxExplainedFaces) {
+      spdlog::warn("warning: --explain shows the last {} of the {} faces around the pixel, in "
+                   "drawing order (the earlier ones are in the text above)",
+                   kMaxExplainedFaces, shown.size());
+      shown.erase(shown.begin(), shown.end() - static_cast<std::ptrdiff_t>(kMaxExplainedFaces));
+    }
+    trace::TraceFilter filter;
+    filter.level = TraceLevel::scanline;
+    filter.triangles = trace::IndexSet::of(shown);
+    const trace::Trace t = trace::record_scene(g.scene, g.options, filter);
     ReplayFlags replay;
     replay.output = args.explain;
     replay.marked_pixel = viz::CanvasPixel{args.x, args.y};
@@ -60,6 +87,18 @@ void run_why(const WhyArgs& args) {
                "the faces around pixel (" + std::to_string(args.x) + ", " + std::to_string(args.y) +
                    ") of " + args.scene);
   }
+}
+
+// X and Y said as what they are: CLI11's NonNegativeNumber answered "abc" with "Value abc not in
+// range 0.000000 to 1797693134862315708145274237317043567980...", 379 characters.
+CLI::Validator pixel_coordinate(const char* what, const char* side) {
+  return parsed_by([what, side](const std::string& v) {
+    int value = 0;
+    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), value);
+    if (v.empty() || ec != std::errc() || end != v.data() + v.size() || value < 0)
+      throw std::invalid_argument(std::string("must be a pixel ") + what + ", 0 to the canvas " +
+                                  side + " - 1 (got \"" + v + "\")");
+  });
 }
 
 }  // namespace
@@ -80,10 +119,10 @@ Command add_why_command(CLI::App& app) {
       ->required();
   cmd->add_option("X", args->x, "column of the pixel (0 = left)")
       ->required()
-      ->check(CLI::NonNegativeNumber);
+      ->check(pixel_coordinate("column", "width"));
   cmd->add_option("Y", args->y, "row of the pixel (0 = top)")
       ->required()
-      ->check(CLI::NonNegativeNumber);
+      ->check(pixel_coordinate("row", "height"));
   add_fill_flags(*cmd, args->fill);
   add_model_flags(*cmd, args->model, false);
   cmd->add_flag("--json", args->json,

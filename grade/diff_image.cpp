@@ -19,7 +19,7 @@ constexpr int kWindow = 32, kZoom = 8, kPanel = 300;
 
 }  // namespace
 
-void write_diff_image(const DiffReport& r, const std::filesystem::path& file) {
+std::string diff_image_png(const DiffReport& r, const std::filesystem::path& file) {
   const int W = r.width, H = r.height;
   const int height =
       std::max(H, 40 + 22 * static_cast<int>(kCategories.size()) + 30 + kWindow * kZoom + 40);
@@ -71,8 +71,11 @@ void write_diff_image(const DiffReport& r, const std::filesystem::path& file) {
   std::vector<unsigned char> png;
   if (!cv::imencode(".png", out, png))
     throw std::runtime_error(file.string() + ": cannot encode PNG");
-  write_file_atomically(file,
-                        std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+  return std::string(reinterpret_cast<const char*>(png.data()), png.size());
+}
+
+void write_diff_image(const DiffReport& r, const std::filesystem::path& file) {
+  write_file_atomically(file, diff_image_png(r, file));
 }
 
 }  // namespace scantrace::grade

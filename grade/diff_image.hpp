@@ -8,6 +8,9 @@
 
 namespace scantrace::grade {
 
+// The PNG's bytes. Throws std::runtime_error naming `file` (where it is meant to go).
+std::string diff_image_png(const DiffReport& report, const std::filesystem::path& file);
+
 // Written atomically (temporary name, then rename). Throws std::runtime_error naming the file.
 void write_diff_image(const DiffReport& report, const std::filesystem::path& file);
 

@@ -19,8 +19,9 @@ struct SubmittedImage {
   std::string name;       // for messages
 };
 
-// The size declared by a PNG (IHDR), BMP or JPEG (SOF) header; false when `bytes` is none of
-// them or too short to say. Throws InputError for a header that is recognised but broken.
+// The size declared by a PNG (IHDR), BMP (Windows or OS/2 header) or JPEG (its frame header as
+// libjpeg reads it: grade/jpeg_header.hpp); false when `bytes` is none of them or too short to
+// say. Throws InputError for a header that is recognised but broken.
 bool declared_size(std::string_view bytes, const std::string& name, std::int64_t& width,
                    std::int64_t& height, std::string& format);
 

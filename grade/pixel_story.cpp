@@ -10,6 +10,7 @@
 #include "grade/face_geometry.hpp"
 #include "grade/scene_around.hpp"
 #include "src/painter.hpp"
+#include "io/interrupt.hpp"
 #include "trace/record.hpp"
 
 namespace scantrace::grade {
@@ -109,6 +110,9 @@ PixelStory why(const Scene& scene, const FillOptions& options, int x, int y) {
   trace::TraceFilter filter;
   filter.level = TraceLevel::pixel;
   filter.rows = trace::RowRange{y, y};
+  // Row y of each face, and of its pixels only the one asked about: the work and the memory are
+  // linear in the faces around the pixel, not in their spans' pixels (docs/robustness.md).
+  filter.columns = trace::RowRange{x, x};
   const trace::Trace t = trace::record_scene(around, options, filter);
 
   PixelStory story;
@@ -120,7 +124,9 @@ PixelStory why(const Scene& scene, const FillOptions& options, int x, int y) {
   story.background = scene.background;
   story.final_color = scene.background;
 
+  std::size_t done = 0;
   for (int local : t.triangles()) {
+    if ((++done & 1023) == 0) check_interrupt();
     FaceStep s;
     s.face = faces[local];
     const FaceGeometry geo(scene, s.face, options.subpixel_bits);
@@ -173,15 +179,20 @@ PixelStory why(const Scene& scene, const FillOptions& options, int x, int y) {
     story.faces.push_back(std::move(s));
   }
 
-  // A centre exactly on an outline: who owns it, and who does not.
+  // A centre exactly on an outline: who owns it, and who does not. The faces named beside each
+  // are the first four on the outline (three of them other than it), found once: comparing every
+  // pair was quadratic in the faces around the pixel.
+  std::vector<const FaceStep*> on_outline;
+  for (const FaceStep& o : story.faces)
+    if (!o.outline.empty() && o.outcome != Outcome::skipped && on_outline.size() < 4)
+      on_outline.push_back(&o);
   for (const FaceStep& s : story.faces) {
     if (s.outline.empty() || s.outcome == Outcome::skipped) continue;
     const bool gets = s.outcome == Outcome::written || s.outcome == Outcome::depth_rejected;
     std::string others;
     int listed = 0;
-    for (const FaceStep& o : story.faces)
-      if (o.face != s.face && !o.outline.empty() && o.outcome != Outcome::skipped &&
-          ++listed <= 3) {
+    for (const FaceStep* op : on_outline)
+      if (const FaceStep& o = *op; o.face != s.face && ++listed <= 3) {
         const bool o_gets = o.outcome == Outcome::written || o.outcome == Outcome::depth_rejected;
         others += fmt::format("{}face {} on the other side {} it", others.empty() ? "" : "; ",
                               o.face, o_gets ? "gets" : "does not get");

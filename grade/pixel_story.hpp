@@ -8,6 +8,7 @@
 //
 // Only the faces around the pixel are traced, and only row Y: the cost is that of the faces whose
 // bounding box holds the pixel, not that of the scene.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -67,8 +68,15 @@ struct PixelStory {
   std::string summary() const;
 };
 
-// Throws std::out_of_range when (x, y) is not on the canvas. The scene must be valid.
+// Throws std::out_of_range when (x, y) is not on the canvas. The scene must be valid. The work
+// and the memory are linear in the faces around the pixel (one row and one pixel event of each);
+// a long run stops on SIGINT/SIGTERM (io/interrupt.hpp).
 PixelStory why(const Scene& scene, const FillOptions& options, int x, int y);
+
+// What one face around the pixel costs why() at most: its five events (the begin event's
+// vertices, the edge table, row y's active points and span), its FaceStep and its sentence,
+// rounded up; the caller checks faces × this against the memory budget first.
+inline constexpr std::uint64_t kWhyBytesPerFace = 4096;
 
 // The faces whose bounding box (widened by `margin` px) holds the centre (x, y), in scene order.
 std::vector<int> faces_around(const Scene& scene, int x, int y, double margin = 0);

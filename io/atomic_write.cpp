@@ -65,17 +65,67 @@ void write_atomically(const std::filesystem::path& target,
   unregister_temporary(temp);
 }
 
+namespace {
+
+// `bytes` into the file `temp`, errors naming `target`.
+void write_bytes(const std::filesystem::path& temp, const std::filesystem::path& target,
+                 std::string_view bytes) {
+  // stdio rather than ofstream: it reports *why* a write failed (errno), and fclose reports
+  // errors of the final flush such as a full disk.
+  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  if (!f) fail(target, "cannot create file", std::strerror(errno));
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  const int write_errno = errno;
+  if (std::fclose(f) != 0 || !written)
+    fail(target, "cannot write file", std::strerror(written ? errno : write_errno));
+}
+
+}  // namespace
+
 void write_file_atomically(const std::filesystem::path& target, std::string_view bytes) {
-  write_atomically(target, [&](const std::filesystem::path& temp) {
-    // stdio rather than ofstream: it reports *why* a write failed (errno), and fclose reports
-    // errors of the final flush such as a full disk.
-    std::FILE* f = std::fopen(temp.c_str(), "wb");
-    if (!f) fail(target, "cannot create file", std::strerror(errno));
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-    const int write_errno = errno;
-    if (std::fclose(f) != 0 || !written)
-      fail(target, "cannot write file", std::strerror(written ? errno : write_errno));
-  });
+  write_atomically(target,
+                   [&](const std::filesystem::path& temp) { write_bytes(temp, target, bytes); });
+}
+
+void write_files_atomically(
+    const std::vector<std::pair<std::filesystem::path, std::string_view>>& files) {
+  std::vector<std::filesystem::path> temps;
+  const auto discard = [&] {
+    for (const auto& temp : temps) {
+      std::error_code ignored;
+      std::filesystem::remove(temp, ignored);
+      unregister_temporary(temp);
+    }
+  };
+  try {
+    for (const auto& [target, bytes] : files) {
+      if (!target.has_filename()) fail(target, "cannot write", "not a file name");
+      // What would make a rename fail is looked for before the first rename: a directory in
+      // the way (`diff -o d` with d/report.json a directory left d/diff.png behind).
+      std::error_code ec;
+      if (std::filesystem::is_directory(target, ec))
+        fail(target, "cannot write file", "it is a directory");
+      temps.push_back(temporary_name_for(target));
+      register_temporary(temps.back());
+      write_bytes(temps.back(), target, bytes);
+    }
+    check_interrupt();
+  } catch (...) {
+    discard();
+    throw;
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::error_code ec;
+    std::filesystem::rename(temps[i], files[i].first, ec);
+    if (ec) {
+      // Rare past the checks above (the directory changed meanwhile): the files already renamed
+      // are removed too, so that no set is left half new.
+      for (std::size_t j = 0; j < i; ++j) std::filesystem::remove(files[j].first, ec);
+      discard();
+      fail(files[i].first, "cannot write", ec.message());
+    }
+    unregister_temporary(temps[i]);
+  }
 }
 
 AtomicFile::AtomicFile(std::filesystem::path target)

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <functional>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace scantrace {
 
@@ -24,6 +26,12 @@ void write_atomically(const std::filesystem::path& target,
 
 // Writes `bytes` to `target` atomically.
 void write_file_atomically(const std::filesystem::path& target, std::string_view bytes);
+
+// Writes several files so that all of them appear or none: each is written to its temporary
+// first, a target that is a directory is refused before anything is renamed, then each is renamed
+// into place (should a rename still fail, the ones already renamed are removed).
+void write_files_atomically(
+    const std::vector<std::pair<std::filesystem::path, std::string_view>>& files);
 
 // The streaming form, for outputs written piece by piece (a trace): the stream writes the
 // temporary file; commit() renames it into place. Destroyed without commit — an error, an

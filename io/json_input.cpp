@@ -6,37 +6,37 @@
 #include <cstring>
 #include <memory>
 
-#include <sys/stat.h>
+#include <unistd.h>
 
+#include "io/input_file.hpp"
 #include "io/memory_budget.hpp"
 
 namespace scantrace::json_input {
 
 std::string read_text_file(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    throw InputError(file.string(), "", "cannot read file: it is a directory");
-  // stdio for the errno: "No such file or directory" is the message users need most often.
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(file.c_str(), "rb"), &std::fclose);
-  if (!f)
-    throw InputError(file.string(), "", std::string("cannot read file: ") + std::strerror(errno));
+  // A FIFO, a device or a directory is refused before any read (io/input_file.hpp): /dev/zero
+  // was read on until std::bad_alloc, a FIFO without a writer blocked in open() for good.
+  const RegularFile in(file);
+  // The file's size against the memory there is, before the string is allocated.
+  check_memory(in.size() + kReadPadding, "reading the file (" + format_bytes(in.size()) + ")",
+               file.string(), "");
+  // Read in one call at its size, into a string with kReadPadding bytes to spare. Appending 64 KB
+  // at a time, the string grew by doubling: a 10 MB scene was copied about twice over and its
+  // pages faulted in twice, 12-18 ms against 1.5 (docs/performance.md). A file that grows while
+  // it is read is read to its end at opening (what it holds past that is not looked at).
   std::string text;
-  // A regular file is read in one call at its size, into a string with kReadPadding bytes to
-  // spare. Appending 64 KB at a time, the string grew by doubling: a 10 MB scene was copied about
-  // twice over and its pages faulted in twice, 12-18 ms against 1.5 (docs/performance.md). A
-  // pipe or a file that grows is read on to its end all the same.
-  struct stat info {};
-  if (::fstat(::fileno(f.get()), &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
-    const auto size = static_cast<std::size_t>(info.st_size);
-    text.reserve(size + kReadPadding);
-    text.resize(size);
-    text.resize(std::fread(text.data(), 1, size, f.get()));
+  text.reserve(in.size() + kReadPadding);
+  text.resize(in.size());
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::read(in.fd(), text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0)
+      throw InputError(file.string(), "", std::string("cannot read file: ") + std::strerror(errno));
+    if (n == 0) break;  // shrunk while being read
+    done += static_cast<std::size_t>(n);
   }
-  char buffer[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, f.get())) > 0) text.append(buffer, n);
-  if (std::ferror(f.get()))
-    throw InputError(file.string(), "", std::string("cannot read file: ") + std::strerror(errno));
+  text.resize(done);
   return text;
 }
 

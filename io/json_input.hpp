@@ -15,9 +15,10 @@
 
 namespace scantrace::json_input {
 
-// The whole file as bytes; InputError("<file>: cannot read file: <reason>") when it cannot be read.
-// Of a regular file, the string's capacity keeps at least kReadPadding bytes after the text, so
-// that a parser reading whole vectors past its end (simdjson) can use the text in place.
+// The whole file as bytes; InputError("<file>: cannot read file: <reason>") when it cannot be read,
+// is not a regular file (a FIFO, a device: io/input_file.hpp) or is larger than the memory
+// available. The string's capacity keeps at least kReadPadding bytes after the text, so that a
+// parser reading whole vectors past its end (simdjson) can use the text in place.
 std::string read_text_file(const std::filesystem::path& file);
 inline constexpr std::size_t kReadPadding = 64;
 

@@ -10,6 +10,8 @@
 
 #include <matio.h>
 
+#include "io/json_input.hpp"
+#include "io/mat5_layout.hpp"
 #include "io/memory_budget.hpp"
 
 namespace scantrace {
@@ -76,12 +78,14 @@ class MatReader {
     static const int quiet = Mat_LogInitFunc("scantrace", keep_matio_message);
     (void)quiet;
     last_matio_message.clear();
+    // The whole file is read first (a FIFO or a device refused, its size against the memory
+    // budget), and a v5 file's layout checked: matio reads a variable's values by the count its
+    // dimensions declare, whatever its data element holds (io/mat5_layout.hpp).
+    const std::string bytes = json_input::read_text_file(file);
+    if (const auto problem = mat5_layout_problem(bytes)) fail(problem->element, problem->problem);
     // matio opens v4, v5 and (when built with HDF5, as Debian's is) v7.3 files alike.
     mat_.reset(Mat_Open(name_.c_str(), MAT_ACC_RDONLY));
-    if (!mat_) {
-      if (!std::filesystem::exists(file)) fail("", "no such file");
-      fail("", "not a readable MATLAB .mat file");
-    }
+    if (!mat_) fail("", "not a readable MATLAB .mat file");
   }
 
   Scene read() {
@@ -271,7 +275,7 @@ class MatReader {
 }  // namespace
 
 Scene load_mat_scene(const std::filesystem::path& file, ColorClamping* clamping) {
-  return MatReader(file, clamping).read();
+  return within_memory(file.string(), [&] { return MatReader(file, clamping).read(); });
 }
 
 }  // namespace scantrace

@@ -8,6 +8,9 @@
 #include <sstream>
 #include <string>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include "io/input_error.hpp"
 
 namespace scantrace {
@@ -43,18 +46,53 @@ std::optional<std::uint64_t> user_budget() {
   return static_cast<std::uint64_t>(v) << shift;
 }
 
+// The cgroup (v2) this process is in: "0::/user.slice/..." in /proc/self/cgroup; its limits are
+// under /sys/fs/cgroup/<that path>. Each ancestor's memory.max bounds it too.
+std::optional<std::uint64_t> cgroup_left() {
+  std::ifstream in("/proc/self/cgroup");
+  std::string line, path;
+  while (std::getline(in, line))
+    if (line.rfind("0::", 0) == 0) path = line.substr(3);
+  std::optional<std::uint64_t> left;
+  for (std::string dir = path;; dir = dir.substr(0, dir.rfind('/'))) {
+    const std::string base = "/sys/fs/cgroup" + dir;
+    const auto max = read_number((base + "/memory.max").c_str());
+    const auto current = read_number((base + "/memory.current").c_str());
+    if (max && current) {
+      const std::uint64_t here = *max > *current ? *max - *current : 0;
+      left = left ? std::min(*left, here) : here;
+    }
+    if (dir.empty() || dir == "/") break;
+  }
+  return left;
+}
+
+// The address-space and data-segment limits (ulimit -v, ulimit -d; a grader's sandbox sets them)
+// less what the process already has: past them malloc fails whatever MemAvailable says.
+std::optional<std::uint64_t> rlimit_left() {
+  // /proc/self/statm: sizes in pages; the first is the virtual size, the sixth data + stack.
+  std::ifstream in("/proc/self/statm");
+  std::uint64_t size = 0, resident = 0, shared = 0, text = 0, lib = 0, data = 0;
+  in >> size >> resident >> shared >> text >> lib >> data;
+  const auto page = static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+  std::optional<std::uint64_t> left;
+  const auto limit = [&](int resource, std::uint64_t used) {
+    struct rlimit r {};
+    if (::getrlimit(resource, &r) != 0 || r.rlim_cur == RLIM_INFINITY || !in) return;
+    const std::uint64_t cur = r.rlim_cur, here = cur > used ? cur - used : 0;
+    left = left ? std::min(*left, here) : here;
+  };
+  limit(RLIMIT_AS, size * page);
+  limit(RLIMIT_DATA, data * page);
+  return left;
+}
+
 }  // namespace
 
 std::optional<std::uint64_t> available_memory() {
   std::optional<std::uint64_t> available = meminfo_available();
-  if (const auto budget = user_budget())
-    available = available ? std::min(*available, *budget) : *budget;
-  const auto max = read_number("/sys/fs/cgroup/memory.max");
-  const auto current = read_number("/sys/fs/cgroup/memory.current");
-  if (max && current) {
-    const std::uint64_t left = *max > *current ? *max - *current : 0;
-    available = available ? std::min(*available, left) : left;
-  }
+  for (const auto bound : {user_budget(), cgroup_left(), rlimit_left()})
+    if (bound) available = available ? std::min(*available, *bound) : *bound;
   return available;
 }
 
@@ -74,7 +112,19 @@ void check_memory(std::uint64_t bytes, const std::string& what, const std::strin
   throw InputError(file, element,
                    what + " needs about " + format_bytes(bytes) + ", more than the " +
                        format_bytes(*available) +
-                       " of memory available (SCANTRACE_MAX_MEMORY or the system)");
+                       " of memory available (SCANTRACE_MAX_MEMORY, the system, ulimit -v/-d "
+                       "or the cgroup)");
+}
+
+std::string out_of_memory_problem() {
+  const auto available = available_memory();
+  return "ran out of memory while reading it" +
+         (available ? " (" + format_bytes(*available) + " available now)" : std::string()) +
+         "; SCANTRACE_MAX_MEMORY sets the budget that is checked before large allocations";
+}
+
+void throw_out_of_memory(const std::string& file) {
+  throw InputError(file, "", out_of_memory_problem());
 }
 
 }  // namespace scantrace

@@ -141,20 +141,20 @@ NpyHeader parse_npy_header(std::string_view bytes, const std::string& name) {
   return h;
 }
 
-NpyImage parse_npy(std::string_view bytes, const std::string& name, std::uint64_t max_bytes) {
+NpyLayout parse_npy_layout(std::string_view bytes, const std::string& name,
+                           std::uint64_t max_bytes) {
   const NpyHeader header = parse_npy_header(bytes, name);
   const std::string& descr = header.descr;
   const bool fortran = header.fortran;
   const std::vector<std::uint64_t>& shape = header.shape;
 
-  NpyImage out;
-  std::size_t item = 0;
+  NpyLayout out;
   if (descr == "<f4") {
-    item = 4;
+    out.item = 4;
   } else if (descr == "<f8") {
-    item = 8;
+    out.item = 8;
   } else if (descr == "|u1" || descr == "<u1" || descr == "u1") {
-    item = 1, out.integer = true;
+    out.item = 1, out.integer = true;
   } else if (descr == "|O" || descr == "O") {
     throw InputError(name, "header descr",
                      "object arrays (pickles) are refused; save the canvas as float or uint8");
@@ -173,41 +173,61 @@ NpyImage parse_npy(std::string_view bytes, const std::string& name, std::uint64_
   if (shape[0] == 0 || shape[1] == 0 || shape[0] > 1000000 || shape[1] > 1000000)
     throw InputError(name, "header shape", "shape " + shape_text(shape) + " is out of range");
   const std::uint64_t count = shape[0] * shape[1] * 3;
-  if (count * item > max_bytes)
+  if (count * out.item > max_bytes)
     throw InputError(name, "header shape",
-                     "shape " + shape_text(shape) + " declares " + format_bytes(count * item) +
-                         ", more than the " + format_bytes(max_bytes) + " allowed");
-  const std::size_t data = header.data_offset;
-  if (bytes.size() - data != count * item)
+                     "shape " + shape_text(shape) + " declares " +
+                         format_bytes(count * out.item) + ", more than the " +
+                         format_bytes(max_bytes) + " allowed");
+  out.data = header.data_offset;
+  if (bytes.size() - out.data != count * out.item)
     throw InputError(name, "data",
-                     "holds " + std::to_string(bytes.size() - data) + " bytes, the shape " +
-                         shape_text(shape) + " needs " + std::to_string(count * item));
+                     "holds " + std::to_string(bytes.size() - out.data) + " bytes, the shape " +
+                         shape_text(shape) + " needs " + std::to_string(count * out.item));
   out.height = static_cast<int>(shape[0]);
   out.width = static_cast<int>(shape[1]);
-  out.values.resize(count);
-  const char* p = bytes.data() + data;
+  return out;
+}
+
+float npy_value(const NpyLayout& layout, std::string_view bytes, std::size_t k,
+                const std::string& name) {
   static_assert(std::endian::native == std::endian::little,
                 "the reader assumes a little-endian host");
-  for (std::size_t k = 0; k < count; ++k) {
-    double v;
-    if (item == 1) {
-      v = static_cast<unsigned char>(p[k]);
-    } else if (item == 4) {
-      float f;
-      std::memcpy(&f, p + 4 * k, 4);
-      v = f;
-    } else {
-      std::memcpy(&v, p + 8 * k, 8);
-    }
-    if (!std::isfinite(v)) {
-      const std::uint64_t pixel = k / 3;
-      throw InputError(name,
-                       "pixel [" + std::to_string(pixel / shape[1]) + "][" +
-                           std::to_string(pixel % shape[1]) + "]",
-                       std::isnan(v) ? "NaN" : "infinite value");
-    }
-    out.values[k] = static_cast<float>(v);
+  const char* p = bytes.data() + layout.data;
+  double v;
+  if (layout.item == 1) {
+    v = static_cast<unsigned char>(p[k]);
+  } else if (layout.item == 4) {
+    float f;
+    std::memcpy(&f, p + 4 * k, 4);
+    v = f;
+  } else {
+    std::memcpy(&v, p + 8 * k, 8);
   }
+  // Checked after the conversion to the float that is compared: a float64 above FLT_MAX is
+  // finite as stored and infinite once converted (report.json then held nulls).
+  const auto f = static_cast<float>(v);
+  if (!std::isfinite(f)) {
+    const std::size_t pixel = k / 3;
+    const std::string where = "pixel [" + std::to_string(pixel / layout.width) + "][" +
+                              std::to_string(pixel % layout.width) + "]";
+    if (std::isnan(v)) throw InputError(name, where, "NaN");
+    if (std::isinf(v)) throw InputError(name, where, "infinite value");
+    throw InputError(name, where,
+                     "value " + std::to_string(v) +
+                         " is beyond the range of a float32 (colours are compared as float32)");
+  }
+  return f;
+}
+
+NpyImage parse_npy(std::string_view bytes, const std::string& name, std::uint64_t max_bytes) {
+  const NpyLayout layout = parse_npy_layout(bytes, name, max_bytes);
+  NpyImage out;
+  out.height = layout.height, out.width = layout.width;
+  out.dtype = layout.dtype;
+  out.integer = layout.integer;
+  out.values.resize(layout.values());
+  for (std::size_t k = 0; k < out.values.size(); ++k)
+    out.values[k] = npy_value(layout, bytes, k, name);
   return out;
 }
 

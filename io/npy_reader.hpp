@@ -29,6 +29,26 @@ struct NpyHeader {
 };
 NpyHeader parse_npy_header(std::string_view bytes, const std::string& name);
 
+// The header of a .npy file, checked: dtype, shape, and a data part of exactly the declared size.
+struct NpyLayout {
+  int height = 0, width = 0;
+  std::string dtype;
+  bool integer = false;
+  std::size_t item = 0;  // bytes per value: 1, 4 or 8
+  std::size_t data = 0;  // offset of the first value
+  std::size_t values() const { return static_cast<std::size_t>(height) * width * 3; }
+};
+
+// Checks the header of `bytes` (throws InputError naming `name` and the header field); the data
+// it declares may not exceed `max_bytes`. Nothing is allocated for the values.
+NpyLayout parse_npy_layout(std::string_view bytes, const std::string& name,
+                           std::uint64_t max_bytes = std::uint64_t{1} << 32);
+
+// Value k (0-based, row-major, channels last) as the float32 it is compared as; InputError naming
+// the pixel for NaN, an infinity, or a float64 beyond float32's range.
+float npy_value(const NpyLayout& layout, std::string_view bytes, std::size_t k,
+                const std::string& name);
+
 // Parses the bytes of a .npy file; `name` is used in error messages. Throws InputError.
 // `max_bytes` caps the declared data size before anything is allocated.
 NpyImage parse_npy(std::string_view bytes, const std::string& name,

@@ -4,11 +4,13 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <string_view>
 
 #include <tiny_obj_loader.h>
+
+#include "io/json_input.hpp"
+#include "io/memory_budget.hpp"
 
 namespace scantrace {
 namespace {
@@ -195,12 +197,10 @@ Mesh parse_obj(const std::string& text, const std::string& name,
 }
 
 Mesh load_obj(const std::filesystem::path& file, std::vector<std::string>* warnings) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), "", "cannot open the file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(file.string(), "", "cannot read the file");
-  return parse_obj(buffer.str(), file.string(), warnings);
+  // Read as the scene files are: a FIFO or a device refused, the size against the memory budget.
+  return within_memory(file.string(), [&] {
+    return parse_obj(json_input::read_text_file(file), file.string(), warnings);
+  });
 }
 
 bool is_obj_file(const std::filesystem::path& file) {

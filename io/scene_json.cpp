@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "io/json_input.hpp"
+#include "io/memory_budget.hpp"
 #include "io/pickled_scene.hpp"
 #include "io/scene_json.hpp"
 #include "io/scene_json_fast.hpp"
@@ -218,14 +219,16 @@ Scene parse_scene(std::istream& in, const std::string& name_for_errors, ColorCla
 }
 
 Scene load_scene(const std::filesystem::path& file, ColorClamping* clamping) {
-  const std::string text = json_input::read_text_file(file);
-  // The course's hw1.npy (a pickled dict of arrays): the same scene in another container.
-  if (looks_pickled(text) || file.extension() == ".npy") {
-    Scene s = parse_pickled_scene(text, file.string());
-    finish_scene(s, file.string(), clamping);
-    return s;
-  }
-  return parse(text, text.capacity() - text.size(), file.string(), clamping);
+  return within_memory(file.string(), [&] {
+    const std::string text = json_input::read_text_file(file);
+    // The course's hw1.npy (a pickled dict of arrays): the same scene in another container.
+    if (looks_pickled(text) || file.extension() == ".npy") {
+      Scene s = parse_pickled_scene(text, file.string());
+      finish_scene(s, file.string(), clamping);
+      return s;
+    }
+    return parse(text, text.capacity() - text.size(), file.string(), clamping);
+  });
 }
 
 }  // namespace scantrace

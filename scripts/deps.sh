@@ -26,6 +26,9 @@ packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 l
           ccache
           pybind11-dev python3-dev python3-numpy python3-pytest)
 packages+=(pkg-config libmatio-dev libxcb1-dev libhwy-dev libdeflate-dev libsimdjson-dev)
+# libjpeg's header read (grade/jpeg_header.hpp) and zlib for the .mat layout check
+# (io/mat5_layout.hpp): both come with libopencv-dev and libmatio-dev, named here as used.
+packages+=(libjpeg-dev zlib1g-dev)
 # Stepping through replays: Qt's headers for the window's focus fix (cli/highgui_focus.hpp), and
 # for the tests a virtual display, xdotool and headless chromium.
 packages+=(qtbase5-dev xvfb xdotool chromium)

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace scantrace {
@@ -44,6 +45,22 @@ T integer(const json& v) {
     if (u <= static_cast<std::uint64_t>(std::numeric_limits<T>::max())) return static_cast<T>(u);
   }
   throw std::invalid_argument("expected an integer in range, got " + v.dump());
+}
+
+// A triangle_skipped event's reason, one of trace_schema.json's list (the SkipReason names a skip
+// is traced with; "hidden" is a z-buffer count, never a skip event). Anything else ("bogus", an
+// HTML tag) was accepted and shown as is by the player and the messages.
+std::string skip_reason(const json& v) {
+  static constexpr const char* kReasons[] = {"too_few_vertices", "out_of_range",  "degenerate",
+                                             "no_pixel_centre",  "offscreen",     "culled"};
+  const std::string reason = v.get<std::string>();
+  for (const char* known : kReasons)
+    if (reason == known) return reason;
+  std::string list;
+  for (const char* known : kReasons) list += (list.empty() ? "" : ", ") + std::string(known);
+  throw std::invalid_argument("triangle_skipped reason " +
+                              v.dump(-1, ' ', true, json::error_handler_t::replace) +
+                              " is not one of " + list);
 }
 
 std::vector<int> integers(const json& v) {
@@ -286,7 +303,7 @@ Event event_from_json(const json& j) {
     return TriangleEnd{integer<int>(j.at("triangle")), integer<i64>(j.at("rows")),
                        integer<i64>(j.at("pixels"))};
   if (type == "triangle_skipped")
-    return TriangleSkipped{integer<int>(j.at("triangle")), j.at("reason").get<std::string>()};
+    return TriangleSkipped{integer<int>(j.at("triangle")), skip_reason(j.at("reason"))};
   if (type == "footer") return Footer{integer<i64>(j.at("events")), j.at("truncated").get<bool>()};
   throw std::invalid_argument("unknown event type \"" + type + "\"");
 }

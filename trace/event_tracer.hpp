@@ -45,8 +45,11 @@ class EventTracer {
   void triangle_begin(const PolygonSetup& s) { emit(to_event(s)); }
   void edge_table(const EdgeTableView& v) { emit(to_event(v)); }
   void scanline(const ScanlineStep& s) { emit(to_event(s)); }
-  void pixel(int t, i64 x, i64 y, Color c, double w) { emit(Pixel{t, x, y, c, w, {}}); }
+  void pixel(int t, i64 x, i64 y, Color c, double w) {
+    if (wants_column(x)) emit(Pixel{t, x, y, c, w, {}});
+  }
   void pixel(int t, i64 x, i64 y, Color c, double w, const DepthTest& d) {
+    if (!wants_column(x)) return;
     emit(Pixel{t, x, y, c, w,
                PixelDepthTest{d.passed, d.depth,
                               std::isinf(d.stored) ? std::nullopt : std::optional(d.stored)}});
@@ -61,6 +64,8 @@ class EventTracer {
   Sink& sink() { return sink_; }
 
  private:
+  bool wants_column(i64 x) const { return !filter_.columns || filter_.columns->contains(x); }
+
   void emit(const Event& e) {
     if (full_) return;
     if (filter_.max_events && events_ >= *filter_.max_events) {

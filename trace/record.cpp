@@ -55,7 +55,8 @@ Header header_for(const Input& input, const FillOptions& options, TraceLevel lev
 template <class Input>
 Trace record(const Input& input, const FillOptions& options, const TraceFilter& filter,
              RgbImage* image) {
-  EventTracer<Recorder> tracer(Recorder(header_for(input, options, filter.level)), filter);
+  EventTracer<Recorder> tracer(Recorder(header_for(input, options, filter.level), filter.columns),
+                               filter);
   fill_traced(tracer, input, options, image);
   return tracer.finish();
 }

@@ -1,10 +1,12 @@
 #include "trace.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <istream>
 #include <nlohmann/json.hpp>
 
 #include "event_json.hpp"
+#include "io/input_file.hpp"
 #include "io/json_input.hpp"
 #include "io/memory_budget.hpp"
 #include "trace_check.hpp"
@@ -81,6 +83,10 @@ const PixelWrite& PixelHistory::final() const {
 }
 
 Trace Trace::load(const std::filesystem::path& path, bool drop_unfinished_last_line) {
+  // A FIFO or a device is refused before the stream opens it (a FIFO blocked that open for
+  // good, /dev/zero was one endless line): io/input_file.hpp.
+  if (const std::string problem = regular_file_problem(path); !problem.empty())
+    throw TraceError(path.string() + ": cannot open trace: " + problem);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw TraceError(path.string() + ": cannot open trace");
   std::error_code ec;
@@ -88,7 +94,11 @@ Trace Trace::load(const std::filesystem::path& path, bool drop_unfinished_last_l
   if (!ec)
     check_memory(static_cast<std::uint64_t>(bytes) * kMemoryPerTraceByte,
                  "loading this trace of " + format_bytes(bytes), path.string(), "");
-  return parse(in, path.string(), drop_unfinished_last_line);
+  try {
+    return parse(in, path.string(), drop_unfinished_last_line);
+  } catch (const std::bad_alloc&) {
+    throw TraceError(path.string() + ": " + out_of_memory_problem());
+  }
 }
 
 Trace Trace::parse(std::istream& in, const std::string& name, bool drop_unfinished_last_line) {
@@ -158,7 +168,8 @@ Trace Trace::parse(std::istream& in, const std::string& name, bool drop_unfinish
   return t;
 }
 
-Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
+Trace Trace::from_events(std::vector<Event> events, const std::string& name,
+                         const std::optional<RowRange>& pixel_columns) {
   Trace t;
   t.name_ = name;
   if (events.empty() || !std::holds_alternative<Header>(events.front()))
@@ -203,6 +214,8 @@ Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
       ix.scanlines[s->y] = i;
       t.rows_[s->y].push_back(i);
     } else if (const Pixel* p = std::get_if<Pixel>(&e)) {
+      if (!ix.pixels.empty() && std::get<Pixel>(events[ix.pixels.back()]).y > p->y)
+        ix.pixels_by_row = false;
       ix.pixels.push_back(i);
       t.pixel_events_[pixel_key(p->x, p->y)].push_back(i);
     }
@@ -210,7 +223,7 @@ Trace Trace::from_events(std::vector<Event> events, const std::string& name) {
   // The cheap consistency checks run on every trace before anyone replays, steps or queries it:
   // a record that contradicts itself must not be narrated (trace_check.hpp; the thorough ones
   // are `scantrace check`).
-  check_consistency(events, name, CheckDepth::cheap);
+  check_consistency(events, name, CheckDepth::cheap, pixel_columns);
   t.events_ = std::move(events);
   return t;
 }
@@ -281,6 +294,31 @@ std::vector<const Scanline*> Trace::scanlines(int t) const {
 std::vector<const Pixel*> Trace::pixels(int t) const {
   std::vector<const Pixel*> out;
   for (std::size_t i : at(t).pixels) out.push_back(&std::get<Pixel>(events_[i]));
+  return out;
+}
+
+std::vector<const Scanline*> Trace::scanlines(int t, i64 first_row, i64 last_row) const {
+  std::vector<const Scanline*> out;
+  const auto& rows = at(t).scanlines;
+  for (auto it = rows.lower_bound(first_row); it != rows.end() && it->first <= last_row; ++it)
+    out.push_back(&std::get<Scanline>(events_[it->second]));
+  return out;
+}
+
+std::vector<const Pixel*> Trace::pixels(int t, i64 first_row, i64 last_row) const {
+  const TriangleIndex& ix = at(t);
+  const auto y_of = [&](std::size_t i) { return std::get<Pixel>(events_[i]).y; };
+  auto begin = ix.pixels.begin(), end = ix.pixels.end();
+  if (ix.pixels_by_row) {
+    // Rows in order (as the fill writes them): the rows asked for are found by bisection, so a
+    // replay's frame costs its own rows, not every pixel of the triangle.
+    begin = std::partition_point(begin, end, [&](std::size_t i) { return y_of(i) < first_row; });
+    end = std::partition_point(begin, end, [&](std::size_t i) { return y_of(i) <= last_row; });
+  }
+  std::vector<const Pixel*> out;
+  for (auto it = begin; it != end; ++it)
+    if (const i64 y = y_of(*it); y >= first_row && y <= last_row)
+      out.push_back(&std::get<Pixel>(events_[*it]));
   return out;
 }
 

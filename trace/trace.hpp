@@ -20,6 +20,7 @@
 #include "events.hpp"
 #include "io/input_error.hpp"
 #include "src/scene.hpp"
+#include "trace_filter.hpp"
 
 namespace scantrace::trace {
 
@@ -56,7 +57,9 @@ class Trace {
   static Trace parse(std::istream& in, const std::string& name,
                      bool drop_unfinished_last_line = false);
   // Checks the structure (header first, version, footer last) and indexes the events.
-  static Trace from_events(std::vector<Event> events, const std::string& name);
+  // `pixel_columns`: the pixel events were recorded for these columns only (TraceFilter::columns).
+  static Trace from_events(std::vector<Event> events, const std::string& name,
+                           const std::optional<RowRange>& pixel_columns = std::nullopt);
 
   const Header& header() const;
   const std::vector<Event>& events() const { return events_; }
@@ -81,6 +84,9 @@ class Trace {
   bool has_scanline(int t, i64 y) const;
   std::vector<const Scanline*> scanlines(int t) const;  // by increasing y
   std::vector<const Pixel*> pixels(int t) const;        // pixel events, in order
+  // The same limited to rows first_row..last_row, at the cost of those rows (a replay frame's).
+  std::vector<const Scanline*> scanlines(int t, i64 first_row, i64 last_row) const;
+  std::vector<const Pixel*> pixels(int t, i64 first_row, i64 last_row) const;
   std::optional<TriangleEnd> triangle_end(int t) const;
   std::optional<TriangleSkipped> skipped(int t) const;
   PixelHistory pixel_history(i64 x, i64 y) const;
@@ -90,6 +96,7 @@ class Trace {
     std::optional<std::size_t> begin, edge_table, end, skipped;
     std::map<i64, std::size_t> scanlines;
     std::vector<std::size_t> pixels;
+    bool pixels_by_row = true;  // their rows never decrease: pixels(t, rows) bisects
   };
   const TriangleIndex& at(int t) const;
 

@@ -85,8 +85,12 @@ struct TriangleState {
 
 class Checker {
  public:
-  Checker(const std::vector<Event>& events, const std::string& name, CheckDepth depth)
-      : events_(events), name_(name), thorough_(depth == CheckDepth::thorough) {}
+  Checker(const std::vector<Event>& events, const std::string& name, CheckDepth depth,
+          const std::optional<RowRange>& pixel_columns)
+      : events_(events),
+        name_(name),
+        thorough_(depth == CheckDepth::thorough),
+        columns_(pixel_columns) {}
 
   CheckSummary run() {
     const Header& h = std::get<Header>(events_.front());
@@ -323,6 +327,20 @@ class Checker {
     return nullptr;
   }
 
+  // The pixels of a row's span (or intervals) in columns c.first..c.last.
+  static i64 covered_in(const Scanline& r, const RowRange& c) {
+    const auto overlap = [&](const Span& p) {
+      return std::max<i64>(0, std::min(p.x_end, c.last == INT64_MAX ? p.x_end : c.last + 1) -
+                                  std::max(p.x_begin, c.first));
+    };
+    if (r.intervals) {
+      i64 n = 0;
+      for (const Interval& i : *r.intervals) n += overlap(i.pixels);
+      return n;
+    }
+    return r.span ? overlap(*r.span) : 0;
+  }
+
   // The pixels a row's span (or intervals) covers, for the pixel-level and count checks.
   static i64 covered(const Scanline& r) {
     if (r.intervals) {
@@ -420,14 +438,16 @@ class Checker {
       }
     }
     const i64 n = covered(r);
-    // Pixel level: this row's pixels came just before, and are exactly the span's.
+    // Pixel level: this row's pixels came just before, and are exactly the span's (in the
+    // recorded columns, when only some were).
     if (level_ == 3) {
       const i64 got = s.pending_y ? static_cast<i64>(s.pending_x.size()) : 0;
+      const i64 expected = columns_ ? covered_in(r, *columns_) : n;
       if (s.pending_y && *s.pending_y != r.y)
         fail(row + ": the pixel events before it are of row " + std::to_string(*s.pending_y));
-      if (got != n)
-        fail(row + ": " + std::to_string(got) + " pixel events for a span of " + std::to_string(n) +
-             " pixels");
+      if (got != expected)
+        fail(row + ": " + std::to_string(got) + " pixel events for a span of " +
+             std::to_string(expected) + " pixels" + (columns_ ? " in the recorded columns" : ""));
       for (i64 x : s.pending_x) {
         bool in = false;
         if (r.intervals) {
@@ -568,6 +588,7 @@ class Checker {
   const std::vector<Event>& events_;
   const std::string& name_;
   const bool thorough_;
+  const std::optional<RowRange> columns_;
   std::size_t line_ = 1;
   int width_ = 0, height_ = 0, level_ = 1, bits_ = 8;
   bool closed_ = false;
@@ -579,8 +600,8 @@ class Checker {
 }  // namespace
 
 CheckSummary check_consistency(const std::vector<Event>& events, const std::string& name,
-                               CheckDepth depth) {
-  return Checker(events, name, depth).run();
+                               CheckDepth depth, const std::optional<RowRange>& pixel_columns) {
+  return Checker(events, name, depth, pixel_columns).run();
 }
 
 }  // namespace scantrace::trace

@@ -17,10 +17,12 @@
 // in the file: events[i] is line i + 1). A trace cut short (no footer, --partial) is checked as
 // far as it goes.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "events.hpp"
+#include "trace_filter.hpp"
 
 namespace scantrace::trace {
 
@@ -33,7 +35,11 @@ struct CheckSummary {
 
 // Throws TraceError at the first contradiction. `events` starts with the header (checked by
 // Trace::from_events before this is called).
+// `pixel_columns`: the pixel events were recorded for these columns only (TraceFilter::columns,
+// an in-memory recording such as `why`'s); each row's pixel events are then exactly its span's
+// pixels in those columns.
 CheckSummary check_consistency(const std::vector<Event>& events, const std::string& name,
-                               CheckDepth depth);
+                               CheckDepth depth,
+                               const std::optional<RowRange>& pixel_columns = std::nullopt);
 
 }  // namespace scantrace::trace

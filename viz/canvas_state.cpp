@@ -145,7 +145,8 @@ void CanvasState::paint_rows(const trace::Trace& trace, int triangle, std::int64
   // Pixel events, when present, are the record of what was written; a row without them (a trace
   // cut short by --max-events) falls back to its span.
   std::vector<std::int64_t> rows_with_pixels;
-  for (const trace::Pixel* p : trace.pixels(triangle))
+  // Only the step's rows are looked up: a frame's cost must not grow with the triangle's size.
+  for (const trace::Pixel* p : trace.pixels(triangle, first_row, last_row))
     if (p->y >= first_row && p->y <= last_row) {
       if (!p->depth_test) {
         put(p->x, p->y, p->color);
@@ -159,7 +160,7 @@ void CanvasState::paint_rows(const trace::Trace& trace, int triangle, std::int64
       if (rows_with_pixels.empty() || rows_with_pixels.back() != p->y)
         rows_with_pixels.push_back(p->y);
     }
-  for (const trace::Scanline* s : trace.scanlines(triangle))
+  for (const trace::Scanline* s : trace.scanlines(triangle, first_row, last_row))
     if (s->y >= first_row && s->y <= last_row &&
         std::find(rows_with_pixels.begin(), rows_with_pixels.end(), s->y) == rows_with_pixels.end())
       paint_scanline(trace, *s);

@@ -120,10 +120,24 @@ HtmlPlayerResult write_html_player(Replayer& replayer, std::size_t first, std::s
   data["labels"] = std::move(labels);
   data["rows"] = std::move(rows);
   data["frames"] = std::move(frames);
-  // "</" inside a string would end the script element early (a file named "</script>.jsonl").
-  std::string json = data.dump();
-  for (std::size_t at = 0; (at = json.find("</", at)) != std::string::npos; at += 3)
-    json.replace(at, 2, "<\\/");
+  // Inside the inline script, "</script" would end the element early and "<!--" switch the
+  // parser into its escaped state (a directory named "c<!--<script>" in the trace's path: 0 steps
+  // shown). In JSON, <, > and & occur only inside strings, where \u003c is the same character:
+  // written so, no HTML-significant sequence is left in the data. Bytes that are not UTF-8 (a
+  // file name's) are replaced rather than thrown on.
+  const std::string dumped = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  std::string json;
+  json.reserve(dumped.size());
+  for (const char c : dumped) {
+    if (c == '<')
+      json += "\\u003c";
+    else if (c == '>')
+      json += "\\u003e";
+    else if (c == '&')
+      json += "\\u0026";
+    else
+      json += c;
+  }
   std::string page(html_player_page());
   // The data first: the title placeholder comes before it in the page, so a source named
   // "@DATA@" cannot catch the data.

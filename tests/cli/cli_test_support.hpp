@@ -64,13 +64,20 @@ struct RunResult {
 };
 
 // Runs the scantrace binary with `args` in the directory `cwd`, capturing stdout and stderr.
+// With `timeout_seconds`, a run that has not ended by then is killed (SIGKILL: exit code 137), so
+// that a regression to a hang fails the test instead of hanging it.
 inline RunResult run_scantrace(const std::filesystem::path& cwd,
-                               const std::vector<std::string>& args) {
+                               const std::vector<std::string>& args, int timeout_seconds = 0) {
   const std::filesystem::path out = cwd / ".stdout.txt", err = cwd / ".stderr.txt";
   // Built by appending: GCC 12 raises a false -Wrestrict alarm on "literal" + std::string&&.
   std::string command = "cd ";
   command += shell_quote(cwd.string());
   command += " && ";
+  if (timeout_seconds > 0) {
+    command += "timeout -s KILL ";
+    command += std::to_string(timeout_seconds);
+    command += ' ';
+  }
   command += shell_quote(SCANTRACE_BINARY);
   for (const std::string& a : args) {
     command += ' ';

@@ -266,3 +266,55 @@ TEST_CASE(".mat: bad files name the variable and the row, one line, exit 1", "[m
   CHECK_THAT(load_error(dir / "text.mat"),
              Catch::EndsWith("text.mat: not a readable MATLAB .mat file"));
 }
+
+TEST_CASE(".mat: a damaged v5 file is one line, never values from beyond its data",
+          "[mat][errors][robustness]") {
+  // matio reads a numeric variable by the count its dimensions declare: a file missing its last
+  // bytes rendered differently from the intact one, and a faces variable declaring 2x3 while
+  // holding 1x3 took its second row from freed memory (issue 37 #2).
+  TempDir dir;
+  const std::vector<MatVar> vars = small_vars();
+  write_mat(dir / "v5.mat", vars);
+  write_mat(dir / "zlib.mat", vars, MAT_FT_MAT5, MAT_COMPRESSION_ZLIB);
+  REQUIRE_NOTHROW(load_mat_scene(dir / "v5.mat"));
+  REQUIRE_NOTHROW(load_mat_scene(dir / "zlib.mat"));
+  const std::string v5 = scantrace::test::read_text(dir / "v5.mat");
+  const std::string zlib = scantrace::test::read_text(dir / "zlib.mat");
+
+  // Cut at every length from 8 bytes short down to the header: each one refused.
+  for (std::size_t cut = 1; cut <= 8; ++cut) {
+    CAPTURE(cut);
+    scantrace::test::write_text(dir / "cut.mat", v5.substr(0, v5.size() - cut));
+    CHECK_THAT(load_error(dir / "cut.mat"), Catch::Contains("cut.mat") &&
+                                                Catch::Contains("truncated"));
+  }
+  for (std::size_t cut : {1, 4, 12}) {
+    CAPTURE(cut);
+    scantrace::test::write_text(dir / "cut.mat", zlib.substr(0, zlib.size() - cut));
+    CHECK_THAT(load_error(dir / "cut.mat"), Catch::Contains("cut.mat: ") &&
+                                                (Catch::Contains("truncated") ||
+                                                 Catch::Contains("damaged")));
+  }
+
+  // faces written as 1x3, its dimensions then patched to 2x3: the data holds 3 values.
+  std::vector<MatVar> one_face = vars;
+  one_face[1].rows = 1;
+  one_face[1].column_major = {1, 2, 3};
+  write_mat(dir / "one.mat", one_face);
+  std::string patched = scantrace::test::read_text(dir / "one.mat");
+  const std::size_t name = patched.find("faces");
+  REQUIRE(name != std::string::npos);
+  // Before the name: its tag (8 bytes), and before that the dimensions' data, rows then columns.
+  REQUIRE(patched[name - 16] == 1);
+  patched[name - 16] = 2;
+  scantrace::test::write_text(dir / "patched.mat", patched);
+  CHECK_THAT(load_error(dir / "patched.mat"),
+             Catch::Contains("patched.mat: faces: the file is damaged: its dimensions 2x3 declare "
+                             "6 values but its data holds 3"));
+
+  // Through the command: one line, exit 1.
+  const auto r = run_scantrace(dir.path(), {"render", "patched.mat", "-o", "p.png"});
+  CHECK(r.exit_code == 1);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(std::filesystem::exists(dir / "p.png"));
+}

@@ -110,8 +110,11 @@ TEST_CASE("image files: a huge declared size and a truncated PNG are refused bef
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find("100000x100000") != std::string::npos);
   }
+  // The same header declaring 5 x 5, cut inside its chunks (the size is checked first).
+  std::string small = png;
+  small.replace(16, 8, std::string("\x00\x00\x00\x05\x00\x00\x00\x05", 8));
   try {
-    scantrace::grade::decode_image(png.substr(0, 40), "cut.png");
+    scantrace::grade::decode_image(small.substr(0, 40), "cut.png");
     FAIL("no error");
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find("truncated") != std::string::npos);

@@ -77,7 +77,7 @@ std::string png_data_uri(const PixelsOp& p) {
   RgbImage image(p.area.width, p.area.height);
   for (int y = 0; y < p.area.height; ++y)
     for (int x = 0; x < p.area.width; ++x) {
-      const Vec3b& c = p.bgr[static_cast<std::size_t>(y) * p.area.width + x];
+      const Vec3b& c = (*p.bgr)[static_cast<std::size_t>(y) * p.area.width + x];
       image(x, y) = {c[2] / 255.0f, c[1] / 255.0f, c[0] / 255.0f};
     }
   return "data:image/png;base64," + base64(png::encode(image));

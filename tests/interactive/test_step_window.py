@@ -344,6 +344,12 @@ def main():
             status = w.quit()
             assert status == 0, f"q: exit status {status}"
             assert "median" in w.log(), w.log()
+            # The exit summary counts every step shown, the first one included: as many as the
+            # "step N / M:" lines the window logged (issue 36: it said 3 after 4 were shown).
+            logged = len(re.findall(r"step \d+ / \d+: ", w.log()))
+            summary = re.search(r"step: (\d+) steps shown", w.log())
+            assert summary and int(summary.group(1)) == logged, \
+                f"summary {summary and summary.group(0)!r}, {logged} steps logged"
             checks += 1
         finally:
             w.kill()

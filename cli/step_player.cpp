@@ -210,7 +210,8 @@ bool StepPlayer::key(int code) {
       help_ = !help_;
       break;
     case PlayerKey::quit:
-      if (help_) {  // Esc closes the help first
+      // Esc closes the keys first; q always quits, as the keys say (issue 36: it only closed them).
+      if (help_ && (code & 0xff) != 'q') {
         help_ = false;
         break;
       }

@@ -121,7 +121,7 @@ std::vector<std::string> key_help_lines() {
           "click a pixel cell   select it: marked, with its history",
           "s                    save this frame as PNG",
           "?                    show / hide these keys",
-          "q / Esc              quit"};
+          "q / Esc              quit (Esc first closes these keys)"};
 }
 
 void draw_key_help(FrameView& frame, const Typography& type) {

@@ -341,6 +341,9 @@ def main():
             assert diff[y0:y1 + 1, x0:x1 + 1].any(), "the mark is gone on step 20"
             assert diff[:, WIDTH // 2:].any(), "no history box on the side panel"
             checks += 1
+            # q quits even with the keys shown (issue 36: the first q only closed them).
+            w.keys("question")
+            poll(lambda: images.difference(w.frame(), frames[19]) > 0.05, "the keys overlay")
             status = w.quit()
             assert status == 0, f"q: exit status {status}"
             assert "median" in w.log(), w.log()

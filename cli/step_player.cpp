@@ -275,7 +275,8 @@ cv::Mat StepPlayer::image() {
 
 std::filesystem::path StepPlayer::save() {
   std::vector<unsigned char> png;
-  if (!cv::imencode(".png", frame(), png))
+  // What the window shows (issue 36): the frame with its boxes, and the status line.
+  if (!cv::imencode(".png", image(), png))
     throw std::runtime_error(fmt::format("cannot encode step {} as PNG", index_ + 1));
   const std::filesystem::path file =
       (save_dir_ / fmt::format("step_{:05d}.png", index_ + 1)).lexically_normal();

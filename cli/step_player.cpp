@@ -210,7 +210,8 @@ bool StepPlayer::key(int code) {
       help_ = !help_;
       break;
     case PlayerKey::quit:
-      if (help_) {  // Esc closes the help first
+      // Esc closes the keys first; q always quits, as the keys say (issue 36: it only closed them).
+      if (help_ && (code & 0xff) != 'q') {
         help_ = false;
         break;
       }
@@ -274,7 +275,8 @@ cv::Mat StepPlayer::image() {
 
 std::filesystem::path StepPlayer::save() {
   std::vector<unsigned char> png;
-  if (!cv::imencode(".png", frame(), png))
+  // What the window shows (issue 36): the frame with its boxes, and the status line.
+  if (!cv::imencode(".png", image(), png))
     throw std::runtime_error(fmt::format("cannot encode step {} as PNG", index_ + 1));
   const std::filesystem::path file =
       (save_dir_ / fmt::format("step_{:05d}.png", index_ + 1)).lexically_normal();

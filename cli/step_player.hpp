@@ -64,11 +64,12 @@ class StepPlayer {
   cv::Size frame_size() const { return replayer_->frame_size(); }
 
   void show(std::size_t index);  // clamped to the steps
-  // The frame of the current step with the selection marked (what `s` saves).
+  // The frame of the current step with the selection marked.
   cv::Mat frame();
-  // The whole image of the window: frame() with the help or history boxes, and the status strip.
+  // The whole image of the window (what `s` saves): frame() with the help or history boxes, and
+  // the status strip.
   cv::Mat image();
-  // Writes frame() to DIR/step_NNNNN.png atomically and returns the path.
+  // Writes image() to DIR/step_NNNNN.png atomically and returns the path.
   std::filesystem::path save();
 
  private:

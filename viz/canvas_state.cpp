@@ -72,6 +72,16 @@ bool CanvasState::written(std::int64_t x, std::int64_t y) const {
   return mask_[index(x, y)] != 0;
 }
 
+const Vec3b* CanvasState::row_pixels(std::int64_t y) const {
+  if (y < window_.y || y >= window_.y + window_.height || window_.width <= 0) return nullptr;
+  return image_.data() + index(window_.x, y);
+}
+
+const std::uint8_t* CanvasState::row_mask(std::int64_t y) const {
+  if (y < window_.y || y >= window_.y + window_.height || window_.width <= 0) return nullptr;
+  return mask_.data() + index(window_.x, y);
+}
+
 Vec3b CanvasState::bgr(std::int64_t x, std::int64_t y) const {
   if (!written(x, y)) return {};
   return image_[index(x, y)];

@@ -41,6 +41,10 @@ class CanvasState {
   bool depth_test() const { return depth_test_; }
   bool written(std::int64_t x, std::int64_t y) const;
   Vec3b bgr(std::int64_t x, std::int64_t y) const;  // only meaningful where written()
+  // Canvas row y of the window, from its column window().x: the pixels and the mask (255:
+  // written), for views that read whole rows; nullptr when the row is outside the window.
+  const Vec3b* row_pixels(std::int64_t y) const;
+  const std::uint8_t* row_mask(std::int64_t y) const;
 
   std::int64_t writes() const { return writes_; }          // pixel writes so far
   std::int64_t overwrites() const { return overwrites_; }  // of them, onto a written pixel

@@ -71,7 +71,8 @@ void FrameView::text(const std::string& text, Point origin, HersheyFont font, do
   add(TextOp{text, origin, font, scale, colour, thickness, type}, std::move(mark));
 }
 
-void FrameView::pixels(const Rect& area, std::vector<Vec3b> bgr, std::optional<Mark> mark) {
+void FrameView::pixels(const Rect& area, std::shared_ptr<const std::vector<Vec3b>> bgr,
+                       std::optional<Mark> mark) {
   add(PixelsOp{area, std::move(bgr)}, std::move(mark));
 }
 

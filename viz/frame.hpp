@@ -16,6 +16,7 @@
 // point, a label, ...), its name ("v0", "e2", the label's text) and the frame area it covers. The
 // tests read the marks instead of guessing them from pixels.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -76,7 +77,9 @@ struct TextOp {  // cv::putText, `origin` on the baseline
 };
 struct PixelsOp {  // a block of pixels copied onto the frame (the magnified canvas cells)
   Rect area;
-  std::vector<Vec3b> bgr;  // area.width * area.height, row by row
+  // area.width * area.height, row by row; shared, so that a frame's ops copy cheaply and the
+  // composer reads what it drew without a second copy.
+  std::shared_ptr<const std::vector<Vec3b>> bgr;
 };
 
 using DrawOpBody = std::variant<RectOp, LineOp, CircleOp, TextOp, PixelsOp>;
@@ -131,8 +134,11 @@ class FrameView {
               LineType type = LineType::plain, std::optional<Mark> mark = {});
   void text(const std::string& text, Point origin, HersheyFont font, double scale,
             const Scalar& colour, int thickness, LineType type, std::optional<Mark> mark = {});
-  void pixels(const Rect& area, std::vector<Vec3b> bgr, std::optional<Mark> mark = {});
-  void pixel(Point p, const Vec3b& colour) { pixels({p.x, p.y, 1, 1}, {colour}); }
+  void pixels(const Rect& area, std::shared_ptr<const std::vector<Vec3b>> bgr,
+              std::optional<Mark> mark = {});
+  void pixel(Point p, const Vec3b& colour) {
+    pixels({p.x, p.y, 1, 1}, std::make_shared<const std::vector<Vec3b>>(1, colour));
+  }
 
  private:
   FrameView(Frame& frame, Rect area) : frame_(&frame), area_(area), clipped_(true) {}

@@ -47,40 +47,38 @@ std::string xml_escape(const std::string& s) {
   return out;
 }
 
-namespace {
-
-std::string base64(const std::string& bytes) {
-  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  std::size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
-                       (static_cast<unsigned char>(bytes[i + 1]) << 8) |
-                       static_cast<unsigned char>(bytes[i + 2]);
-    out += {k[v >> 18], k[(v >> 12) & 63], k[(v >> 6) & 63], k[v & 63]};
-  }
-  if (i + 1 == bytes.size()) {
-    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
-    out += {k[v >> 18], k[(v >> 12) & 63], '=', '='};
-  } else if (i + 2 == bytes.size()) {
-    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) |
-                       (static_cast<unsigned char>(bytes[i + 1]) << 8);
-    out += {k[v >> 18], k[(v >> 12) & 63], k[(v >> 6) & 63], '='};
-  }
-  return out;
-}
-
-}  // namespace
-
 std::string png_data_uri(const PixelsOp& p) {
   RgbImage image(p.area.width, p.area.height);
   for (int y = 0; y < p.area.height; ++y)
     for (int x = 0; x < p.area.width; ++x) {
-      const Vec3b& c = p.bgr[static_cast<std::size_t>(y) * p.area.width + x];
+      const Vec3b& c = (*p.bgr)[static_cast<std::size_t>(y) * p.area.width + x];
       image(x, y) = {c[2] / 255.0f, c[1] / 255.0f, c[0] / 255.0f};
     }
   return "data:image/png;base64," + base64(png::encode(image));
+}
+
+std::string base64(std::string_view bytes) {
+  static constexpr char kDigits[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
+    out += kDigits[v >> 18 & 63];
+    out += kDigits[v >> 12 & 63];
+    out += kDigits[v >> 6 & 63];
+    out += kDigits[v & 63];
+  }
+  if (const std::size_t rest = bytes.size() - i; rest > 0) {
+    const unsigned v = byte(i) << 16 | (rest == 2 ? byte(i + 1) << 8 : 0);
+    out += kDigits[v >> 18 & 63];
+    out += kDigits[v >> 12 & 63];
+    out += rest == 2 ? kDigits[v >> 6 & 63] : '=';
+    out += '=';
+  }
+  return out;
 }
 
 std::string json_string(const std::string& s) {

@@ -2,6 +2,7 @@
 // What the text backends of the display list (SVG, the canvas JSON) write alike: numbers, colours,
 // escaped strings, and a block of pixels as a PNG data URI.
 #include <string>
+#include <string_view>
 
 #include "viz/frame.hpp"
 
@@ -13,6 +14,8 @@ std::string number(double v);
 std::string hex_colour(const Scalar& c);
 // `s` with & < > " escaped (XML attribute and text content).
 std::string xml_escape(const std::string& s);
+// Standard base64 (RFC 4648, with padding), as data: URLs need it.
+std::string base64(std::string_view bytes);
 // `s` as a JSON string literal, quotes included.
 std::string json_string(const std::string& s);
 // "data:image/png;base64,..." of the block's pixels.

@@ -61,28 +61,36 @@ void GridView::cells(const CanvasState& state, std::optional<Color> background) 
                  : Vec3b(palette::kEmptyCell[0], palette::kEmptyCell[1], palette::kEmptyCell[2]);
   const Vec3b outside(palette::kOutsideCanvas[0], palette::kOutsideCanvas[1],
                       palette::kOutsideCanvas[2]);
-  cells_.assign(static_cast<std::size_t>(v.width) * static_cast<std::size_t>(v.height), Vec3b{});
+  auto cells = std::make_shared<std::vector<Vec3b>>(static_cast<std::size_t>(v.width) *
+                                                    static_cast<std::size_t>(v.height));
+  const std::int64_t wx0 = state.window().x, wx1 = wx0 + state.window().width;
   for (int r = 0; r < v.height; ++r) {
     const std::int64_t y = geometry_.pixel_y(v.y + r);
-    Vec3b* out = cells_.data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(v.width);
+    Vec3b* out = cells->data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(v.width);
     const bool row_on_canvas = y >= 0 && y < canvas_.height;
+    // Whole rows of the state at once: a view has hundreds of thousands of frame pixels.
+    const Vec3b* pixels = row_on_canvas ? state.row_pixels(y) : nullptr;
+    const std::uint8_t* written = row_on_canvas ? state.row_mask(y) : nullptr;
     for (int u = 0; u < v.width; ++u) {
       const std::int64_t x = columns[u];
       if (!row_on_canvas || x < 0 || x >= canvas_.width)
         out[u] = outside;
+      else if (written && x >= wx0 && x < wx1 && written[x - wx0])
+        out[u] = pixels[x - wx0];
       else
-        out[u] = state.written(x, y) ? state.bgr(x, y) : empty;
+        out[u] = empty;
     }
   }
+  cells_ = cells;
   // One block for the view; the backends crop it to the frame, as writing pixels did.
-  frame_.pixels(v, cells_, mark(MarkKind::cells, v & Rect({0, 0}, frame_.size()), {}));
+  frame_.pixels(v, std::move(cells), mark(MarkKind::cells, v & Rect({0, 0}, frame_.size()), {}));
 }
 
 Vec3b GridView::cell_colour(Point p) const {
   // What cells() put at frame pixel `p` (inside the view): grid() draws the centres on it.
   const Rect& v = geometry_.view();
-  return cells_[static_cast<std::size_t>(p.y - v.y) * static_cast<std::size_t>(v.width) +
-                static_cast<std::size_t>(p.x - v.x)];
+  return (*cells_)[static_cast<std::size_t>(p.y - v.y) * static_cast<std::size_t>(v.width) +
+                   static_cast<std::size_t>(p.x - v.x)];
 }
 
 Mark GridView::mark(MarkKind kind, const Rect& box, std::string what) const {

@@ -7,6 +7,7 @@
 // (viz/label_placement.hpp), so the order of the calls is the order of importance: all markers,
 // then the labels that matter most for the step.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -82,7 +83,7 @@ class GridView {
   const Typography& type_;
   Size canvas_;
   Placement placement_;
-  std::vector<Vec3b> cells_;  // what cells() drew over the view, row by row
+  std::shared_ptr<const std::vector<Vec3b>> cells_;  // what cells() drew over the view, by rows
 };
 
 }  // namespace scantrace::viz

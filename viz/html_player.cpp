@@ -8,6 +8,7 @@
 
 #include "io/atomic_write.hpp"
 #include "io/interrupt.hpp"
+#include "viz/frame_text.hpp"
 #include "viz/html_player_page.hpp"
 #include "viz/step_label.hpp"
 
@@ -21,27 +22,6 @@ namespace {
 // WebP.
 constexpr int kWebpLossless = 101;  // OpenCV: IMWRITE_WEBP_QUALITY above 100 selects lossless
 
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  return out;
-}
-
 void replace_once(std::string& text, const std::string& what, const std::string& with) {
   const std::size_t at = text.find(what);
   if (at == std::string::npos) throw std::logic_error("html player page: no " + what);
@@ -51,26 +31,8 @@ void replace_once(std::string& text, const std::string& what, const std::string&
 }  // namespace
 
 std::string base64(const std::vector<unsigned char>& bytes) {
-  static constexpr char kDigits[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  std::size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const unsigned v = bytes[i] << 16 | bytes[i + 1] << 8 | bytes[i + 2];
-    out += kDigits[v >> 18 & 63];
-    out += kDigits[v >> 12 & 63];
-    out += kDigits[v >> 6 & 63];
-    out += kDigits[v & 63];
-  }
-  if (const std::size_t rest = bytes.size() - i; rest > 0) {
-    const unsigned v = bytes[i] << 16 | (rest == 2 ? bytes[i + 1] << 8 : 0);
-    out += kDigits[v >> 18 & 63];
-    out += kDigits[v >> 12 & 63];
-    out += rest == 2 ? kDigits[v >> 6 & 63] : '=';
-    out += '=';
-  }
-  return out;
+  return frame_text::base64(
+      std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 EncodedFrame encode_page_frame(const cv::Mat& frame) {
@@ -142,7 +104,7 @@ HtmlPlayerResult write_html_player(Replayer& replayer, std::size_t first, std::s
   // The data first: the title placeholder comes before it in the page, so a source named
   // "@DATA@" cannot catch the data.
   replace_once(page, "@DATA@", json);
-  replace_once(page, "@TITLE@", html_escape("scantrace: " + options.source));
+  replace_once(page, "@TITLE@", frame_text::xml_escape("scantrace: " + options.source));
   write_file_atomically(out, page);
   if (progress) progress->finish();
   result.steps = count;

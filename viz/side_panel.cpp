@@ -319,8 +319,8 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
       const EdgeEntry* e = find_edge(table, a.edge);
       for (const trace::EdgeCrossing& p : prev->active_edges)
         if (e && p.edge == a.edge)
-          f.push_back(fmt::format("      e{}: {} + {} = {}", a.edge, fixed(p.x, 3),
-                                  number(e->dx_dy, 4), fixed(a.x, 3)));
+          f.push_back(fmt::format("      e{}: {} {} = {}", a.edge, fixed(p.x, 3),
+                                  plus_term(e->dx_dy, 4), fixed(a.x, 3)));
     }
   if (b && b->flat_color) {
     f.push_back("per pixel:  c = flat colour = (c0 + c1 + c2) / 3");
@@ -330,9 +330,9 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
     if (row.span && row.span->size() > 0 && np >= 2) {
       const double xl = row.active_points.front().x, xr = row.active_points.back().x;
       const double t0 = xr > xl ? (static_cast<double>(row.span->x_begin) - xl) / (xr - xl) : 0;
-      f.push_back(fmt::format("      t({}) = ({} - {}) / ({} - {}) = {}", row.span->x_begin,
-                              row.span->x_begin, number(xl, 2), number(xr, 2), number(xl, 2),
-                              fixed(t0, 4)));
+      f.push_back(fmt::format("      t({}) = ({} {}) / ({} {}) = {}", row.span->x_begin,
+                              row.span->x_begin, minus_term(xl, 2), number(xr, 2),
+                              minus_term(xl, 2), fixed(t0, 4)));
     }
     f.push_back("c_L, c_R: interpolated the same way along their edges, in y");
   }

@@ -119,9 +119,9 @@ std::vector<std::string> key_help_lines() {
           "a                    play / pause",
           "r                    one step per scanline / grouped steps",
           "click a pixel cell   select it: marked, with its history",
-          "s                    save this frame as PNG",
+          "s                    save what is shown as PNG",
           "?                    show / hide these keys",
-          "q / Esc              quit"};
+          "q / Esc              quit (Esc first closes these keys)"};
 }
 
 void draw_key_help(FrameView& frame, const Typography& type) {

@@ -59,7 +59,7 @@ struct Writer {
   }
   void operator()(const PixelsOp& p) const {
     if (p.area.area() == 1) {  // a grid's centre dot: a rectangle, not an image
-      const Vec3b& c = p.bgr.front();
+      const Vec3b& c = p.bgr->front();
       (*this)(RectOp{p.area, Scalar(c[0], c[1], c[2]), FILLED});
       return;
     }

@@ -17,6 +17,16 @@ std::string fixed(double v, int decimals) {
   return s;
 }
 
+std::string plus_term(double v, int decimals) {
+  const std::string magnitude = number(std::abs(v), decimals);
+  return (v < 0 && magnitude != "0" ? "- " : "+ ") + magnitude;
+}
+
+std::string minus_term(double v, int decimals) {
+  const std::string magnitude = number(std::abs(v), decimals);
+  return (v < 0 && magnitude != "0" ? "+ " : "- ") + magnitude;
+}
+
 std::string number(double v, int decimals) {
   std::string s = fixed(v, decimals);
   if (s.find('.') != std::string::npos) {

@@ -13,6 +13,10 @@ namespace scantrace::viz {
 std::string number(double v, int decimals = 3);
 // Exactly `decimals` decimals, for columns that should line up.
 std::string fixed(double v, int decimals = 3);
+// `v` added or taken away in a formula, its sign as the operator: "+ 0.39", "- 0.39" (never
+// "+ -0.39"); minus_term writes "x - v": "- 3.2", or "+ 3.2" for v = -3.2.
+std::string plus_term(double v, int decimals = 3);
+std::string minus_term(double v, int decimals = 3);
 std::string integer(std::int64_t v);                   // 35300 -> "35,300"
 std::string point(Vec2 p, int decimals = 2);           // "(20, 80.5)"
 std::string colour(const Color& c, int decimals = 3);  // "(0.955, 0.000, 0.045)"

@@ -53,6 +53,12 @@ RUN = {
         # the frames are numbered as the steps (docs/usage.md "Outputs")
         "files": ["frames/frame_00005.png", "frames/frame_00012.png"],
         "absent": ["frames/frame_00001.png", "frames/frame_00013.png"]},
+    # the display list's SVG backend: one file a step, or one step
+    "build/cli/scantrace replay triangle.jsonl -o svg-frames/ --format svg": {
+        "files": ["svg-frames/frame_00001.svg", "svg-frames/frame_00047.svg"],
+        "absent": ["svg-frames/frame_00001.png"]},
+    "build/cli/scantrace replay triangle.jsonl -o step11.svg --steps 11": {
+        "files": ["step11.svg"], "err": ["step 11 of 47"]},
     'build/cli/scantrace explain --triangle "2.3,1.2 13,4.5 5,11.6" --size 16x14 -o small.mp4': {
         "files": ["small.mp4"]},
     "build/cli/scantrace explain scantrace-demo/demo_scene.json -o painter.mp4": {

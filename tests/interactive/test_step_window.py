@@ -312,8 +312,10 @@ def main():
                     w.press(key, step)
                 w.wait_frame(frames[expected - 1], what)
                 checks += 1
-            # A click on a cell inside the triangle: it is marked (magenta ring) and s saves the
-            # frame with the mark, differing from the plain frame only around the click.
+            # A click on a cell inside the triangle: it is marked (magenta ring) and s saves what
+            # the window shows (issue 36): the frame with the mark, differing from the plain frame
+            # only around the click on the view, the pixel's history box on the side panel, and
+            # the status line below.
             click = (150, 150)
             display.xdotool("mousemove", "--window", w.id, str(click[0]), str(click[1]),
                             "click", "1")
@@ -323,8 +325,13 @@ def main():
             w.press("s")
             saved = os.path.join(work, "saved", "step_00019.png")
             poll(lambda: os.path.exists(saved), saved)
-            marked = images.decode(saved)
-            plain = frames[18]
+            saved_image = images.decode(saved)
+            assert saved_image.shape[:2] == (HEIGHT, WIDTH), \
+                f"saved {saved_image.shape[:2]}, the window shows {(HEIGHT, WIDTH)}"
+            assert np.any(saved_image[:FRAME_HEIGHT, WIDTH // 2:] != frames[18][:, WIDTH // 2:]), \
+                "the saved image has no history box"
+            marked = saved_image[:FRAME_HEIGHT, :WIDTH // 2]
+            plain = frames[18][:, :WIDTH // 2]
             changed = np.argwhere(np.any(marked != plain, axis=2))
             assert len(changed) > 0, "the saved frame has no mark"
             (y0, x0), (y1, x1) = changed.min(axis=0), changed.max(axis=0)
@@ -341,9 +348,18 @@ def main():
             assert diff[y0:y1 + 1, x0:x1 + 1].any(), "the mark is gone on step 20"
             assert diff[:, WIDTH // 2:].any(), "no history box on the side panel"
             checks += 1
+            # q quits even with the keys shown (issue 36: the first q only closed them).
+            w.keys("question")
+            poll(lambda: images.difference(w.frame(), frames[19]) > 0.05, "the keys overlay")
             status = w.quit()
             assert status == 0, f"q: exit status {status}"
             assert "median" in w.log(), w.log()
+            # The exit summary counts every step shown, the first one included: as many as the
+            # "step N / M:" lines the window logged (issue 36: it said 3 after 4 were shown).
+            logged = len(re.findall(r"step \d+ / \d+: ", w.log()))
+            summary = re.search(r"step: (\d+) steps shown", w.log())
+            assert summary and int(summary.group(1)) == logged, \
+                f"summary {summary and summary.group(0)!r}, {logged} steps logged"
             checks += 1
         finally:
             w.kill()

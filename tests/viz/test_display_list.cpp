@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -204,4 +205,47 @@ TEST_CASE("the Hershey strokes lie where OpenCV draws the text", "[viz][display-
     CHECK(points > 200);
     CHECK(near == points);
   }
+}
+
+TEST_CASE("the side panel's worked x += dx/dy never reads '+ -'", "[viz][display-list][formula]") {
+  // Issue 36: "e2: 208.733 + -0.3902 = 208.343" is written "e2: 208.733 - 0.3902 = 208.343". Every
+  // such line of every frame of two triangles whose edges slope either way is read back from the
+  // display list's text and checked as arithmetic: the operator is + or -, the operand is not
+  // negative, and x + dx/dy is the result to the shown digits. The triangles: the course
+  // triangle, and mirrored (its edges slope the other way).
+  std::vector<trace::Trace> traces;
+  for (const double mirror : {0.0, 512.0}) {
+    trace::TriangleInput t;
+    t.vertices = {Vec2{std::abs(mirror - 20), 20}, Vec2{std::abs(mirror - 250), 80},
+                  Vec2{std::abs(mirror - 300), 400}};
+    t.colors = {Color{1, 0, 0}, Color{0, 1, 0}, Color{0, 0, 1}};
+    t.width = t.height = 512;
+    traces.push_back(test::record(t));
+  }
+  viz::StepOptions every_row;
+  every_row.rows_per_step = 1;
+  every_row.max_scanline_steps = 1 << 20;
+  const std::regex line(R"(^\s*e(\d+): (-?[0-9.]+) ([+-]) (\S+) = (-?[0-9.]+)$)");
+  std::size_t minus = 0, plus = 0;
+  for (const trace::Trace& t : traces) {
+    viz::FrameSequence s(t, every_row, {1280, 720}, "test");
+    for (std::size_t i = 0; i < s.steps().size(); ++i) {
+      const viz::Frame frame = s.frame(i);
+      for (const viz::DrawOp& op : frame.ops()) {
+        const auto* text = std::get_if<viz::TextOp>(&op.body);
+        if (!text || text->text.find(" = ") == std::string::npos) continue;
+        INFO("step " << i + 1 << ": \"" << text->text << "\"");
+        CHECK(text->text.find("+ -") == std::string::npos);
+        CHECK(text->text.find("- -") == std::string::npos);
+        std::smatch m;
+        if (!std::regex_match(text->text, m, line)) continue;
+        const double x = std::stod(m[2]), step = std::stod(m[4]), result = std::stod(m[5]);
+        CHECK(step >= 0);
+        CHECK(std::abs((m[3] == "+" ? x + step : x - step) - result) < 0.0015);
+        (m[3] == "+" ? plus : minus) += 1;
+      }
+    }
+  }
+  CHECK(minus > 0);  // the triangle has edges of negative dx/dy on its rows...
+  CHECK(plus > 0);   // ...and of positive
 }

@@ -1,5 +1,7 @@
 #include "viz/opencv/frame_raster.hpp"
 
+#include <cstring>
+
 #include <opencv2/imgproc.hpp>
 
 namespace scantrace::viz {
@@ -30,14 +32,14 @@ struct Draw {
                 cv_scalar(t.colour), t.thickness, cv_line(t.type));
   }
   void operator()(const PixelsOp& p) const {
+    // The block, cropped to the image, row by row: both are packed 3-byte BGR pixels.
+    static_assert(sizeof(Vec3b) == 3 && sizeof(cv::Vec3b) == 3);
     const cv::Rect inside = cv::Rect(p.area) & cv::Rect(0, 0, m.cols, m.rows);
     for (int y = inside.y; y < inside.y + inside.height; ++y) {
-      auto* out = m.ptr<cv::Vec3b>(y);
-      const Vec3b* in = p.bgr.data() + static_cast<std::size_t>(y - p.area.y) * p.area.width;
-      for (int x = inside.x; x < inside.x + inside.width; ++x) {
-        const Vec3b& c = in[x - p.area.x];
-        out[x] = cv::Vec3b(c[0], c[1], c[2]);
-      }
+      const Vec3b* in = p.bgr->data() + static_cast<std::size_t>(y - p.area.y) * p.area.width +
+                        (inside.x - p.area.x);
+      std::memcpy(m.ptr<std::uint8_t>(y) + 3 * inside.x, in,
+                  static_cast<std::size_t>(inside.width) * 3);
     }
   }
 };

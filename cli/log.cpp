@@ -61,6 +61,9 @@ class EscapingStderrSink final : public spdlog::sinks::base_sink<spdlog::details
 }  // namespace
 
 void setup_logging() {
+  // Once per process: the logger is registered by name (run_app called twice, as the app tests do,
+  // would otherwise make a second one).
+  if (spdlog::get("scantrace")) return;
   auto logger = std::make_shared<spdlog::logger>("scantrace", std::make_shared<EscapingStderrSink>());
   logger->set_pattern("scantrace: %v");
   spdlog::set_default_logger(logger);

@@ -1,6 +1,7 @@
 // `scantrace-tools`: every subcommand of `scantrace` (docs/design.md §7). The `scantrace`
 // executable runs `render` itself and hands every other command line to this one
 // (cli/main_render.cpp).
+#include "cli/all_commands.hpp"  // generated: SCANTRACE_ALL_COMMANDS (cli/CMakeLists.txt)
 #include "cli/app.hpp"
 
 int main(int argc, char** argv) {

@@ -175,6 +175,9 @@ def run_python(source, work, python_build):
 
 
 def run(source, program, binary, python_build, work):
+    # The programs run in WORK_DIR: paths given relative to the caller's directory are made absolute.
+    program, binary = str(Path(program).resolve()), str(Path(binary).resolve())
+    python_build = Path(python_build).resolve()
     if work.exists():
         shutil.rmtree(work)
     work.mkdir(parents=True)

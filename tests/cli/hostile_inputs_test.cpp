@@ -153,7 +153,7 @@ TEST_CASE("an allocation that fails anyway is the one-line message naming the in
   }
 }
 
-TEST_CASE("diff -o writes diff.png and report.json both or neither; -o \"\" is a usage error",
+TEST_CASE("diff -o writes diff.png and report.json both or neither, and an empty -o is a usage error",
           "[command][robustness][hostile]") {
   TempDir dir;
   write_text(dir / "s.json", kScene);

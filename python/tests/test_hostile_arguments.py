@@ -196,10 +196,7 @@ def run_with_timeout(code, timeout=20):
 
 
 # Issue 37 point 5: the C++ readers open inputs without blocking and refuse what is not a regular
-# file. That fix is on the robustness branch (issue-37); until it is merged these fail (a reader
-# blocks in open() on a FIFO), which is what the marks say. Remove them after the merge.
-@pytest.mark.xfail(reason="issue 37 #5: readers of non-regular files (issue-37 branch)",
-                   strict=False)
+# file (io/input_file.hpp); before that a reader blocked in open() on a FIFO and this timed out.
 @pytest.mark.parametrize("call", ["scantrace.load_scene(p)", "scantrace.Trace.load(p)"])
 def test_a_fifo_is_refused_not_waited_on(tmp_path, call):
     fifo = tmp_path / "fifo"

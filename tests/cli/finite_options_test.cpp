@@ -113,7 +113,7 @@ const std::map<std::string, std::vector<std::string>> kNumbersInText = {
 const std::set<std::string> kNotNumbers = {
     "--output",  "--scene",      "--shading", "--fill-rule", "--method",   "--model-colors",
     "--cull",    "--depth",      "--mode",    "--level",     "--winding",  "--explain",
-    "--save-dir", "--reproducers", "--family", "SCENE",       "IMAGE",      "TRACE",
+    "--save-dir", "--reproducers", "--family", "--format",   "SCENE",      "IMAGE",      "TRACE",
 };
 
 // What each subcommand is given besides the option under test: its positionals, valid.

@@ -25,6 +25,7 @@ std::string to_json(const Frame& frame);
 
 // `drawScantraceFrame(ctx, frame)`: draws a parsed to_json() frame on a 2D canvas context of the
 // frame's size; returns a Promise that resolves when the pixel blocks (images) are drawn too.
+// tests/viz/test_canvas_frame.cpp runs it in headless Chromium against the OpenCV raster.
 const char* frame_canvas_script();
 
 }  // namespace scantrace::viz

@@ -6,98 +6,23 @@
 // backend cannot silently drop or move a mark; the canvas JSON holds every operation and mark.
 #include <catch2/catch.hpp>
 
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <string>
 
-#include <unistd.h>
-
 #include <spdlog/fmt/fmt.h>
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
+#include <opencv2/core.hpp>
 
-#include "trace/record.hpp"
 #include "viz/frame_json.hpp"
 #include "viz/frame_sequence.hpp"
-#include "viz/opencv/frame_raster.hpp"
 #include "viz/svg_frame.hpp"
-#include "viz_test_support.hpp"
+#include "chromium_compare.hpp"
 
 using namespace scantrace;
+using namespace scantrace::test::chromium;
 namespace fs = std::filesystem;
-
-namespace {
-
-trace::Trace course_triangle() {
-  trace::TriangleInput t;
-  t.vertices = {Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}};
-  t.colors = {Color{1, 0, 0}, Color{0, 1, 0}, Color{0, 0, 1}};
-  t.width = t.height = 512;
-  return test::record(t);
-}
-
-bool have(const char* tool) {
-  return std::system(fmt::format("command -v {} >/dev/null 2>&1", tool).c_str()) == 0;
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / fmt::format("scantrace-svg-{}-{}", name, getpid());
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void write(const fs::path& file, const std::string& bytes) {
-  std::ofstream(file, std::ios::binary) << bytes;
-}
-
-// The shift (dx, dy) in [-3, 3]^2 that best matches `box` of `a` in `b`, and the mean absolute
-// difference per channel there.
-struct Match {
-  int dx = 0, dy = 0;
-  double mean = 1e9;
-};
-Match best_shift(const cv::Mat& a, const cv::Mat& b, const viz::Rect& box) {
-  Match best;
-  const cv::Rect r = cv::Rect(box) & cv::Rect(3, 3, a.cols - 6, a.rows - 6);
-  if (r.empty()) return {0, 0, 0};
-  for (int dy = -3; dy <= 3; ++dy)
-    for (int dx = -3; dx <= 3; ++dx) {
-      cv::Mat diff;
-      cv::absdiff(a(r), b(r + cv::Point(dx, dy)), diff);
-      const cv::Scalar m = cv::mean(diff);
-      const double mean = (m[0] + m[1] + m[2]) / 3;
-      if (mean < best.mean - 1e-9 ||
-          (std::abs(mean - best.mean) <= 1e-9 &&
-           std::abs(dx) + std::abs(dy) < std::abs(best.dx) + std::abs(best.dy)))
-        best = {dx, dy, mean};
-    }
-  return best;
-}
-
-// Half the L1 distance of the two images' normalised 16-bin histograms, the worst channel: the
-// share of pixels whose channel value moved to another bin.
-double histogram_distance(const cv::Mat& a, const cv::Mat& b) {
-  double worst = 0;
-  for (int c = 0; c < 3; ++c) {
-    std::vector<double> ha(16), hb(16);
-    for (int y = 0; y < a.rows; ++y)
-      for (int x = 0; x < a.cols; ++x) {
-        ha[a.at<cv::Vec3b>(y, x)[c] / 16] += 1;
-        hb[b.at<cv::Vec3b>(y, x)[c] / 16] += 1;
-      }
-    double d = 0;
-    for (int i = 0; i < 16; ++i) d += std::abs(ha[i] - hb[i]);
-    worst = std::max(worst, d / 2 / (double(a.rows) * a.cols));
-  }
-  return worst;
-}
-
-}  // namespace
 
 TEST_CASE("an SVG frame is valid, self-contained SVG 1.1", "[viz][svg]") {
   const trace::Trace t = course_triangle();
@@ -166,52 +91,10 @@ TEST_CASE("Chromium draws an SVG frame as OpenCV draws its raster", "[viz][svg][
   const trace::Trace t = course_triangle();
   viz::FrameSequence s(t, {}, {1280, 720}, "test");
   const fs::path dir = scratch("chromium");
-  // The title card, an edge-table step, a scanline step with zoom insets, the end card.
-  std::vector<std::size_t> steps{0, 3, 0, s.steps().size() - 1};
-  for (std::size_t i = 0; i < s.steps().size(); ++i)
-    if (s.steps()[i].kind == viz::StepKind::scanlines) {
-      steps[2] = i + 4;
-      break;
-    }
-  for (const std::size_t i : steps) {
-    INFO("step " << i + 1);
-    const viz::Frame f = s.frame(i);
-    const cv::Mat raster = viz::rasterize(f);
-    const fs::path svg = dir / fmt::format("frame_{}.svg", i),
-                   png = dir / fmt::format("shot_{}.png", i);
-    write(svg, viz::to_svg(f));
-    const std::string command = fmt::format(
-        "chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
-        "--force-device-scale-factor=1 --user-data-dir='{}' --screenshot='{}' "
-        "--window-size=1280,720 'file://{}' >/dev/null 2>&1",
-        (dir / "profile").string(), png.string(), svg.string());
-    REQUIRE(std::system(command.c_str()) == 0);
-    const cv::Mat shot = cv::imread(png.string(), cv::IMREAD_COLOR);
-    REQUIRE(!shot.empty());
-    CHECK(shot.cols == raster.cols);
-    CHECK(shot.rows == raster.rows);
-    if (shot.size() != raster.size()) continue;
-    // Every marker and label of the main view is where OpenCV drew it, within a pixel.
-    std::size_t checked = 0;
-    for (const viz::Mark& m : f.marks()) {
-      if (m.kind != viz::MarkKind::vertex && m.kind != viz::MarkKind::active_point &&
-          m.kind != viz::MarkKind::label)
-        continue;
-      const Match match = best_shift(raster, shot, m.box);
-      INFO(viz::to_string(m.kind) << " " << m.what << " at [" << m.box.x << ", " << m.box.y << " "
-                                  << m.box.width << "x" << m.box.height << "]: shift " << match.dx
-                                  << "," << match.dy << ", mean difference " << match.mean);
-      CHECK(std::abs(match.dx) <= 1);
-      CHECK(std::abs(match.dy) <= 1);
-      CHECK(match.mean < 24);
-      ++checked;
-    }
-    CHECK(checked >= 3);
-    const double h = histogram_distance(raster, shot);
-    INFO("histogram distance " << h);
-    // Anti-aliasing differs (Skia against OpenCV) along every line and glyph: measured 0.004-0.03
-    // on these frames; a dropped block of cells or a missing panel moves far more.
-    CHECK(h < 0.05);
-  }
+  check_pages_against_raster(s, dir, [&](const viz::Frame& f, std::size_t i) {
+    const fs::path page = dir / fmt::format("frame_{}.svg", i);
+    write(page, viz::to_svg(f));
+    return page;
+  });
   fs::remove_all(dir);
 }

@@ -162,16 +162,23 @@ std::optional<Mat5Problem> compressed_problem(const Bytes& b, const Tag& t, bool
 
 }  // namespace
 
-std::optional<Mat5Problem> mat5_layout_problem(std::string_view file) {
-  // v5 and v7.3 share the 128-byte header; 0x0100 at byte 124 is v5 (0x0200 is v7.3, HDF5).
-  if (file.size() < 128) return std::nullopt;
+MatFileVersion mat_file_version(std::string_view file) {
+  if (file.size() < 128) return MatFileVersion::other;
   const std::string_view endian = file.substr(126, 2);
-  if (endian != "IM" && endian != "MI") return std::nullopt;  // v4: not this format
+  if (endian != "IM" && endian != "MI") return MatFileVersion::other;
   const bool big = endian == "MI";
   const auto version = static_cast<unsigned>(static_cast<unsigned char>(file[big ? 124 : 125]))
                            << 8 |
                        static_cast<unsigned char>(file[big ? 125 : 124]);
-  if (version != 0x0100) return std::nullopt;
+  // matio decides between its v5 and HDF5 readers on the same two bytes, read the same way.
+  if (version == 0x0100) return MatFileVersion::v5;
+  if (version == 0x0200) return MatFileVersion::v73;
+  return MatFileVersion::other;
+}
+
+std::optional<Mat5Problem> mat5_layout_problem(std::string_view file) {
+  if (mat_file_version(file) != MatFileVersion::v5) return std::nullopt;
+  const bool big = file.substr(126, 2) == "MI";
   const Bytes b(file, big);
   std::size_t at = 128;
   while (at + 8 <= b.size()) {

@@ -5,13 +5,18 @@
 // garbage read), and a `faces` declaring 2×3 while holding 1×3 took its second row from the heap
 // (the previous variable's freed buffer). Here every top-level element must end inside the file,
 // a compressed one must inflate to the whole element it declares, and each numeric matrix's real
-// part must hold exactly the elements its dimensions declare. v7.3 (HDF5, checked by HDF5 itself)
-// and v4 files are passed over.
+// part must hold exactly the elements its dimensions declare. Only v5 is read at all: v7.3 files
+// are HDF5 and v4 files have no header (mat_file_version below, and why in io/mat_scene.cpp).
 #include <optional>
 #include <string>
 #include <string_view>
 
 namespace scantrace {
+
+// What the 128-byte header says the file is. v5 and v7.3 share it (0x0100 or 0x0200 at byte 124,
+// in the byte order "IM"/"MI" at byte 126 names); a v4 file has no such header.
+enum class MatFileVersion { v5, v73, other };
+MatFileVersion mat_file_version(std::string_view bytes);
 
 struct Mat5Problem {
   std::string element;  // the variable's name, or "" for the file as a whole

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <matio.h>
@@ -82,8 +83,8 @@ class MatReader {
     // budget), and a v5 file's layout checked: matio reads a variable's values by the count its
     // dimensions declare, whatever its data element holds (io/mat5_layout.hpp).
     const std::string bytes = json_input::read_text_file(file);
+    refuse_unless_v5(bytes);
     if (const auto problem = mat5_layout_problem(bytes)) fail(problem->element, problem->problem);
-    // matio opens v4, v5 and (when built with HDF5, as Debian's is) v7.3 files alike.
     mat_.reset(Mat_Open(name_.c_str(), MAT_ACC_RDONLY));
     if (!mat_) fail("", "not a readable MATLAB .mat file");
   }
@@ -133,6 +134,26 @@ class MatReader {
  private:
   [[noreturn]] void fail(const std::string& element, const std::string& problem) const {
     throw InputError(name_, element, problem);
+  }
+
+  // matio would open v4 and v7.3 files too, but neither can be checked before it reads them.
+  // A v7.3 file is HDF5, and HDF5 is not hardened against crafted files: CI's 12-second fuzz run
+  // found a heap-buffer-overflow inside libhdf5 (a memcpy past a 280-byte block of its own, below
+  // matio's Mat_VarReadInfo) and a leak of its metadata cache, and HDF5's CVE list is long. A v4
+  // file has no header at all (any bytes are a v4 file to matio) and matio reads its values by
+  // the count its dimensions declare. MATLAB saves v7 (a compressed v5) unless told otherwise,
+  // and the course's scene is v5: one line says how to re-save the others.
+  void refuse_unless_v5(std::string_view bytes) const {
+    switch (mat_file_version(bytes)) {
+      case MatFileVersion::v5:
+        return;
+      case MatFileVersion::v73:
+        fail("", "is a MATLAB v7.3 (HDF5) file, which scantrace does not read (HDF5 is not safe "
+                 "on untrusted files); re-save it as v7: save('scene.mat', ..., '-v7')");
+      case MatFileVersion::other:
+        fail("", "is not a MATLAB v5/v7 .mat file (no v5 header; v4 and v7.3 files are not read); "
+                 "re-save it as v7: save('scene.mat', ..., '-v7')");
+    }
   }
 
   static std::string damaged() {

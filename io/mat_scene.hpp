@@ -1,5 +1,5 @@
 #pragma once
-// The 2021 course's scene as handed out: a MATLAB .mat file (v5, or v7.3 = HDF5) holding
+// The 2021 course's scene as handed out: a MATLAB .mat file (v5, or v7 = compressed v5) holding
 //
 //   vertices_2d    L×2  [x, y] 1-based pixels, x = column, y = row (pointing down)
 //   faces          K×3  1-based vertex indices (MATLAB's convention)

@@ -25,8 +25,6 @@ if [ "${#targets[@]}" -eq 0 ]; then
   targets=($(sed -n 's/^scantrace_fuzz_target(\([a-z_0-9]*\).*/\1/p' fuzz/CMakeLists.txt))
 fi
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-# Leaks inside third-party libraries that scantrace cannot free (fuzz/lsan.supp says which, and why).
-export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan.supp"
 for t in "${targets[@]}"; do
   mkdir -p "$build/corpus/$t" "$build/crashes/$t"
   # Seeds, then every crasher found so far (fuzz/regressions/NAME/, also Catch2 tests): libFuzzer

@@ -63,8 +63,25 @@ FrameComposer::FrameComposer(const trace::Trace& trace, const StepPlan& plan, Si
       canvas_(trace.header().canvas.width, trace.header().canvas.height),
       type_(frame),
       layout_(FrameLayout::for_frame(frame, type_)),
-      source_(std::move(source)) {
+      source_(std::move(source)),
+      scene_region_(whole_canvas(trace)) {
   if (plan.mode == ReplayMode::scene) scene_ = summarize_scene(trace, plan);
+}
+
+void FrameComposer::mark(std::optional<CanvasPixel> pixel) {
+  marked_ = pixel;
+  scene_region_ = whole_canvas(trace_);
+  if (!pixel) return;
+  // The traced faces' own views, united, and the pixel (which a face may only touch).
+  PixelBox r{pixel->x, pixel->y, pixel->x, pixel->y};
+  for (int t : plan_.order) {
+    const PixelBox b = triangle_region(trace_, t);
+    r = {std::min(r.x0, b.x0), std::min(r.y0, b.y0), std::max(r.x1, b.x1), std::max(r.y1, b.y1)};
+  }
+  const PixelBox canvas = whole_canvas(trace_);
+  scene_region_ = {std::max(r.x0, canvas.x0), std::max(r.y0, canvas.y0),
+                   std::min(r.x1, canvas.x1), std::min(r.y1, canvas.y1)};
+  if (scene_region_.empty()) scene_region_ = canvas;  // the pixel is off the canvas
 }
 
 std::optional<ViewGeometry> FrameComposer::geometry(const Step& step) const {
@@ -76,12 +93,12 @@ std::optional<ViewGeometry> FrameComposer::geometry(const Step& step) const {
       const Rect area = card_picture_area(size_, type_);
       const bool one = plan_.mode == ReplayMode::triangles && plan_.order.size() == 1;
       return ViewGeometry(area,
-                          one ? triangle_region(trace_, plan_.order.front()) : whole_canvas(trace_),
+                          one ? triangle_region(trace_, plan_.order.front()) : scene_region_,
                           area.height / 8.0);
     }
     case StepKind::painter_batch:
     case StepKind::scene_done:
-      return ViewGeometry(layout_.view, whole_canvas(trace_), max_cell);
+      return ViewGeometry(layout_.view, scene_region_, max_cell);
     default:
       return ViewGeometry(layout_.view, triangle_region(trace_, step.triangle), max_cell);
   }
@@ -158,15 +175,16 @@ void FrameComposer::triangle_frame(FrameView& frame, const Step& step, const Can
     placed->insert(placed->end(), insets.begin(), insets.end());
   }
 
-  const int legend = legend_height(type_, LegendKind::triangle);
-  Rect text = layout_.panel;
-  text.height -= legend;
-  draw_triangle_panel(frame, text, type_, trace_, step);
   LegendShape shape;  // a polygon's legend names its outline and all of its edges
+  shape.ringed_pixel = marked_.has_value();
   if (b && trace_.header().winding_rule) {
     shape.polygon = true;
     shape.edges = static_cast<int>(polygon_of(*b).size());
   }
+  const int legend = legend_height(type_, LegendKind::triangle, shape);
+  Rect text = layout_.panel;
+  text.height -= legend;
+  draw_triangle_panel(frame, text, type_, trace_, step);
   draw_legend(frame, layout_.panel, type_, LegendKind::triangle, shape);
 }
 
@@ -175,11 +193,13 @@ void FrameComposer::scene_frame(FrameView& frame, const Step& step,
   const ViewGeometry g = *geometry(step);
   draw_scene_view(frame, g, type_, canvas_, state, trace_, plan_, step);
   frame.rectangle(g.view(), palette::kPanelBorder, 1);
-  const int legend = legend_height(type_, LegendKind::scene);
+  LegendShape shape;
+  shape.ringed_pixel = marked_.has_value();
+  const int legend = legend_height(type_, LegendKind::scene, shape);
   Rect text = layout_.panel;
   text.height -= legend;
   draw_scene_panel(frame, text, type_, trace_, plan_, scene_, step, state);
-  draw_legend(frame, layout_.panel, type_, LegendKind::scene);
+  draw_legend(frame, layout_.panel, type_, LegendKind::scene, shape);
 }
 
 void FrameComposer::card_picture(FrameView& frame, const Step& step, const CanvasState& state,

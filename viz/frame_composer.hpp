@@ -29,6 +29,11 @@ class FrameComposer {
                 std::vector<PlacedBox>* placed = nullptr) const;
   // Where the canvas is shown for `step` (nullopt: a card, no canvas).
   std::optional<ViewGeometry> geometry(const Step& step) const;
+  // Makes every frame about one pixel (`why --explain`): it is ringed wherever the canvas shows,
+  // the legend says what the ring is, and the views of the whole scene (painter's batches, the
+  // cards) frame the traced faces and the pixel instead of the whole canvas, where a few faces
+  // around a pixel of a 512² canvas would cover a few screen pixels. nullopt: no pixel.
+  void mark(std::optional<CanvasPixel> pixel);
   const FrameLayout& layout() const { return layout_; }
 
  private:
@@ -46,6 +51,8 @@ class FrameComposer {
   FrameLayout layout_;
   SceneSummary scene_;
   std::string source_;
+  std::optional<CanvasPixel> marked_;
+  PixelBox scene_region_;  // what the views of the whole scene frame: the canvas, or mark()'s
 };
 
 // The canvas pixels a view of `triangle` is centred on: its bounding box on the canvas, with a

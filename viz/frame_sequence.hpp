@@ -42,8 +42,12 @@ class FrameSequence {
   // Where canvas pixels appear on the frames of step `index` (nullopt on a card).
   std::optional<ViewGeometry> geometry(std::size_t index) const;
   const CanvasState& state() const { return state_; }
-  // Ring `pixel` on every frame that shows the canvas (none: no ring).
-  void mark_on_every_frame(std::optional<CanvasPixel> pixel) { marked_ = pixel; }
+  // Ring `pixel` on every frame that shows the canvas (none: no ring); the frames are then about
+  // it (FrameComposer::mark: the legend names the ring, the scene views frame the traced faces).
+  void mark_on_every_frame(std::optional<CanvasPixel> pixel) {
+    marked_ = pixel;
+    composer_.mark(pixel);
+  }
 
  private:
   void apply(const Step& step);

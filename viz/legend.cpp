@@ -109,6 +109,14 @@ std::vector<Entry> entries(LegendKind kind, LegendShape shape = {}) {
     e.push_back({cells, "pixels drawn so far / background"});
     e.push_back({outside, "outside the canvas"});
   }
+  if (shape.ringed_pixel)
+    e.push_back({[](FrameView& f, const Rect& r, const Typography& t) {
+                   const int s = r.height;
+                   const Rect ring(r.x + t.px(2), r.y, s, s);
+                   f.rectangle(ring, palette::kHalo, 4);
+                   f.rectangle(ring, palette::kSelection, 2);
+                 },
+                 "the pixel asked about (why X Y)"});
   return e;
 }
 
@@ -120,15 +128,15 @@ std::vector<std::string> legend_texts(LegendKind kind, LegendShape shape) {
   return texts;
 }
 
-int legend_height(const Typography& type, LegendKind kind) {
-  const int rows = (static_cast<int>(entries(kind).size()) + 1) / 2;
+int legend_height(const Typography& type, LegendKind kind, LegendShape shape) {
+  const int rows = (static_cast<int>(entries(kind, shape).size()) + 1) / 2;
   return type.line_height(TextStyle::small) * (rows + 1) + type.px(6);
 }
 
 void draw_legend(FrameView& frame, const Rect& area, const Typography& type, LegendKind kind,
                  LegendShape shape) {
   const std::vector<Entry> list = entries(kind, shape);
-  const int h = legend_height(type, kind);
+  const int h = legend_height(type, kind, shape);
   int y = area.y + area.height - h;
   frame.line({area.x, y}, {area.x + area.width, y}, palette::kPanelBorder, 1);
   y += type.px(6);

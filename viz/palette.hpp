@@ -24,6 +24,8 @@ inline const Scalar kCentreOnLight{120, 120, 120};
 inline const Scalar kCentreOnDark{215, 215, 215};
 inline const Scalar kOutline{20, 20, 20};
 inline const Scalar kHalo{0, 0, 0};
+// The ring of the pixel a replay is about (`why --explain`) and the history box beside it.
+inline const Scalar kSelection{255, 0, 255};  // magenta: no edge, span or fill colour uses it
 inline const Scalar kScanline{0, 215, 255};  // amber
 inline const Scalar kSpan{255, 255, 255};    // drawn on a black halo
 inline const Scalar kCurrentTriangle{0, 215, 255};

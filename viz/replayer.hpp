@@ -42,7 +42,7 @@ class Replayer {
     return sequence_.geometry(index);
   }
   const CanvasState& state() const { return sequence_.state(); }
-  // Ring `pixel` on every frame that shows the canvas (none: no ring).
+  // Ring `pixel` on every frame that shows the canvas (none: no ring); FrameSequence says more.
   void mark_on_every_frame(std::optional<CanvasPixel> pixel) {
     sequence_.mark_on_every_frame(pixel);
   }

@@ -11,7 +11,7 @@
 namespace scantrace::viz {
 namespace {
 
-const Scalar kSelection{255, 0, 255};  // magenta: no edge, span or fill colour uses it
+using palette::kSelection;
 
 std::string colour_text(const Color& c) {
   auto byte = [](double v) { return static_cast<int>(std::lround(255 * std::clamp(v, 0.0, 1.0))); };

@@ -136,3 +136,58 @@ TEST_CASE("why: text, JSON, a pixel outside the canvas", "[grade][cli]") {
   }
   CHECK_THAT(run_scantrace(dir.path(), {"why", "--help"}).out, Catch::Contains("OUT.html"));
 }
+
+TEST_CASE("why --explain replays at most the last 100 faces drawn over the pixel, and says so",
+          "[grade][cli][explain]") {
+  // 130 faces over pixel (10, 10), depths 130 .. 1: drawn in scene order, face 129 last. Every
+  // row of 10k faces took over a minute and 1.75 GB (issue 37): the replay keeps the last 100.
+  TempDir dir;
+  Scene s;
+  s.width = s.height = 24;
+  for (int f = 0; f < 130; ++f) {
+    const int base = static_cast<int>(s.vertices.size());
+    for (const Vec2 v : {Vec2{4, 4}, Vec2{20, 6}, Vec2{8, 19}}) {
+      s.vertices.push_back(v);
+      s.vcolors.push_back({0.2, 0.4, 0.6});
+      s.depth.push_back(130.0 - f);
+    }
+    s.faces.push_back({base, base + 1, base + 2});
+  }
+  scantrace::save_scene(s, dir / "scene.json");
+  const auto r = run_scantrace(dir.path(), {"-q", "why", "scene.json", "10", "10", "--explain", "out/"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.err, Catch::Contains("--explain shows the last 100 of the 130 faces around the "
+                                    "pixel, in drawing order"));
+  CHECK(lines(r.err) == 1);
+  // The text still lists all 130.
+  CHECK_THAT(r.out, Catch::Contains("face 0 ") && Catch::Contains("face 129 "));
+  std::size_t frames = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir / "out")) ++frames;
+  CHECK(frames >= 100);
+}
+
+TEST_CASE("diff: what the image decoder prints goes into scantrace's one warning line",
+          "[grade][cli]") {
+  // The right image with an ancillary tEXt chunk whose CRC is wrong, after IHDR: libpng warns
+  // ("libpng warning: tEXt: CRC error") on stderr by itself and decodes the image. scantrace
+  // captures that text: one line of its own naming the file, never the library's line before it
+  // (issue 37, point 17).
+  TempDir dir;
+  const Scene s = generated_scene();
+  scantrace::save_scene(s, dir / "scene.json");
+  scantrace::write_png(render_wrong(s, Shading::gouraud, Mistake::none), dir / "good.png");
+  std::string png = scantrace::test::read_text(dir / "good.png");
+  REQUIRE(png.substr(12, 4) == "IHDR");
+  const std::string text = "Comment";
+  std::string chunk = {0, 0, 0, static_cast<char>(text.size()), 't', 'E', 'X', 't'};
+  chunk += text + std::string("\x12\x34\x56\x78", 4);  // not the CRC of "tEXtComment"
+  png.insert(8 + 25, chunk);
+  scantrace::test::write_text(dir / "crc.png", png);
+  const auto r = run_scantrace(dir.path(), {"-q", "diff", "scene.json", "crc.png", "-o", "out"});
+  INFO(r.err);
+  CHECK(r.exit_code == 0);  // the pixels are the right ones
+  CHECK(lines(r.err) == 1);
+  CHECK(r.err == "scantrace: warning: crc.png: the png decoder said: libpng warning: tEXt: CRC "
+                 "error\n");
+}

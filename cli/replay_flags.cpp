@@ -43,6 +43,7 @@ viz::ReplayOptions ReplayFlags::options(const std::string& source) const {
   o.plan.mode = viz::parse_replay_mode(mode);
   o.source = source;
   o.max_frames = max_frames;
+  o.max_seconds = max_minutes * 60;
   o.marked_pixel = marked_pixel;
   o.frame_format = format;
   return o;
@@ -105,6 +106,12 @@ void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) 
   command
       .add_option("--max-frames", flags.max_frames,
                   "refuse (before drawing) a replay that needs more frames")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command
+      .add_option("--max-minutes", flags.max_minutes,
+                  "stop (writing nothing) a replay that, at the rate of its\n"
+                  "first frames, would take longer to draw")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
 }

@@ -25,6 +25,7 @@ struct ReplayFlags {
   int rows_per_step = 0;
   std::string mode = "auto";
   std::size_t max_frames = viz::kDefaultMaxFrames;
+  double max_minutes = viz::kDefaultMaxMinutes;
   std::string format = "png";                      // a frame directory's files: png or svg
   std::optional<viz::CanvasPixel> marked_pixel{};  // not an option: set by `why --explain`
 

@@ -58,6 +58,7 @@ void validate(const ReplayOptions& o) {
                     o.size.height));
   if (!(o.fps > 0 && o.fps <= 240)) throw std::invalid_argument("fps must be in (0, 240]");
   if (!(o.hold > 0 && o.hold <= 60)) throw std::invalid_argument("hold must be in (0, 60] seconds");
+  if (!(o.max_seconds > 0)) throw std::invalid_argument("the time budget must be positive");
   if (o.frame_format != "png" && o.frame_format != "svg")
     throw std::invalid_argument(
         fmt::format("--format: \"{}\" is neither png nor svg", o.frame_format));
@@ -140,10 +141,12 @@ ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
   }
   if (result.kind == OutputKind::frames && options.frame_format == "svg") {
     FrameDirectory dir(out, options.size, first + 1, "svg");
+    const TimeBudget budget(out, options.max_seconds);
     for (std::size_t i = first; i <= last; ++i) {
       check_interrupt();
       dir.write_document(to_svg(replayer.display_list(i)));
       if (progress) progress->update(dir.frames(), work);
+      budget.check(i - first + 1, result.steps);
     }
     dir.commit();
     if (progress) progress->finish();
@@ -156,11 +159,13 @@ ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
     sink = std::make_unique<VideoFile>(out, options.size, options.fps);
   else
     sink = std::make_unique<FrameDirectory>(out, options.size, first + 1);
+  const TimeBudget budget(out, options.max_seconds);
   for (std::size_t i = first; i <= last; ++i) {
     check_interrupt();  // a long video: Ctrl-C stops here and the sink removes its temporary
     const int repeat = frames_for(replayer.steps()[i], options.fps, options.hold);
     sink->write(replayer.frame(i), repeat);
     if (progress) progress->update(sink->frames(), work);
+    budget.check(i - first + 1, result.steps);  // steps drawn: a video's repeats cost little
   }
   sink->commit();
   if (progress) progress->finish();

@@ -15,6 +15,7 @@
 #include "trace/trace.hpp"
 #include "viz/progress.hpp"
 #include "viz/replay_steps.hpp"
+#include "viz/time_budget.hpp"
 #include "viz/view_geometry.hpp"
 
 namespace scantrace::viz {
@@ -39,6 +40,8 @@ struct ReplayOptions {
   // frame is drawn, so a trace too long to replay is a clear error, not hours of encoding or a
   // full disk. 20,000 frames is over an hour of video at 5 fps.
   std::size_t max_frames = kDefaultMaxFrames;
+  // The longest a replay may take to draw, in seconds, checked as it goes (viz/time_budget.hpp).
+  double max_seconds = kDefaultMaxMinutes * 60;
   // A pixel ringed on every frame that shows the canvas (`why --explain`: the pixel asked about).
   std::optional<CanvasPixel> marked_pixel{};
   // A frame directory's files: "png" (OpenCV's raster) or "svg" (viz/svg_frame.hpp).

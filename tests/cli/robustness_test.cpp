@@ -1,5 +1,6 @@
 // Bad input gets one clear line and exit status 1; budgets refuse before anything is written;
 // an interrupted run (SIGINT, SIGTERM) leaves nothing under the output's name and no temporary.
+#include <algorithm>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -124,6 +125,31 @@ TEST_CASE("a replay needing more frames than the budget is refused before writin
   CHECK_THAT(r.err, Catch::Contains("v.mp4: the replay needs") &&
                         Catch::Contains("more than the budget of 10 (--max-frames)"));
   CHECK(file_names(dir.path()).empty());
+}
+
+TEST_CASE("a replay that would take longer than its time budget stops early, writing nothing",
+          "[command][robustness]") {
+  // 26 rows at one row a step: over 30 frames of 1280x720, which take more than 0.06 s to draw on
+  // any machine (the encoding of one is milliseconds), so a 0.001-minute budget is exceeded by
+  // the estimate made after the first frames, long before the last (issue 37, point 8: the budget
+  // is in time, not frames alone). The same replay within the default budget is written.
+  TempDir dir;
+  for (const char* out : {"frames/", "v.mp4"}) {
+    INFO(out);
+    const auto r = run_scantrace(
+        dir.path(), {"-q", "explain", "--triangle", "2,1 29,9 8,27", "--size", "32x30",
+                     "--rows-per-step", "1", "--max-minutes", "0.001", "-o", out});
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.err, Catch::Contains(std::string(out) + ": the replay would take about") &&
+                          Catch::Contains("more than the budget of 0.001 minutes (--max-minutes)"));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(file_names(dir.path()).empty());
+  }
+  const auto ok = run_scantrace(dir.path(), {"-q", "explain", "--triangle", "2,1 29,9 8,27",
+                                             "--size", "32x30", "--rows-per-step", "1", "-o",
+                                             "frames/"});
+  CHECK(ok.exit_code == 0);
+  CHECK(file_names(dir.path()) == std::vector<std::string>{"frames"});
 }
 
 TEST_CASE("a trace cut off while being written is reported as incomplete, with how far it got",

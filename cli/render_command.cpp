@@ -61,15 +61,16 @@ void run_render(const RenderArgs& args) {
                              ? render(scene, options, &stats)
                              : render_parallel<Rgb32f>(scene, options, args.threads, &stats);
   const double render_ms = render_clock.ms();
-  // The report's face counts, the same whichever way the render ran (src/face_skips.hpp); a pass
-  // over the faces after the timed render (0.1 ms on the course scene's 10,000).
-  count_skips_by_geometry(scene, options, stats);
-
   png::write(image, out);
   // A hint given after the write succeeded, so that a failing run prints only its error line.
   if (out.extension() != ".png" && out.extension() != ".PNG")
     spdlog::warn("warning: {}: the name does not end in .png; writing PNG data anyway",
                  out.string());
+  // Nothing below is printed under --quiet: no work for it either.
+  if (!spdlog::should_log(spdlog::level::info)) return;
+  // The report's face counts, the same whichever way the render ran (src/face_skips.hpp): a pass
+  // over the faces after the timed render.
+  count_skips_by_geometry(scene, options, stats);
   // One line, as every command's report: near to far adds what it did not draw. A face rejected
   // from its box may also be one the set-up would skip, so the rejections are not a part of the
   // hidden faces but a count of their own.

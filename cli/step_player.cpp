@@ -116,44 +116,74 @@ void StepPlayer::show(std::size_t index) {
   index_ = std::min(index, steps() - 1);
 }
 
-bool StepPlayer::key(int code) {
-  const PlayerKey k = decode_key(code);
-  if (row_entry_) {  // g was pressed: a row number, then Enter (Esc cancels)
-    switch (k) {
-      case PlayerKey::digit:
-        row_entry_->push_back(static_cast<char>(code & 0xff));
-        break;
-      case PlayerKey::minus:
-        if (row_entry_->empty()) row_entry_->push_back('-');
-        break;
-      case PlayerKey::backspace:
-        if (!row_entry_->empty()) row_entry_->pop_back();
-        break;
-      case PlayerKey::enter: {
-        const std::string text = *row_entry_;
-        row_entry_.reset();
-        std::int64_t row = 0;
-        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), row);
-        if (text.empty() || ec != std::errc() || end != text.data() + text.size()) {
-          message_.clear();
-          break;
-        }
-        const std::size_t at = viz::step_of_row(replayer_->plan(), row);
-        if (at == steps()) {
-          message_ = fmt::format("no step shows scanline {}", row);
-        } else {
-          show(at);
-          message_ = fmt::format("scanline {}", row);
-        }
+// A key while a row number is typed after `g`: digits, '-', Backspace, then Enter goes to the
+// row (Esc cancels).
+void StepPlayer::row_entry_key(PlayerKey k, int code) {
+  switch (k) {
+    case PlayerKey::digit:
+      row_entry_->push_back(static_cast<char>(code & 0xff));
+      break;
+    case PlayerKey::minus:
+      if (row_entry_->empty()) row_entry_->push_back('-');
+      break;
+    case PlayerKey::backspace:
+      if (!row_entry_->empty()) row_entry_->pop_back();
+      break;
+    case PlayerKey::enter: {
+      const std::string text = *row_entry_;
+      row_entry_.reset();
+      go_to_row(text);
+      break;
+    }
+    case PlayerKey::quit:
+      row_entry_.reset();
+      message_.clear();
+      break;
+    default:
+      break;
+  }
+}
+
+void StepPlayer::go_to_row(const std::string& text) {
+  std::int64_t row = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), row);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) {
+    message_.clear();
+    return;
+  }
+  const std::size_t at = viz::step_of_row(replayer_->plan(), row);
+  if (at == steps()) {
+    message_ = fmt::format("no step shows scanline {}", row);
+    return;
+  }
+  show(at);
+  message_ = fmt::format("scanline {}", row);
+}
+
+void StepPlayer::toggle_rows() {
+  // Keep the place: the same scanline when there is one, else the same kind of step of the same
+  // triangle, else the same position.
+  const viz::Step was = replayer_->steps()[index_];
+  rebuild(!per_row_);
+  std::size_t at = std::min(index_, steps() - 1);
+  if (was.kind == viz::StepKind::scanlines) {
+    at = viz::step_of_row(replayer_->plan(), was.last_row);
+  } else {
+    const auto& s = replayer_->steps();
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (s[i].kind == was.kind && s[i].triangle == was.triangle && s[i].entry == was.entry) {
+        at = i;
         break;
       }
-      case PlayerKey::quit:
-        row_entry_.reset();
-        message_.clear();
-        break;  // Esc cancels
-      default:
-        break;
-    }
+  }
+  show(at);
+  message_ = per_row_ ? "one step per scanline" : "grouped steps";
+}
+
+bool StepPlayer::key(int code) {
+  const PlayerKey k = decode_key(code);
+  if (row_entry_) {
+    row_entry_key(k, code);
     return true;
   }
   switch (k) {
@@ -183,26 +213,9 @@ bool StepPlayer::key(int code) {
       playing_ = !playing_;
       if (playing_ && index_ + 1 == steps()) show(0);
       break;
-    case PlayerKey::toggle_rows: {
-      // Keep the place: the same scanline when there is one, else the same kind of step of the
-      // same triangle, else the same position.
-      const viz::Step was = replayer_->steps()[index_];
-      rebuild(!per_row_);
-      std::size_t at = std::min(index_, steps() - 1);
-      if (was.kind == viz::StepKind::scanlines) {
-        at = viz::step_of_row(replayer_->plan(), was.last_row);
-      } else {
-        const auto& s = replayer_->steps();
-        for (std::size_t i = 0; i < s.size(); ++i)
-          if (s[i].kind == was.kind && s[i].triangle == was.triangle && s[i].entry == was.entry) {
-            at = i;
-            break;
-          }
-      }
-      show(at);
-      message_ = per_row_ ? "one step per scanline" : "grouped steps";
+    case PlayerKey::toggle_rows:
+      toggle_rows();
       break;
-    }
     case PlayerKey::save:
       message_ = "saved " + save().string();
       break;

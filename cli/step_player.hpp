@@ -73,6 +73,9 @@ class StepPlayer {
   std::filesystem::path save();
 
  private:
+  void row_entry_key(PlayerKey k, int code);
+  void go_to_row(const std::string& text);
+  void toggle_rows();
   void rebuild(bool per_row);
 
   const trace::Trace& trace_;

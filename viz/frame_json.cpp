@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include <spdlog/fmt/fmt.h>
+
 #include "viz/frame_text.hpp"
 
 namespace scantrace::viz {
@@ -12,8 +14,9 @@ using frame_text::json_string;
 using frame_text::number;
 
 std::string box(const Rect& r) {
-  return "[" + std::to_string(r.x) + "," + std::to_string(r.y) + "," + std::to_string(r.width) +
-         "," + std::to_string(r.height) + "]";
+  // fmt, not "[" + std::to_string(...): GCC 12 warns (-Wrestrict, a false positive) on a literal
+  // plus a temporary string, the one warning a newcomer's first build printed.
+  return fmt::format("[{},{},{},{}]", r.x, r.y, r.width, r.height);
 }
 
 struct Writer {

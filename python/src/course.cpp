@@ -16,6 +16,7 @@
 #include "array_canvas.hpp"
 #include "arrays.hpp"
 #include "casters.hpp"
+#include "demo/demo_scene.hpp"
 #include "io/mat_scene.hpp"
 #include "io/memory_budget.hpp"
 #include "io/obj_loader.hpp"
@@ -299,6 +300,7 @@ void bind_course(py::module_& m) {
       py::arg("vertices"), py::arg("faces"), py::arg("vcolors"), py::arg("depth"), py::kw_only(),
       py::arg("shading"), py::arg("fill_rule"), py::arg("size"), py::arg("background"),
       py::arg("dtype"));
+  m.def("demo_scene", [] { return scene_dict(demo_scene()); });
   m.def(
       "load_scene",
       [](const std::string& path, const std::string& shading) {

@@ -71,6 +71,7 @@ def test_wheel_installs_into_a_fresh_venv_and_imports_elsewhere(tmp_path):
         scene = ([[0, 1, 2]], np.array([[1, 1], [40, 2], [3, 30]], float), np.eye(3), np.zeros(3))
         story = scantrace.why(scene, 10, 10)
         report = scantrace.diff(scene, img)
+        player = scantrace.trace_triangle([[1, 1], [40, 2], [3, 30]], np.eye(3))._repr_html_()
         maps = open('/proc/self/maps').read()
         try:
             scantrace.explain([[1, 1], [40, 2], [3, 30]], np.eye(3), out='x/')
@@ -81,6 +82,7 @@ def test_wheel_installs_into_a_fresh_venv_and_imports_elsewhere(tmp_path):
         print(int((img != 1).any(axis=2).sum()), story.final['face'], report.agrees)
         print('opencv' in maps)
         print(missing)
+        print('drawScantraceFrame' in player, 'function scantracePlayer' in player)
     """)
     elsewhere = tmp_path / "elsewhere"
     elsewhere.mkdir()
@@ -93,3 +95,5 @@ def test_wheel_installs_into_a_fresh_venv_and_imports_elsewhere(tmp_path):
     assert out[2] == "False", "import scantrace loaded OpenCV"
     assert "explain (writing a video or PNG frames) needs scantrace's OpenCV module" in out[3]
     assert "SCANTRACE_PYTHON_OPENCV=1" in out[3]
+    # The inline player, with its script (package data of the wheel) and without OpenCV.
+    assert out[4] == "True True"

@@ -62,6 +62,10 @@ class Player:
     """
 
     def __init__(self, trace, *, frame_size=PLAYER_FRAME_SIZE, mode="auto", max_bytes=None):
+        if max_bytes is not None and (isinstance(max_bytes, bool) or
+                                      not isinstance(max_bytes, (int, float)) or
+                                      not max_bytes >= 1):
+            raise ValueError(f"max_bytes: expected a positive number of bytes, got {max_bytes!r}")
         first = frames(trace, frame_size=frame_size, mode=mode)
         self.mode = first.mode
         self.max_bytes = int(max_bytes if max_bytes is not None else
@@ -108,10 +112,17 @@ class Player:
         return self.html
 
     def save(self, path):
-        """Writes the player as a self-contained HTML page."""
+        """Writes the player as a self-contained HTML page (under a temporary name, then renamed
+        into place: never half-written)."""
         page = ("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>scantrace replay"
                 f"</title></head><body>\n{self.html}\n</body></html>\n")
-        pathlib.Path(os.fspath(path)).write_text(page, encoding="utf-8")
+        path = pathlib.Path(os.fspath(path))
+        partial = path.with_name(f".{path.name}.{os.getpid()}.partial")
+        try:
+            partial.write_text(page, encoding="utf-8")
+            os.replace(partial, path)
+        finally:
+            partial.unlink(missing_ok=True)
 
     def __repr__(self):
         return (f"<Player: {self.steps} steps ({self.mode}), {self.frame_size[0]}x"

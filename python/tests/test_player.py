@@ -170,6 +170,19 @@ def test_frame_arguments_are_checked(trace):
         trace.frames(max_scanline_steps=0)
     with pytest.raises(IndexError, match=r"step 999 is out of range \(47 steps\)"):
         trace.frame(999)
+    for bad in (0, -5, float("nan"), True, "1 MB"):
+        with pytest.raises(ValueError, match="^max_bytes: expected a positive number of bytes"):
+            trace.player(max_bytes=bad)
+
+
+def test_save_writes_a_page_and_refuses_a_directory(trace, tmp_path):
+    p = trace.player(max_bytes=200_000)
+    p.save(tmp_path / "t.html")
+    page = (tmp_path / "t.html").read_text()
+    assert page.startswith("<!DOCTYPE html>") and p.html in page
+    with pytest.raises(IsADirectoryError):
+        p.save(tmp_path)
+    assert sorted(x.name for x in tmp_path.iterdir()) == ["t.html"]  # nothing half-written
 
 
 # --- headless Chromium: the page steps, and draws what Frame.to_json() draws -------------------

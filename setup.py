@@ -4,10 +4,12 @@ built by the project's own CMake (the build is defined there once), then copied 
     pip install --no-build-isolation .       (into a venv made with --system-site-packages)
 
 Environment:
-    SCANTRACE_CMAKE_BUILD_DIR   the CMake build directory (default: build-python/ in the clone,
-                                the only place the install writes in it; kept, so a second
-                                install rebuilds only what changed). An existing build directory
-                                given here is built as it is configured, not reconfigured.
+    SCANTRACE_CMAKE_BUILD_DIR   the CMake build directory (default: outside the clone, in
+                                ${XDG_CACHE_HOME:-~/.cache}/scantrace/build-python-KEY, KEY naming
+                                the clone's path: the install writes nothing into the clone;
+                                kept, so a second install rebuilds only what changed). An
+                                existing build directory given here is built as it is
+                                configured, not reconfigured.
     SCANTRACE_PYTHON_OPENCV=1   also build _scantrace_cv (explain's video, diff of PNG/JPEG/BMP
                                 files), which links OpenCV; without it the package loads no OpenCV.
     SCANTRACE_JOBS              parallel compile jobs (default: the number of cores).
@@ -16,6 +18,7 @@ The compile's progress goes to the terminal (/dev/tty, since pip captures the bu
 unless -v is given) and to the build's output.
 """
 
+import hashlib
 import os
 import pathlib
 import re
@@ -28,7 +31,17 @@ from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 ROOT = pathlib.Path(__file__).resolve().parent
-BUILD = pathlib.Path(os.environ.get("SCANTRACE_CMAKE_BUILD_DIR", ROOT / "build-python")).resolve()
+
+
+def default_build_dir():
+    """The CMake build directory of this clone in the user's cache, one per clone (a clone's
+    build directory holds its absolute paths)."""
+    cache = pathlib.Path(os.environ.get("XDG_CACHE_HOME") or pathlib.Path.home() / ".cache")
+    key = hashlib.sha256(str(ROOT).encode()).hexdigest()[:12]
+    return cache / "scantrace" / f"build-python-{key}"
+
+
+BUILD = pathlib.Path(os.environ.get("SCANTRACE_CMAKE_BUILD_DIR") or default_build_dir()).resolve()
 WITH_OPENCV = os.environ.get("SCANTRACE_PYTHON_OPENCV", "0") not in ("", "0", "OFF", "off")
 
 

@@ -38,6 +38,9 @@ packages+=(libxml2-utils hershey-fonts-data)
 # The Python package's build (pip install ., python3 -m build) and its benchmark's alternatives
 # (python/bench/bench_alternatives.py: OpenCV's and PIL's polygon fills).
 packages+=(python3-setuptools python3-wheel python3-build python3-venv python3-opencv python3-pil)
+# The Python package's tests: property tests (hypothesis), examples/python/course.ipynb executed
+# (nbclient, ipykernel) and its static HTML export (nbconvert), opened in chromium.
+packages+=(python3-hypothesis python3-nbclient python3-ipykernel python3-nbconvert)
 
 if [ "${1:-}" = "--demo" ]; then
   packages=("${demo_packages[@]}")

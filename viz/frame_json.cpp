@@ -1,5 +1,6 @@
 #include "viz/frame_json.hpp"
 
+#include <cstdio>
 #include <sstream>
 
 #include <spdlog/fmt/fmt.h>
@@ -21,6 +22,7 @@ std::string box(const Rect& r) {
 
 struct Writer {
   std::ostringstream& out;
+  TextForm text_form = TextForm::strokes;
   void operator()(const RectOp& r) const {
     out << "\"R\"," << r.rect.x << "," << r.rect.y << "," << r.rect.width << "," << r.rect.height
         << ",\"" << hex_colour(r.colour) << "\"," << r.thickness;
@@ -35,6 +37,14 @@ struct Writer {
         << hex_colour(c.colour) << "\"," << c.thickness;
   }
   void operator()(const TextOp& t) const {
+    if (text_form == TextForm::glyphs) {
+      char scale[32];
+      std::snprintf(scale, sizeof scale, "%.17g", t.scale);
+      out << "\"t\"," << json_string(t.text) << ",\"" << hex_colour(t.colour) << "\","
+          << t.thickness << "," << static_cast<int>(t.font) << "," << scale << "," << t.origin.x
+          << "," << t.origin.y;
+      return;
+    }
     out << "\"T\"," << json_string(t.text) << ",\"" << hex_colour(t.colour) << "\"," << t.thickness
         << ",[";
     bool first_stroke = true;
@@ -60,27 +70,32 @@ struct Writer {
 
 }  // namespace
 
+std::string to_json(const DrawOp& op, TextForm text) {
+  std::ostringstream out;
+  // The kind first, then clip and mark: written after the body's kind, as the format says.
+  std::ostringstream body;
+  std::visit(Writer{body, text}, op.body);
+  const std::string b = body.str();
+  const std::size_t comma = b.find(',');
+  out << "[" << b.substr(0, comma) << "," << (op.clip ? box(*op.clip) : "null") << ",";
+  if (op.mark)
+    out << "{\"kind\":\"" << to_string(op.mark->kind)
+        << "\",\"what\":" << json_string(op.mark->what) << ",\"box\":" << box(op.mark->box)
+        << ",\"layer\":" << op.mark->layer << "}";
+  else
+    out << "null";
+  out << b.substr(comma) << "]";
+  return out.str();
+}
+
 std::string to_json(const Frame& frame) {
   std::ostringstream out;
   out << "{\"w\":" << frame.size().width << ",\"h\":" << frame.size().height << ",\"bg\":\""
       << hex_colour(frame.background()) << "\",\"ops\":[";
   bool first = true;
   for (const DrawOp& op : frame.ops()) {
-    out << (first ? "[" : ",\n[");
+    out << (first ? "" : ",\n") << to_json(op);
     first = false;
-    // The kind first, then clip and mark: written after the body's kind, as the format says.
-    std::ostringstream body;
-    std::visit(Writer{body}, op.body);
-    const std::string b = body.str();
-    const std::size_t comma = b.find(',');
-    out << b.substr(0, comma) << "," << (op.clip ? box(*op.clip) : "null") << ",";
-    if (op.mark)
-      out << "{\"kind\":\"" << to_string(op.mark->kind)
-          << "\",\"what\":" << json_string(op.mark->what) << ",\"box\":" << box(op.mark->box)
-          << ",\"layer\":" << op.mark->layer << "}";
-    else
-      out << "null";
-    out << b.substr(comma) << "]";
   }
   out << "]}\n";
   return out.str();

@@ -23,6 +23,14 @@ namespace scantrace::viz {
 
 std::string to_json(const Frame& frame);
 
+// One OP of the list above. With TextForm::glyphs a text is written without its strokes, as
+//   ["t", clip, mark, text, colour, thickness, font, scale, x, y]   (font: OpenCV's number; the
+// scale with 17 digits; origin on the baseline), for a reader that holds the Hershey glyphs and
+// repeats hershey_strokes() (the Jupyter player's deck, python/src/player_deck.hpp: strokes are
+// ~95 % of a frame's JSON).
+enum class TextForm { strokes, glyphs };
+std::string to_json(const DrawOp& op, TextForm text = TextForm::strokes);
+
 // `drawScantraceFrame(ctx, frame)`: draws a parsed to_json() frame on a 2D canvas context of the
 // frame's size; returns a Promise that resolves when the pixel blocks (images) are drawn too.
 // tests/viz/test_canvas_frame.cpp runs it in headless Chromium against the OpenCV raster.

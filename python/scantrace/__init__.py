@@ -7,13 +7,15 @@ The course's functions, with the course's signatures and conventions:
     g_shading(img, vertices, vcolors)
     render_img(faces, vertices, vcolors, depth, shading)   # 512 x 512 x 3 on white
 
-and beyond them: render(), load_scene(), write_png(), trace_triangle(), trace_scene(),
+and beyond them: render(), load_scene(), demo_scene(), write_png(), trace_triangle(), trace_scene(),
 Trace.load() and explain(); and the grading questions, on the same C++ code as the command line:
 
     why(scene, x, y)        # PixelStory: why pixel (x, y) has its colour (scantrace why)
     diff(scene, image)      # DiffReport: where and why an image differs (scantrace diff)
     check(trace)            # CheckResult: does a trace agree with exact arithmetic (scantrace check)
     Image(render_img(...))  # shows itself in Jupyter as a PNG
+    trace.frame(10).to_svg()  # a replay frame (the display list) as SVG, or to_json()
+    trace                   # in Jupyter: an inline player stepping through the replay
 
 A scene is a path, the dict load_scene() returns, or (faces, vertices, vcolors, depth). Coordinates are [x, y] with x the column and y the row (pointing
 down); pixel (x, y) is centred on the integer point (x, y) and is img[y, x]. The fill rule is
@@ -26,6 +28,7 @@ render here equals the command's render value for value. Renders release the GIL
 from ._api import (
     InputError,
     Trace,
+    demo_scene,
     explain,
     f_shading,
     g_shading,
@@ -39,16 +42,22 @@ from ._api import (
 )
 from ._grade import CheckResult, DiffReport, PixelStory, check, diff, why
 from ._jupyter import Image
+from ._player import Player
+from ._scantrace import Frame, Frames
 from ._scantrace import __version__
 
 __all__ = [
     "CheckResult",
     "DiffReport",
+    "Frame",
+    "Frames",
     "Image",
     "InputError",
+    "Player",
     "PixelStory",
     "Trace",
     "check",
+    "demo_scene",
     "diff",
     "explain",
     "f_shading",

@@ -111,6 +111,15 @@ def load_scene(path, *, shading="gouraud"):
     return _scantrace.load_scene(os.fspath(path), shading)
 
 
+def demo_scene():
+    """The built-in scene of ``scantrace demo``, generated (no file needed): a jittered grid mesh
+    coloured by a hue wheel, a sun of thin triangles around one vertex and three large
+    overlapping triangles at different depths, on a 512 x 512 canvas. The same dict as
+    :func:`load_scene`: ``render(**demo_scene())``, ``render_img`` takes its first four arrays.
+    """
+    return _scantrace.demo_scene()
+
+
 def write_png(img, path):
     """Writes an M x N x 3 float image (RGB in [0, 1]) as an 8-bit PNG, ``round(255 c)``.
 

@@ -16,6 +16,7 @@
 #include "array_canvas.hpp"
 #include "arrays.hpp"
 #include "casters.hpp"
+#include "demo/demo_scene.hpp"
 #include "io/mat_scene.hpp"
 #include "io/memory_budget.hpp"
 #include "io/obj_loader.hpp"
@@ -116,49 +117,36 @@ void run_interruptibly(Work work, bool long_run) {
   if (job->error) std::rethrow_exception(job->error);
 }
 
-// An H×W×3 array over memory that a worker may still write after the array is gone (an
-// interrupted render): the array and the worker share it, the last one frees it.
-template <class T>
-py::array_t<T> shared_array(const std::shared_ptr<T[]>& data, int width, int height) {
-  auto* owner = new std::shared_ptr<T[]>(data);
-  py::capsule free(owner, [](void* p) { delete static_cast<std::shared_ptr<T[]>*>(p); });
-  return py::array_t<T>({height, width, 3}, data.get(), free);
-}
-
-// The scene as the command renders it: the library's render() chooses far to near or near to far
-// (a scene of high overdraw), writing the C++ float canvas. Far to near the fill writes the
-// returned array's memory directly (ArrayCanvas); near to far, which needs the library's Image for
-// its coverage mask, the float canvas is copied (widened for float64: the same values, since a
-// float64 render holds the float canvas's values). Either way the values are the command's.
+// The scene as the command renders it (the library's render(): far to near, or near to far for a
+// scene of high overdraw, into an Image of the array's own pixel type: Rgb64 holds the float
+// canvas's values widened, array_canvas.hpp), and the image handed to numpy without a copy. The
+// image is shared by the array and the worker: an interrupted render's worker may still write it
+// after the array is gone, and the last one frees it. (Rendering near to far into the library's
+// float Image and copying it into the array cost the course scene's render_img 1.4 times the C++
+// render; python/bench/bench_render_img.py.)
 template <class P>
 py::array render_array(Scene scene, const FillOptions& opt) {
   using T = decltype(P::r);
-  const int w = scene.width, h = scene.height;
-  const auto n = static_cast<std::size_t>(w) * h * 3;
-  auto data = std::make_shared_for_overwrite<T[]>(n);
+  static_assert(sizeof(P) == 3 * sizeof(T));
+  auto image = std::make_shared<Image<P>>();
   auto shared = std::make_shared<const Scene>(std::move(scene));
   // The choice too runs on the worker: estimating the overdraw of a million large faces takes
   // seconds, which Ctrl-C must be able to interrupt. What takes a worker: 2^16 faces or more, or
   // a canvas of 2^22 pixels (2048²) or more, renders of tens of milliseconds and up.
-  const bool long_run = shared->faces.size() >= (1u << 16) || n / 3 >= (std::size_t{1} << 22);
+  const bool long_run =
+      shared->faces.size() >= (1u << 16) ||
+      static_cast<std::size_t>(shared->width) * shared->height >= (std::size_t{1} << 22);
   run_interruptibly(
-      [shared, opt, data, n, w, h] {
+      [shared, opt, image] {
         RenderScratch scratch;
         NoTracer none;
-        if (choose_occlusion(*shared, opt, scratch.overdraw_cells) == Occlusion::near_to_far) {
-          FillOptions chosen = opt;  // estimated once: render() takes the choice as made
-          chosen.occlusion = Occlusion::near_to_far;
-          RgbImage image;
-          render(image, *shared, chosen, scratch, none);
-          std::copy_n(&image.pixels().data()->r, n, data.get());
-        } else {
-          ArrayCanvas<P> canvas(reinterpret_cast<P*>(data.get()), w, h);
-          canvas.clear(shared->background);
-          render_into(canvas, *shared, opt, scratch, none);
-        }
+        render(*image, *shared, opt, scratch, none);
       },
       long_run);
-  return shared_array(data, w, h);
+  auto* owner = new std::shared_ptr<Image<P>>(image);
+  py::capsule free(owner, [](void* p) { delete static_cast<std::shared_ptr<Image<P>>*>(p); });
+  T* data = image->width() ? &image->row(0)->r : nullptr;
+  return py::array_t<T>({image->height(), image->width(), 3}, data, free);
 }
 
 py::array render_scene(Scene scene, const FillOptions& opt, py::handle dtype) {
@@ -299,6 +287,7 @@ void bind_course(py::module_& m) {
       py::arg("vertices"), py::arg("faces"), py::arg("vcolors"), py::arg("depth"), py::kw_only(),
       py::arg("shading"), py::arg("fill_rule"), py::arg("size"), py::arg("background"),
       py::arg("dtype"));
+  m.def("demo_scene", [] { return scene_dict(demo_scene()); });
   m.def(
       "load_scene",
       [](const std::string& path, const std::string& shading) {

@@ -11,6 +11,7 @@ namespace scantrace::python {
 void bind_course(pybind11::module_& m);
 void bind_trace(pybind11::module_& m);
 void bind_grade(pybind11::module_& m);
+void bind_frames(pybind11::module_& m);
 }  // namespace scantrace::python
 
 PYBIND11_MODULE(_scantrace, m) {
@@ -34,4 +35,5 @@ PYBIND11_MODULE(_scantrace, m) {
   scantrace::python::bind_course(m);
   scantrace::python::bind_trace(m);
   scantrace::python::bind_grade(m);
+  scantrace::python::bind_frames(m);
 }

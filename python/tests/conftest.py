@@ -1,8 +1,10 @@
 """Shared helpers of the Python tests: paths given by CTest, the course scene, random scenes."""
 
+import html
 import json
 import os
 import pathlib
+import re
 import subprocess
 
 import numpy as np
@@ -50,3 +52,16 @@ def write_scene_json(path, vertices, faces, vcolors, depth, size=(512, 512), bac
 def run_cli(*args):
     return subprocess.run([SCANTRACE, *map(str, args)], capture_output=True, text=True,
                           check=True)
+
+
+def run_in_chromium(page_path, tmp_path):
+    """Opens page_path in headless Chromium, lets its scripts run (virtual time: timers and
+    image loads finish) and returns the JSON its script left in <pre id="result">."""
+    r = subprocess.run(
+        ["chromium", "--headless", "--no-sandbox", "--disable-gpu", "--virtual-time-budget=30000",
+         "--host-resolver-rules=MAP * ~NOTFOUND", f"--user-data-dir={tmp_path / 'profile'}",
+         "--dump-dom", page_path.as_uri()],
+        capture_output=True, text=True, timeout=120)
+    m = re.search(r'<pre id="result">(.*?)</pre>', r.stdout, re.S)
+    assert m, f"the page did not finish: {r.stderr[-2000:]}"
+    return json.loads(html.unescape(m.group(1)))

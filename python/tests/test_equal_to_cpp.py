@@ -68,3 +68,25 @@ def test_obj_model_renders_like_the_command(tmp_path):
     run_cli("render", model, "--depth", "painter", "--cull", "none", "-o", tmp_path / "cli.png")
     scantrace.write_png(scantrace.render(**scene), tmp_path / "py.png")
     assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+
+
+@pytest.mark.parametrize("dtype", [np.float64, np.float32, np.uint8])
+def test_a_scene_of_high_overdraw_renders_as_its_nearest_face_alone(tmp_path, dtype):
+    """3,000 copies of one large triangle at one depth, each its own colour: the library renders
+    such a scene near to far (its overdraw estimate), and the painter's result is the last face's
+    fill alone (ties keep face order, so the last face is drawn last), computed here by g_shading
+    on a white image. The render's array is the library's image itself, handed to numpy."""
+    n = 3000
+    triangle = np.array([[30.5, 12.25], [490.0, 200.75], [140.125, 505.5]])
+    vertices = np.tile(triangle, (n, 1))
+    faces = np.arange(3 * n).reshape(n, 3)
+    rng = np.random.default_rng(7)
+    vcolors = rng.uniform(0, 1, (3 * n, 3))
+    depth = np.full(3 * n, 5.0)
+    img = scantrace.render(vertices, faces, vcolors, depth, dtype=dtype)
+    last = scantrace.g_shading(np.ones((512, 512, 3)), triangle, vcolors[-3:])
+    expected = {np.float64: last, np.float32: last.astype(np.float32),
+                np.uint8: np.round(last * 255).astype(np.uint8)}[dtype]
+    assert img.dtype == dtype and img.shape == (512, 512, 3) and img.flags["C_CONTIGUOUS"]
+    assert np.array_equal(img, expected)
+    del img  # the array owns the image: nothing is left behind

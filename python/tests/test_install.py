@@ -71,6 +71,7 @@ def test_wheel_installs_into_a_fresh_venv_and_imports_elsewhere(tmp_path):
         scene = ([[0, 1, 2]], np.array([[1, 1], [40, 2], [3, 30]], float), np.eye(3), np.zeros(3))
         story = scantrace.why(scene, 10, 10)
         report = scantrace.diff(scene, img)
+        player = scantrace.trace_triangle([[1, 1], [40, 2], [3, 30]], np.eye(3))._repr_html_()
         maps = open('/proc/self/maps').read()
         try:
             scantrace.explain([[1, 1], [40, 2], [3, 30]], np.eye(3), out='x/')
@@ -81,6 +82,7 @@ def test_wheel_installs_into_a_fresh_venv_and_imports_elsewhere(tmp_path):
         print(int((img != 1).any(axis=2).sum()), story.final['face'], report.agrees)
         print('opencv' in maps)
         print(missing)
+        print('drawScantraceFrame' in player, 'function scantracePlayer' in player)
     """)
     elsewhere = tmp_path / "elsewhere"
     elsewhere.mkdir()
@@ -93,3 +95,24 @@ def test_wheel_installs_into_a_fresh_venv_and_imports_elsewhere(tmp_path):
     assert out[2] == "False", "import scantrace loaded OpenCV"
     assert "explain (writing a video or PNG frames) needs scantrace's OpenCV module" in out[3]
     assert "SCANTRACE_PYTHON_OPENCV=1" in out[3]
+    # The inline player, with its script (package data of the wheel) and without OpenCV.
+    assert out[4] == "True True"
+
+
+def test_pip_install_builds_outside_the_clone(tmp_path):
+    """Without SCANTRACE_CMAKE_BUILD_DIR, setup.py builds in the user's cache (XDG_CACHE_HOME),
+    one directory per clone: `pip install .` writes nothing into the clone (setuptools' egg-info
+    and build/ go there too)."""
+    source = pathlib.Path(os.environ.get("SCANTRACE_SOURCE_DIR") or pathlib.Path(__file__).parents[2])
+    env = {k: v for k, v in os.environ.items() if k != "SCANTRACE_CMAKE_BUILD_DIR"}
+    env["XDG_CACHE_HOME"] = str(tmp_path / "cache")
+    script = ("import runpy, setuptools\n"
+              "setuptools.setup = lambda **kw: print(kw['options']['egg_info']['egg_base'])\n"
+              "g = runpy.run_path('setup.py')\n"
+              "print(g['BUILD'])\n")
+    out = subprocess.run([sys.executable, "-c", script], cwd=source, env=env, check=True,
+                         capture_output=True, text=True).stdout.split()
+    egg_base, build = pathlib.Path(out[0]), pathlib.Path(out[1])
+    assert build.parent == tmp_path / "cache" / "scantrace" and build.is_dir()
+    assert build.name.startswith("build-python-") and egg_base == build
+    assert not build.is_relative_to(source.resolve())

@@ -38,6 +38,9 @@ packages+=(libxml2-utils hershey-fonts-data)
 # The Python package's build (pip install ., python3 -m build) and its benchmark's alternatives
 # (python/bench/bench_alternatives.py: OpenCV's and PIL's polygon fills).
 packages+=(python3-setuptools python3-wheel python3-build python3-venv python3-opencv python3-pil)
+# The WebAssembly build and its tests (web/, docs/web.md): emscripten compiles, Node runs the
+# module's tests (node-acorn: emscripten's JavaScript optimizer).
+packages+=(emscripten nodejs node-acorn)
 
 if [ "${1:-}" = "--demo" ]; then
   packages=("${demo_packages[@]}")

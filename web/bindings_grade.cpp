@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "grade/diff_picture.hpp"
 #include "grade/diff_report.hpp"
 #include "grade/image_input.hpp"
 #include "grade/pixel_story.hpp"
@@ -33,7 +34,8 @@ EMSCRIPTEN_KEEPALIVE int st_why(const char* path, int x, int y, const char* opti
 
 // The submitted image (`width` × `height` RGBA bytes, decoded by the caller from the file `name`)
 // compared with the scene's reference render: `scantrace diff --json`'s report. options:
-// the fill options, "tolerance" (1/255), "undo" (true), "format" ("png").
+// the fill options, "tolerance" (1/255), "undo" (true), "format" ("png"). The result's bytes:
+// the picture of the differences, RGBA, at the scene's canvas size.
 EMSCRIPTEN_KEEPALIVE int st_diff(const char* path, const std::uint8_t* rgba, int width, int height,
                                  const char* name, const char* options_json) {
   return web::run([&] {
@@ -56,6 +58,16 @@ EMSCRIPTEN_KEEPALIVE int st_diff(const char* path, const std::uint8_t* rgba, int
     const grade::DiffReport report =
         grade::diff(scene, web::fill_options(o, is_obj_file(path)), image, d);
     web::result().text = report.to_json().dump(2) + "\n";
+    // The picture of the differences (grade/diff_picture.hpp), RGB to RGBA for a canvas.
+    const std::vector<std::uint8_t> rgb = grade::diff_picture(report);
+    auto& bytes = web::result().bytes;
+    bytes.resize(rgb.size() / 3 * 4);
+    for (std::size_t i = 0, j = 0; i < rgb.size(); i += 3, j += 4) {
+      bytes[j] = rgb[i];
+      bytes[j + 1] = rgb[i + 1];
+      bytes[j + 2] = rgb[i + 2];
+      bytes[j + 3] = 255;
+    }
   });
 }
 

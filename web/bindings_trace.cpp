@@ -6,7 +6,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "demo/demo_scene.hpp"
 #include "io/obj_loader.hpp"
+#include "io/scene_json.hpp"
 #include "trace/record.hpp"
 #include "viz/frame_json.hpp"
 #include "viz/frame_sequence.hpp"
@@ -140,6 +142,14 @@ EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
     out += "]}";
     web::result().text = std::move(out);
   });
+}
+
+// drawScantraceFrame's source (viz/frame_json.hpp), for a page to compile once.
+EMSCRIPTEN_KEEPALIVE const char* st_canvas_script() { return viz::frame_canvas_script(); }
+
+// The built-in demo scene (`scantrace demo`'s demo_scene.json) as scene JSON.
+EMSCRIPTEN_KEEPALIVE int st_demo_scene() {
+  return web::run([] { web::result().text = scene_to_json(demo_scene()); });
 }
 
 }  // extern "C"

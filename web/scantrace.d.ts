@@ -90,6 +90,12 @@ export class Scantrace {
   frames(trace: string | TraceEvent[], options?: FrameOptions): { steps: FrameStep[]; frames: CanvasFrame[] };
   /** `scantrace why SCENE X Y --json`'s document (trace/why_schema.json). */
   why(scene: SceneInput, x: number, y: number, options?: FillOptions): Record<string, unknown>;
+  /** drawScantraceFrame's JavaScript source (viz/frame_json.hpp). */
+  canvasScript(): string;
+  /** The built-in demo scene (`scantrace demo`'s demo_scene.json) as scene JSON text. */
+  demoScene(): string;
+  /** The picture of the last diff's differences (grade/diff_picture.hpp), or null. */
+  lastDiffPicture: { width: number; height: number; rgba: Uint8ClampedArray } | null;
   /** `scantrace diff SCENE IMAGE --json`'s report. */
   diff(scene: SceneInput, image: DecodedImage, options?: DiffOptions): Record<string, unknown>;
 }

@@ -141,15 +141,29 @@ export class Scantrace {
     return JSON.parse(this._call('why', [this._sceneFile(scene), x | 0, y | 0, JSON.stringify(options)]).text());
   }
 
+  // drawScantraceFrame's JavaScript source (viz/frame_json.hpp).
+  canvasScript() {
+    return this.m.UTF8ToString(this.m._st_canvas_script());
+  }
+
+  // The built-in demo scene as scene JSON text.
+  demoScene() {
+    return this._call('demo_scene', []).text();
+  }
+
   // `scantrace diff SCENE IMAGE --json`'s report. image: {width, height, rgba, name?}, decoded.
+  // diffPicture(): the picture of the last diff's differences, {width, height, rgba}.
   diff(scene, image, options = {}) {
     const { width, height, rgba } = image;
     if (!(width > 0 && height > 0) || !rgba || rgba.length !== width * height * 4)
       throw new ScantraceError('image: {width, height, rgba} with width × height × 4 bytes', 2);
     const bytes = rgba instanceof Uint8Array ? rgba : new Uint8Array(rgba.buffer, rgba.byteOffset, rgba.length);
-    return JSON.parse(
-      this._call('diff', [this._sceneFile(scene), bytes, width, height, image.name || 'image.png', JSON.stringify(options)]).text(),
-    );
+    const r = this._call('diff', [this._sceneFile(scene), bytes, width, height, image.name || 'image.png', JSON.stringify(options)]);
+    const report = JSON.parse(r.text());
+    const picture = new Uint8ClampedArray(r.bytes().buffer);
+    const w = report.canvas ? report.canvas.width : 0;
+    this.lastDiffPicture = w ? { width: w, height: picture.length / 4 / w, rgba: picture } : null;
+    return report;
   }
 }
 

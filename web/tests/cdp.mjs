@@ -1,0 +1,71 @@
+// Headless Chromium driven over the DevTools protocol (node --experimental-websocket): the
+// explorer's test sends real input events (mouse, keys, files) and watches the console and the
+// network. Chromium is started as tests/viz/chromium_compare.hpp starts it.
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+
+export async function launch() {
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'scantrace-cdp-'));
+  const proc = spawn('chromium', ['--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars',
+    '--force-device-scale-factor=1', '--remote-debugging-port=0', `--user-data-dir=${profile}`,
+    '--window-size=1400,1000', 'about:blank'], { stdio: 'ignore' });
+  const portFile = path.join(profile, 'DevToolsActivePort');
+  for (let i = 0; i < 300 && !fs.existsSync(portFile); ++i) await new Promise((r) => setTimeout(r, 100));
+  let lines = [];
+  for (let i = 0; i < 50; ++i) {
+    lines = fs.readFileSync(portFile, 'utf8').split('\n');
+    if (lines[1]) break;
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  const ws = new WebSocket(`ws://127.0.0.1:${lines[0]}${lines[1]}`);
+  await new Promise((ok, fail) => { ws.onopen = ok; ws.onerror = fail; });
+  let id = 0;
+  const pending = new Map();
+  const listeners = [];
+  ws.onmessage = (m) => {
+    const msg = JSON.parse(m.data);
+    if (msg.id && pending.has(msg.id)) {
+      const { ok, fail } = pending.get(msg.id);
+      pending.delete(msg.id);
+      if (msg.error) fail(new Error(`${msg.error.message} ${msg.error.data || ''}`));
+      else ok(msg.result);
+    } else if (msg.method) for (const l of listeners) l(msg);
+  };
+  const send = (method, params = {}, sessionId) => new Promise((ok, fail) => {
+    pending.set(++id, { ok, fail });
+    ws.send(JSON.stringify({ id, method, params, sessionId }));
+  });
+  const { targetId } = await send('Target.createTarget', { url: 'about:blank' });
+  const { sessionId } = await send('Target.attachToTarget', { targetId, flatten: true });
+  const page = (method, params) => send(method, params, sessionId);
+  return {
+    page,
+    on: (f) => listeners.push(f),
+    async evaluate(expression) {
+      const r = await page('Runtime.evaluate', { expression, returnByValue: true, awaitPromise: true });
+      if (r.exceptionDetails) throw new Error(`${expression}: ${JSON.stringify(r.exceptionDetails).slice(0, 500)}`);
+      return r.result.value;
+    },
+    async close() {
+      try { await send('Browser.close'); } catch { /* gone already */ }
+      ws.close();
+      if (proc.exitCode === null) {
+        proc.kill();
+        await new Promise((r) => proc.once('exit', r));
+      }
+      fs.rmSync(profile, { recursive: true, force: true });
+    },
+  };
+}
+
+export async function until(what, f, ms = 15000) {
+  const t0 = Date.now();
+  for (;;) {
+    const v = await f();
+    if (v) return v;
+    if (Date.now() - t0 > ms) throw new Error(`timed out waiting for ${what}`);
+    await new Promise((r) => setTimeout(r, 50));
+  }
+}

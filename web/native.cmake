@@ -37,3 +37,22 @@ if(SCANTRACE_BUILD_TESTS)
   set_tests_properties("web: node module equals the native command" PROPERTIES
                        FIXTURES_REQUIRED demo_files LABELS "web" TIMEOUT 600)
 endif()
+
+if(SCANTRACE_BUILD_TESTS)
+  # The explorer page in headless Chromium, opened from file:// (web/tests/chromium_explorer.mjs).
+  # `scantrace explore -o` writes the page the Chromium test opens.
+  add_test(NAME "web: scantrace explore writes the explorer page"
+           COMMAND $<TARGET_FILE:scantrace> explore -o ${CMAKE_BINARY_DIR}/web-tests/explorer.html)
+  set_tests_properties("web: scantrace explore writes the explorer page" PROPERTIES
+                       LABELS "web" FIXTURES_SETUP explorer_page)
+  find_program(SCANTRACE_CHROMIUM chromium)
+  if(SCANTRACE_CHROMIUM)
+    add_test(NAME "web: explorer in headless Chromium"
+             COMMAND ${SCANTRACE_NODE} --experimental-websocket --no-warnings
+                     ${PROJECT_SOURCE_DIR}/web/tests/chromium_explorer.mjs
+                     ${CMAKE_BINARY_DIR}/web-tests/explorer.html
+                     $<TARGET_FILE:scantrace> ${CMAKE_BINARY_DIR}/web-tests/chromium)
+    set_tests_properties("web: explorer in headless Chromium" PROPERTIES LABELS "web;browser"
+                         FIXTURES_REQUIRED explorer_page TIMEOUT 300)
+  endif()
+endif()

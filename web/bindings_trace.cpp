@@ -123,19 +123,31 @@ EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
     trace::Trace t = trace::Trace::load(path);
     viz::StepOptions steps;
     steps.rows_per_step = o.value("rows_per_step", 0);
+    steps.mode = viz::parse_replay_mode(o.value("mode", std::string("auto")));
     viz::FrameSequence s(t, steps, {o.value("width", 1280), o.value("height", 720)},
                          o.value("source", std::string(path)));
+    if (o.contains("marked_pixel"))
+      s.mark_on_every_frame(viz::CanvasPixel{o["marked_pixel"][0].get<std::int64_t>(),
+                                             o["marked_pixel"][1].get<std::int64_t>()});
     const std::size_t n = s.steps().size();
     const std::size_t first = std::min<std::size_t>(o.value("first", std::size_t{0}), n);
     const std::size_t last = std::min<std::size_t>(first + o.value("count", n), n);
     std::string out = "{\"steps\":[";
     for (std::size_t i = 0; i < n; ++i) {
       const viz::Step& st = s.steps()[i];
-      out += (i ? "," : "") + nlohmann::json{{"kind", viz::to_string(st.kind)},
-                                             {"triangle", st.triangle},
-                                             {"first_row", st.first_row},
-                                             {"last_row", st.last_row}}
-                                  .dump();
+      nlohmann::json step{{"kind", viz::to_string(st.kind)},
+                          {"triangle", st.triangle},
+                          {"first_row", st.first_row},
+                          {"last_row", st.last_row}};
+      // Where the canvas appears on the frame: canvas pixel (x, y) is centred at frame point
+      // origin + cell·(x, y), inside `view` (a page maps a click back to the pixel).
+      if (const auto g = s.geometry(i)) {
+        const viz::Point2d o = g->to_frame(0, 0);
+        step["view"] = {g->view().x, g->view().y, g->view().width, g->view().height};
+        step["origin"] = {o.x, o.y};
+        step["cell"] = g->cell();
+      }
+      out += (i ? "," : "") + step.dump();
     }
     out += "],\"frames\":[";
     for (std::size_t i = first; i < last; ++i) out += (i > first ? "," : "") + viz::to_json(s.frame(i));

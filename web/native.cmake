@@ -56,3 +56,13 @@ if(SCANTRACE_BUILD_TESTS)
                          FIXTURES_REQUIRED explorer_page TIMEOUT 300)
   endif()
 endif()
+
+if(SCANTRACE_BUILD_TESTS AND SCANTRACE_CHROMIUM)
+  # The trace page of `replay -o OUT.html` in headless Chromium (web/tests/chromium_trace_page.mjs).
+  add_test(NAME "web: trace page in headless Chromium"
+           COMMAND ${SCANTRACE_NODE} --experimental-websocket --no-warnings
+                   ${PROJECT_SOURCE_DIR}/web/tests/chromium_trace_page.mjs $<TARGET_FILE:scantrace>
+                   ${CMAKE_BINARY_DIR}/web-tests/trace_page)
+  set_tests_properties("web: trace page in headless Chromium" PROPERTIES LABELS "web;browser"
+                       TIMEOUT 300)
+endif()

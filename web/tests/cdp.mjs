@@ -69,3 +69,34 @@ export async function until(what, f, ms = 15000) {
     await new Promise((r) => setTimeout(r, 50));
   }
 }
+
+// What a page must not do, collected as it happens: console errors and warnings, uncaught
+// exceptions, logged errors, requests for anything but file:, data: and blob: URLs.
+export function watchProblems(browser) {
+  const problems = [];
+  browser.on((m) => {
+    if (m.method === 'Runtime.exceptionThrown')
+      problems.push(`exception: ${m.params.exceptionDetails.exception?.description || m.params.exceptionDetails.text}`);
+    if (m.method === 'Runtime.consoleAPICalled' && ['error', 'warning', 'assert'].includes(m.params.type))
+      problems.push(`console.${m.params.type}: ${JSON.stringify(m.params.args.map((a) => a.value ?? a.description))}`);
+    if (m.method === 'Log.entryAdded' && m.params.entry.level === 'error') problems.push(`log: ${m.params.entry.text}`);
+    if (m.method === 'Network.requestWillBeSent' && !/^(file|data|blob):/.test(m.params.request.url))
+      problems.push(`network request: ${m.params.request.url}`);
+  });
+  return problems;
+}
+
+// Named checks: a failure is printed and fails the run, the next check still runs.
+export function checker() {
+  const c = { passed: 0 };
+  c.check = async (what, f) => {
+    try {
+      await f();
+      ++c.passed;
+    } catch (e) {
+      console.error(`FAIL ${what}: ${e.message.split('\n').slice(0, 10).join('\n')}`);
+      process.exitCode = 1;
+    }
+  };
+  return c;
+}

@@ -13,7 +13,7 @@ import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 
-import { launch, until } from './cdp.mjs';
+import { checker, launch, until, watchProblems } from './cdp.mjs';
 import { decodePng, encodePng } from './png.mjs';
 
 const [explorer, scantraceArg, work] = process.argv.slice(2);
@@ -27,25 +27,9 @@ const native = (args, ok = [0]) => {
 const jsonl = (text) => text.split('\n').filter((l) => l).map((l) => JSON.parse(l));
 
 const b = await launch();
-const problems = [];
-b.on((m) => {
-  if (m.method === 'Runtime.exceptionThrown') problems.push(`exception: ${m.params.exceptionDetails.exception?.description || m.params.exceptionDetails.text}`);
-  if (m.method === 'Runtime.consoleAPICalled' && ['error', 'warning', 'assert'].includes(m.params.type))
-    problems.push(`console.${m.params.type}: ${JSON.stringify(m.params.args.map((a) => a.value ?? a.description))}`);
-  if (m.method === 'Log.entryAdded' && m.params.entry.level === 'error') problems.push(`log: ${m.params.entry.text}`);
-  if (m.method === 'Network.requestWillBeSent' && !/^(file|data|blob):/.test(m.params.request.url))
-    problems.push(`network request: ${m.params.request.url}`);
-});
-let checks = 0;
-const check = async (what, f) => {
-  try {
-    await f();
-    ++checks;
-  } catch (e) {
-    console.error(`FAIL ${what}: ${e.message.split('\n').slice(0, 10).join('\n')}`);
-    process.exitCode = 1;
-  }
-};
+const problems = watchProblems(b);
+const checks = checker();
+const check = checks.check;
 const text = (id) => b.evaluate(`document.getElementById(${JSON.stringify(id)}).textContent`);
 const mouse = async (type, [x, y]) => b.page('Input.dispatchMouseEvent', { type, x, y, button: 'left', buttons: type === 'mouseReleased' ? 0 : 1, clickCount: 1 });
 const key = async (k, code) => {
@@ -170,4 +154,4 @@ try {
 } finally {
   await b.close();
 }
-console.log(`${checks} checks passed${process.exitCode ? ', some FAILED' : ''}`);
+console.log(`${checks.passed} checks passed${process.exitCode ? ', some FAILED' : ''}`);

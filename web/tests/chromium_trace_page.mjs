@@ -14,7 +14,7 @@ import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 
-import { launch, until } from './cdp.mjs';
+import { checker, launch, until, watchProblems } from './cdp.mjs';
 
 const [scantraceArg, work] = process.argv.slice(2);
 const scantrace = path.resolve(scantraceArg);
@@ -25,16 +25,8 @@ const native = (args) => {
   return r;
 };
 
-let checks = 0;
-const check = async (what, f) => {
-  try {
-    await f();
-    ++checks;
-  } catch (e) {
-    console.error(`FAIL ${what}: ${e.message.split('\n').slice(0, 10).join('\n')}`);
-    process.exitCode = 1;
-  }
-};
+const checks = checker();
+const check = checks.check;
 
 await check('the course triangle page is at most 1 MB', () => {
   native(['explain', '--triangle', '20,20 250,80 300,400', '-o', 'course_triangle.html']);
@@ -48,15 +40,7 @@ native(['replay', 't.jsonl', '-o', 't.html', '--video-size', '640x360', '--rows-
 const events = fs.readFileSync(path.join(work, 't.jsonl'), 'utf8').split('\n').filter((l) => l).map((l) => JSON.parse(l));
 
 const b = await launch();
-const problems = [];
-b.on((m) => {
-  if (m.method === 'Runtime.exceptionThrown') problems.push(`exception: ${m.params.exceptionDetails.exception?.description || m.params.exceptionDetails.text}`);
-  if (m.method === 'Runtime.consoleAPICalled' && ['error', 'warning', 'assert'].includes(m.params.type))
-    problems.push(`console.${m.params.type}: ${JSON.stringify(m.params.args.map((a) => a.value ?? a.description))}`);
-  if (m.method === 'Log.entryAdded' && m.params.entry.level === 'error') problems.push(`log: ${m.params.entry.text}`);
-  if (m.method === 'Network.requestWillBeSent' && !/^(file|data|blob):/.test(m.params.request.url))
-    problems.push(`network request: ${m.params.request.url}`);
-});
+const problems = watchProblems(b);
 const key = async (k) => {
   const code = { ArrowRight: 39, ArrowLeft: 37, PageDown: 34, PageUp: 33, Home: 36, End: 35 }[k];
   await b.page('Input.dispatchKeyEvent', { type: 'rawKeyDown', key: k, code: k, windowsVirtualKeyCode: code });
@@ -115,4 +99,4 @@ try {
 } finally {
   await b.close();
 }
-console.log(`${checks} checks passed${process.exitCode ? ', some FAILED' : ''}`);
+console.log(`${checks.passed} checks passed${process.exitCode ? ', some FAILED' : ''}`);

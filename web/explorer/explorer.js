@@ -36,7 +36,8 @@ export async function start(st) {
   }
 
   // Re-runs the module on the state: the fill, the trace and its steps (the current frame drawn).
-  function recompute() {
+  function recompute({ frame = true } = {}) {
+    const t0 = performance.now();
     showError(null);
     try {
       sceneObj = s.mode === 'triangle' ? triangleScene() : null;
@@ -50,18 +51,23 @@ export async function start(st) {
         : { scene };
       traceText = st.traceText(traced, { ...fillOptions(), level: s.mode === 'triangle' ? 'scanline' : 'triangle' });
       events = traceText.split('\n').filter((l) => l).map((l) => JSON.parse(l));
-      plan = st.frames(traceText, { count: 0 }).steps;
+      // The plan of steps (a frame sequence of its own: a tenth of a second), only when asked
+      // for a frame; a drag keeps the plan of the triangle it started from.
+      if (frame || !plan.length) plan = st.frames(traceText, { count: 0 }).steps;
       s.step = Math.min(s.step, Math.max(0, plan.length - 1));
       $('fill-ms').textContent = `${fill.ms.toFixed(2)} ms`;
     } catch (e) {
       showError(e);
     }
-    redraw();
+    redraw({ frame });
+    // The module's work and the synchronous drawing of one change (the frame's pixel blocks
+    // decode after): what a drag costs a frame of the display (docs/performance.md).
+    document.body.dataset[frame ? 'recomputeMs' : 'dragMs'] = (performance.now() - t0).toFixed(1);
   }
 
-  function redraw() {
+  function redraw({ frame = true } = {}) {
     drawGrid();
-    drawStep();
+    if (frame) drawStep();
     showTables();
     history.replaceState(null, '', toHash(s));
   }
@@ -228,7 +234,9 @@ export async function start(st) {
     if (drag.vertex !== undefined) {
       const [x, y] = toCanvas(px, py);
       s.triangle[drag.vertex] = [snap(x), snap(y)];
-      recompute();
+      // While dragging: the fill, the trace and the tables follow the mouse; the composed frame
+      // of the step (the slowest part, a few hundred ms) waits for the release.
+      recompute({ frame: false });
     } else {
       const [x0, y0, vx, vy] = drag.pan;
       if (Math.hypot(px - x0, py - y0) > 3) drag.moved = true;
@@ -238,6 +246,7 @@ export async function start(st) {
     }
   });
   window.addEventListener('mouseup', (e) => {
+    if (drag && drag.vertex !== undefined) recompute();
     if (drag && drag.pan && !drag.moved) {
       const [x, y] = toCanvas(...pointer(e)).map(Math.floor);
       if (fill && x >= 0 && y >= 0 && x < fill.width && y < fill.height) why(x, y);
@@ -373,5 +382,7 @@ export async function start(st) {
     scene: () => (s.mode === 'triangle' ? JSON.stringify(triangleScene()) : null),
     fillPixels: () => Array.from(fillCanvas.getContext('2d').getImageData(0, 0, fillCanvas.width, fillCanvas.height).data),
   };
+  // Milliseconds from navigation to a working page (the test prints it; docs/performance.md).
+  document.body.dataset.readyMs = performance.now().toFixed(0);
   document.body.dataset.ready = '1';
 }

@@ -115,5 +115,7 @@ export async function startPlayer(st, cfg, traceText) {
   window.addEventListener('hashchange', () => fromHash() !== k && show(fromHash()));
   fit();
   show(fromHash());
+  // Milliseconds from navigation to a working page (the test prints it; docs/performance.md).
+  document.body.dataset.readyMs = performance.now().toFixed(0);
   document.body.dataset.ready = '1';
 }

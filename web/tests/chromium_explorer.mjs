@@ -44,7 +44,7 @@ try {
   const t0 = Date.now();
   await b.page('Page.navigate', { url });
   await until('the page to start', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"));
-  console.log(`explorer ready ${Date.now() - t0} ms after navigating`);
+  console.log(`explorer ready ${Date.now() - t0} ms after navigating (${await b.evaluate("document.body.dataset.readyMs")} ms by the page's clock)`);
 
   await check('the address restores the state', async () => {
     assert.equal(await b.evaluate("document.getElementById('shading').value"), 'flat');
@@ -63,6 +63,7 @@ try {
     await mouse('mousePressed', from);
     for (let i = 1; i <= 5; ++i) await mouse('mouseMoved', [from[0] + (to[0] - from[0]) * i / 5, from[1] + (to[1] - from[1]) * i / 5]);
     await mouse('mouseReleased', to);
+    console.log(`a drag's move took ${await b.evaluate('document.body.dataset.dragMs')} ms (fill, trace, tables), its release ${await b.evaluate('document.body.dataset.recomputeMs')} ms (and the plan and the frame)`);
     const tri = (await b.evaluate('explorer.state()')).triangle;
     assert.notDeepStrictEqual(tri[2], [300, 400]);
     // Snapped to the 2^-8 grid.

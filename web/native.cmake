@@ -23,7 +23,7 @@ cmake_host_system_information(RESULT web_jobs QUERY NUMBER_OF_LOGICAL_CORES)
 add_custom_target(scantrace_web ALL
   COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} -S ${PROJECT_SOURCE_DIR} -B ${web_dir}
           -DCMAKE_TOOLCHAIN_FILE=${SCANTRACE_EMSCRIPTEN_TOOLCHAIN} -DCMAKE_BUILD_TYPE=Release
-          -G "Unix Makefiles" > ${CMAKE_BINARY_DIR}/web-configure.log
+          -G "Unix Makefiles" --log-level=WARNING
   COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} --build ${web_dir} --parallel ${web_jobs}
   COMMENT "WebAssembly build (emscripten) into ${web_dir}"
   USES_TERMINAL)

@@ -13,6 +13,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/stopwatch.hpp"
+#include "cli/trace_page.hpp"
 #include "demo/demo_mesh.hpp"
 #include "demo/demo_scene.hpp"
 #include "io/scene_json.hpp"
@@ -110,6 +111,16 @@ void explain_demo_triangle(const std::filesystem::path& trace_file,
       "frames, made in {:.1f} s)",
       video.string(), r.steps, r.seconds, r.format == "h264" ? "H.264" : "MPEG-4",
       options.size.width, options.size.height, r.frames, clock.ms() / 1000);
+  // The trace and its player when the web build is there (cli/trace_page.hpp); the demo's own
+  // build has none, and writes the page of pre-drawn frames.
+  if (!trace_page_template().empty()) {
+    const std::size_t bytes = write_trace_page(t, options, page);
+    spdlog::info(
+        "wrote {}: the same steps as a self-contained page (the trace and its player, {:.0f} KB): "
+        "open it in a browser and step with the arrow keys",
+        page.string(), bytes / 1e3);
+    return;
+  }
   const viz::ReplayResult p = replay_to(page);
   spdlog::info(
       "wrote {}: the same steps as a self-contained page ({} steps, {:.1f} MB): open it in a "

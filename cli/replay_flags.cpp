@@ -11,6 +11,7 @@
 #include "cli/validators.hpp"
 
 #include "cli/stopwatch.hpp"
+#include "cli/trace_page.hpp"
 #include "viz/progress.hpp"
 
 namespace scantrace::cli {
@@ -103,6 +104,11 @@ void add_replay_flags(CLI::App& command, ReplayFlags& flags, bool size_is_free) 
                   "(vector frames, self-contained SVG 1.1)")
       ->check(CLI::IsMember({"png", "svg"}))
       ->capture_default_str();
+  command.add_flag("--frames-page", flags.frames_page,
+                   "OUT.html: embed every frame pre-drawn (WebP, megabytes)\n"
+                   "instead of the trace and its player, which compose\n"
+                   "the frames in the browser (kilobytes; written when\n"
+                   "the web build is there, docs/web.md)");
   command
       .add_option("--max-frames", flags.max_frames,
                   "refuse (before drawing) a replay that needs more frames")
@@ -122,6 +128,16 @@ void run_replay(const trace::Trace& trace, const ReplayFlags& flags, const std::
   if (spdlog::should_log(spdlog::level::info))
     progress = std::make_unique<viz::StderrProgress>(flags.output, "frames");
   const Stopwatch clock;
+  if (viz::output_kind(flags.output) == viz::OutputKind::html && !flags.frames_page &&
+      !trace_page_template().empty()) {
+    viz::validate(options);
+    const std::size_t bytes = write_trace_page(trace, options, flags.output);
+    spdlog::info(
+        "wrote {}: the trace and its player, a self-contained page of {:.0f} KB, in {:.1f} s; "
+        "open it in a browser (#step=N links to step N)",
+        flags.output, bytes / 1e3, clock.ms() / 1000);
+    return;
+  }
   const viz::ReplayResult r = viz::replay(trace, flags.output, options, progress.get());
   const std::string steps = r.steps == r.steps_total ? std::to_string(r.steps) + " steps"
                                                      : std::to_string(r.steps) + " of " +

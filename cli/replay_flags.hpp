@@ -27,6 +27,7 @@ struct ReplayFlags {
   std::size_t max_frames = viz::kDefaultMaxFrames;
   double max_minutes = viz::kDefaultMaxMinutes;
   std::string format = "png";                      // a frame directory's files: png or svg
+  bool frames_page = false;  // OUT.html: pre-drawn frames, not the trace and its player (cli/trace_page.hpp)
   std::optional<viz::CanvasPixel> marked_pixel{};  // not an option: set by `why --explain`
 
   viz::ReplayOptions options(const std::string& source) const;

@@ -10,6 +10,7 @@
 #include <tiny_obj_loader.h>
 
 #include "io/json_input.hpp"
+#include "src/std_compat.hpp"
 #include "io/memory_budget.hpp"
 
 namespace scantrace {
@@ -63,7 +64,7 @@ class Checker {
     std::vector<double> out;
     for (std::size_t i = 1; i < t.size(); ++i) {
       double v = 0;
-      const auto [end, ec] = std::from_chars(t[i].data(), t[i].data() + t[i].size(), v);
+      const auto [end, ec] = from_chars_double(t[i].data(), t[i].data() + t[i].size(), v);
       if (ec != std::errc() || end != t[i].data() + t[i].size() || !std::isfinite(v))
         fail(what + ": \"" + std::string(t[i]) + "\" is not a finite number");
       out.push_back(v);

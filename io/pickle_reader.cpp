@@ -1,11 +1,11 @@
 #include "io/pickle_reader.hpp"
 
-#include <bit>
 #include <cstring>
 #include <optional>
 #include <unordered_map>
 
 #include "io/input_error.hpp"
+#include "src/std_compat.hpp"
 
 namespace scantrace {
 
@@ -49,8 +49,8 @@ std::uint64_t raw_element(const PickledArray& a, std::uint64_t i) {
 double PickledArray::at(std::uint64_t i) const {
   const std::uint64_t v = raw_element(*this, i);
   if (kind == 'f') {
-    if (itemsize == 4) return std::bit_cast<float>(static_cast<std::uint32_t>(v));
-    if (itemsize == 8) return std::bit_cast<double>(v);
+    if (itemsize == 4) return bit_cast<float>(static_cast<std::uint32_t>(v));
+    if (itemsize == 8) return bit_cast<double>(v);
     return 0;  // float16 and longer floats are refused by the reader
   }
   if (kind == 'i') return static_cast<double>(static_cast<std::int64_t>(v));

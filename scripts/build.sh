@@ -4,14 +4,18 @@
 #   scripts/build.sh --demo    only the `scantrace` command with the subcommands the demo runs
 #                              (not stress, bench, why, diff) and its libraries, with only the
 #                              packages they need (scripts/demo.sh: the quick first run)
+#   scripts/build.sh --web     only the WebAssembly build (docs/web.md) into build/web/: the ES
+#                              module, its .wasm, the JavaScript API and the explorer page
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 demo=0
 if [ "${1:-}" = "--demo" ]; then
   demo=1
+elif [ "${1:-}" = "--web" ]; then
+  demo=web
 elif [ $# -gt 0 ]; then
-  echo "usage: scripts/build.sh [--demo]" >&2
+  echo "usage: scripts/build.sh [--demo | --web]" >&2
   exit 2
 fi
 
@@ -21,6 +25,14 @@ if [ "$demo" = 1 ]; then bash scripts/deps.sh --demo; else bash scripts/deps.sh;
 if command -v ccache >/dev/null 2>&1 && [ -z "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ]; then
   export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 fi
+if [ "$demo" = web ]; then
+  # The compiler launcher comes from the environment (above). Debian's emscripten runs its tools
+  # with node and Debian's node-acorn, which NodeSource's node does not look for (web/native.cmake).
+  export NODE_PATH=/usr/share/nodejs
+  cmake --preset web
+  cmake --build build/web -j"$(nproc)"
+  exit 0
+fi
 # The options are always given: build/ is shared by both forms, and a demo build must not leave
 # the tests switched off in the cache for the next full build (nor the reverse).
 if [ "$demo" = 1 ]; then
@@ -28,10 +40,12 @@ if [ "$demo" = 1 ]; then
   # Only the subcommands the demo runs (cli/main.cpp): stress, bench, why and diff come with the
   # full build, which reuses every object of this one (same flags, same compiler launcher).
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=OFF \
-    -DSCANTRACE_BUILD_BENCH=OFF -DSCANTRACE_BUILD_PYTHON=OFF -DSCANTRACE_ALL_COMMANDS=OFF
+    -DSCANTRACE_BUILD_BENCH=OFF -DSCANTRACE_BUILD_PYTHON=OFF -DSCANTRACE_ALL_COMMANDS=OFF \
+    -DSCANTRACE_BUILD_WEB=OFF
   cmake --build build -j"$(nproc)" --target scantrace
 else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=ON \
-    -DSCANTRACE_BUILD_BENCH=ON -DSCANTRACE_BUILD_PYTHON=ON -DSCANTRACE_ALL_COMMANDS=ON
+    -DSCANTRACE_BUILD_BENCH=ON -DSCANTRACE_BUILD_PYTHON=ON -DSCANTRACE_ALL_COMMANDS=ON \
+    -DSCANTRACE_BUILD_WEB=ON
   cmake --build build -j"$(nproc)"
 fi

@@ -41,6 +41,9 @@ packages+=(python3-setuptools python3-wheel python3-build python3-venv python3-o
 # The Python package's tests: property tests (hypothesis), examples/python/course.ipynb executed
 # (nbclient, ipykernel) and its static HTML export (nbconvert), opened in chromium.
 packages+=(python3-hypothesis python3-nbclient python3-ipykernel python3-nbconvert)
+# The WebAssembly build and its tests (web/, docs/web.md): emscripten compiles, Node runs the
+# module's tests (node-acorn: emscripten's JavaScript optimizer).
+packages+=(emscripten nodejs node-acorn)
 
 if [ "${1:-}" = "--demo" ]; then
   packages=("${demo_packages[@]}")

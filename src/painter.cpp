@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <numeric>
 #include <utility>
+
+#include "src/std_compat.hpp"
 
 namespace scantrace {
 
@@ -31,7 +32,7 @@ namespace {
 // turns ascending into descending. −0 is folded onto +0 first: the two compare equal, so their
 // faces must keep their scene order, as equal depths do.
 std::uint32_t farthest_first_key(float d) {
-  const auto bits = std::bit_cast<std::uint32_t>(d == 0.0f ? 0.0f : d);
+  const auto bits = scantrace::bit_cast<std::uint32_t>(d == 0.0f ? 0.0f : d);
   const std::uint32_t ascending = (bits >> 31) ? ~bits : bits | (std::uint32_t{1} << 31);
   return ~ascending;
 }

@@ -72,7 +72,8 @@ Point fixed_point(Point2d p) {
 void draw_segment(FrameView& image, Point2d p, Point2d q, const Rect& clip, const Scalar& colour,
                   int thickness, std::optional<Mark> mark) {
   // Pixel centres of the frame are at integer positions; the clip box reaches half a pixel out.
-  const Rect2d box(clip.x - 0.5, clip.y - 0.5, clip.width, clip.height);
+  const Rect2d box{clip.x - 0.5, clip.y - 0.5, static_cast<double>(clip.width),
+                   static_cast<double>(clip.height)};
   const auto inside = clip_segment(p, q, box);
   if (!inside) return;
   // Drawn in the view's own area, as OpenCV drew it into a region of interest.

@@ -129,7 +129,8 @@ std::map<std::string, std::vector<std::string>> base_arguments(const TempDir& di
           {"check", {trace}},
           {"why", {scene, "1", "1"}},
           {"diff", {scene, (dir / "i.png").string()}},
-          {"step", {trace}}};
+          {"step", {trace}},
+          {"explore", {"-o", (dir / "explorer.html").string()}}};
 }
 
 // The command line with `option` given `value` (a positional replaces its base value).

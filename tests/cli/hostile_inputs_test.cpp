@@ -277,8 +277,10 @@ TEST_CASE("the HTML page escapes every HTML-significant sequence of the strings 
                         {"trace", "--triangle", "1,1 9,2 4,8", "--size", "12x10", "-o", "t.jsonl"},
                         kTimeout)
               .exit_code == 0);
-  const auto r = run_scantrace(dir.path(), {"replay", (evil / "t.jsonl").string(), "-o", "p.html"},
-                               kTimeout);
+  // The page of pre-drawn frames (--frames-page), whose step list and title carry the source.
+  const auto r = run_scantrace(
+      dir.path(), {"replay", (evil / "t.jsonl").string(), "-o", "p.html", "--frames-page"},
+      kTimeout);
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const std::string page = read_text(dir / "p.html");

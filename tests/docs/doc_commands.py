@@ -93,6 +93,9 @@ RUN = {
 }
 
 NOT_RUN = {
+    "bash scripts/build.sh --web": "builds (the web build; its tests are the web-labelled ones)",
+    "scantrace explore -o explorer.html":
+        "needs the web build; the test 'web: scantrace explore writes the explorer page' runs it",
     "bash scripts/demo.sh": "builds (build.sh --demo reconfigures build/); its run is the set-up here",
     "bash scripts/test.sh": "builds and runs this very suite",
     "build/cli/scantrace stress --seconds 600": "ten minutes",

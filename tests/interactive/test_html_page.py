@@ -30,7 +30,8 @@ def main():
     run(scantrace, "-q", "trace", "--triangle", "2.3,1.2 29,9.5 8,27.6", "--size", "32x30",
         "-o", "t.jsonl", cwd=work)
     common = ["--video-size", "640x360", "--rows-per-step", "1"]
-    run(scantrace, "-q", "replay", "t.jsonl", "-o", "t.html", *common, cwd=work)
+    # The page of pre-drawn frames (the trace page is web/tests/chromium_trace_page.mjs's).
+    run(scantrace, "-q", "replay", "t.jsonl", "-o", "t.html", "--frames-page", *common, cwd=work)
     run(scantrace, "-q", "replay", "t.jsonl", "-o", "frames/", *common, cwd=work)
     names = sorted(os.listdir(os.path.join(work, "frames")))
     frames = images.decode_sequence(os.path.join(work, "frames", "frame_%05d.png"), len(names),

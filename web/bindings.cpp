@@ -1,0 +1,157 @@
+// The module's plumbing and render (bindings.hpp): what scantrace.mjs calls.
+#include "web/bindings.hpp"
+
+#include <emscripten/emscripten.h>
+
+#include <new>
+#include <stdexcept>
+
+#include "io/input_error.hpp"
+#include "io/obj_loader.hpp"
+#include "io/scene_json.hpp"
+#include "src/image.hpp"
+#include "src/painter.hpp"
+#include "src/shade_mesh.hpp"
+
+namespace scantrace::web {
+
+Result& result() {
+  static Result r;
+  return r;
+}
+
+int run(const std::function<void()>& work) {
+  Result& r = result();
+  r = Result{};
+  try {
+    work();
+    return 0;
+  } catch (const InputError& e) {
+    r.error = e.what();
+    return 1;
+  } catch (const std::invalid_argument& e) {
+    r.error = e.what();
+    return 2;
+  } catch (const std::bad_alloc&) {
+    r.error = "out of memory";
+    return 1;
+  } catch (const std::exception& e) {
+    r.error = e.what();
+    return 1;
+  }
+}
+
+nlohmann::json parse_options(const char* text) {
+  if (!text || !*text) return nlohmann::json::object();
+  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (!j.is_object()) throw std::invalid_argument("options: not a JSON object");
+  return j;
+}
+
+namespace {
+
+std::string text_option(const nlohmann::json& o, const char* key, const char* fallback) {
+  if (!o.contains(key)) return fallback;
+  if (!o[key].is_string()) throw std::invalid_argument(std::string("options.") + key + ": not a string");
+  return o[key].get<std::string>();
+}
+
+[[noreturn]] void unknown(const char* key, const std::string& value) {
+  throw std::invalid_argument(std::string("options.") + key + ": unknown value \"" + value + "\"");
+}
+
+}  // namespace
+
+FillOptions fill_options(const nlohmann::json& o, bool model) {
+  FillOptions f;
+  const std::string shading = text_option(o, "shading", "gouraud");
+  if (shading != "flat" && shading != "gouraud") unknown("shading", shading);
+  f.shading = shading == "flat" ? Shading::flat : Shading::gouraud;
+  const std::string rule = text_option(o, "fill_rule", "top-left");
+  if (rule != "top-left" && rule != "closed") unknown("fill_rule", rule);
+  f.fill_rule = rule == "closed" ? FillRule::closed : FillRule::top_left;
+  if (o.contains("subpixel_bits")) {
+    if (!o["subpixel_bits"].is_number_integer() || o["subpixel_bits"].get<int>() < 0 ||
+        o["subpixel_bits"].get<int>() > kMaxSubpixelBits)
+      throw std::invalid_argument("options.subpixel_bits: an integer 0 to " +
+                                  std::to_string(kMaxSubpixelBits));
+    f.subpixel_bits = o["subpixel_bits"].get<int>();
+  }
+  const std::string method = text_option(o, "method", "exact");
+  if (!parse_method(method.c_str(), f.method)) unknown("method", method);
+  const std::string winding = text_option(o, "winding", "even-odd");
+  if (!parse_winding_rule(winding.c_str(), f.winding_rule)) unknown("winding", winding);
+  // A model is culled back faces by default and a scene not, as `render` does (cli/model_flags).
+  const std::string cull = text_option(o, "cull", model ? "back" : "none");
+  if (cull == "none") f.cull = Cull::none;
+  else if (cull == "back") f.cull = Cull::back;
+  else if (cull == "front") f.cull = Cull::front;
+  else unknown("cull", cull);
+  const std::string depth = text_option(o, "depth", "painter");
+  if (depth == "painter") f.visibility = Visibility::painter;
+  else if (depth == "zbuffer") f.visibility = Visibility::zbuffer;
+  else unknown("depth", depth);
+  return f;
+}
+
+Scene load_scene(const std::string& path, const nlohmann::json& options) {
+  if (is_obj_file(path)) {
+    ShadeOptions o;
+    o.shading = fill_options(options, true).shading;
+    return shade_mesh(load_obj(path), o);
+  }
+  const bool clamp = options.value("clamp_colors", false);
+  ColorClamping clamping;
+  try {
+    return scantrace::load_scene(path, clamp ? &clamping : nullptr);
+  } catch (const InputError& e) {
+    // The CLI's hint for the one problem an option fixes (cli/scene_input.cpp).
+    if (clamp || e.problem().find("outside [0, 1]") == std::string::npos) throw;
+    throw InputError(e.file(), e.element(), e.problem() + " (--clamp-colors clamps it)");
+  }
+}
+
+}  // namespace scantrace::web
+
+using namespace scantrace;
+
+extern "C" {
+
+EMSCRIPTEN_KEEPALIVE const char* st_result_text() { return web::result().text.c_str(); }
+EMSCRIPTEN_KEEPALIVE std::size_t st_result_size() { return web::result().text.size(); }
+EMSCRIPTEN_KEEPALIVE const std::uint8_t* st_result_bytes() { return web::result().bytes.data(); }
+EMSCRIPTEN_KEEPALIVE std::size_t st_result_bytes_size() { return web::result().bytes.size(); }
+EMSCRIPTEN_KEEPALIVE const char* st_error() { return web::result().error.c_str(); }
+
+// The scene file at `path` rendered as `scantrace render` renders it (one thread): the result's
+// bytes are RGBA, 8 bits a channel, converted by to_byte as the PNG writer converts; its text
+// {"width", "height", "faces", "ms"}.
+EMSCRIPTEN_KEEPALIVE int st_render(const char* path, const char* options_json) {
+  return web::run([&] {
+    const nlohmann::json o = web::parse_options(options_json);
+    const Scene scene = web::load_scene(path, o);
+    const FillOptions options = web::fill_options(o, is_obj_file(path));
+    const double t0 = emscripten_get_now();
+    const RgbImage image = render(scene, options);
+    const double ms = emscripten_get_now() - t0;
+    auto& bytes = web::result().bytes;
+    bytes.resize(static_cast<std::size_t>(image.width()) * image.height() * 4);
+    std::size_t i = 0;
+    for (int y = 0; y < image.height(); ++y) {
+      const Rgb32f* row = image.row(y);
+      for (int x = 0; x < image.width(); ++x, i += 4) {
+        bytes[i] = to_byte(row[x].r);
+        bytes[i + 1] = to_byte(row[x].g);
+        bytes[i + 2] = to_byte(row[x].b);
+        bytes[i + 3] = 255;
+      }
+    }
+    web::result().text = nlohmann::json{{"width", image.width()},
+                                        {"height", image.height()},
+                                        {"faces", scene.faces.size()},
+                                        {"ms", ms}}
+                             .dump();
+  });
+}
+
+}  // extern "C"

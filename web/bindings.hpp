@@ -1,0 +1,40 @@
+#pragma once
+// What the exported C functions of the WebAssembly module share (bindings*.cpp): the result they
+// leave for JavaScript to read, the options object every call takes, and the scene loading.
+//
+// Each st_* function returns 0 (done), 1 (bad input: st_error() is the CLI's one-line message)
+// or 2 (a bad argument from the JavaScript side). The result stays until the next call.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "src/fill_options.hpp"
+#include "src/scene.hpp"
+
+namespace scantrace::web {
+
+struct Result {
+  std::string text;                // JSON or JSON Lines
+  std::vector<std::uint8_t> bytes;  // pixels
+  std::string error;
+};
+Result& result();
+
+// Runs `work` with the result cleared, mapping exceptions to the status codes above.
+int run(const std::function<void()>& work);
+
+// {"shading", "fill_rule", "subpixel_bits", "method", "winding", "cull", "depth"}: the CLI's
+// flags of the same names and values (missing keys: the CLI's defaults). Throws
+// std::invalid_argument for an unknown value.
+FillOptions fill_options(const nlohmann::json& options, bool model);
+
+// The scene at `path` (in the module's file system: JSON, or an OBJ model shaded with the CLI's
+// default model flags), as `scantrace render` loads it; options.clamp_colors as --clamp-colors.
+Scene load_scene(const std::string& path, const nlohmann::json& options);
+
+nlohmann::json parse_options(const char* text);
+
+}  // namespace scantrace::web

@@ -1,0 +1,167 @@
+// trace and frames (bindings.hpp): the JSON Lines `scantrace trace` writes, and the display lists
+// of a trace's steps as the canvas backend draws them (viz/frame_json.hpp).
+#include <emscripten/emscripten.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "demo/demo_scene.hpp"
+#include "io/obj_loader.hpp"
+#include "io/scene_json.hpp"
+#include "trace/record.hpp"
+#include "viz/frame_json.hpp"
+#include "viz/frame_sequence.hpp"
+#include "web/bindings.hpp"
+
+namespace scantrace::web {
+namespace {
+
+constexpr const char* kTraceFile = "/tmp/scantrace-web-trace.jsonl";
+
+Vec2 point(const nlohmann::json& p, const char* what) {
+  if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+    throw std::invalid_argument(std::string(what) + ": a vertex is [x, y]");
+  return {p[0].get<double>(), p[1].get<double>()};
+}
+
+Color colour(const nlohmann::json& c) {
+  if (!c.is_array() || c.size() != 3 || !c[0].is_number() || !c[1].is_number() ||
+      !c[2].is_number())
+    throw std::invalid_argument("input.colors: a colour is [r, g, b] in [0, 1]");
+  return {c[0].get<double>(), c[1].get<double>(), c[2].get<double>()};
+}
+
+// The colours given, or the CLI's default (--colors "1,0,0 0,1,0 0,0,1", repeated for a polygon).
+std::vector<Color> colours(const nlohmann::json& in, std::size_t n) {
+  std::vector<Color> out;
+  if (in.contains("colors")) {
+    for (const auto& c : in["colors"]) out.push_back(colour(c));
+    if (out.size() != n) throw std::invalid_argument("input.colors: one colour per vertex");
+    return out;
+  }
+  const Color cycle[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (std::size_t i = 0; i < n; ++i) out.push_back(cycle[i % 3]);
+  return out;
+}
+
+trace::TraceFilter filter_of(const nlohmann::json& o) {
+  trace::TraceFilter f;
+  f.level = trace::parse_level(o.value("level", std::string("scanline")));
+  if (o.contains("triangles")) f.triangles = trace::IndexSet::of(o["triangles"].get<std::vector<int>>());
+  if (o.contains("max_events")) f.max_events = o["max_events"].get<std::int64_t>();
+  return f;
+}
+
+void trace_to_file(const nlohmann::json& in, const nlohmann::json& o) {
+  const trace::TraceFilter filter = filter_of(o);
+  const int width = in.value("width", 512), height = in.value("height", 512);
+  if (in.contains("scene")) {
+    const std::string path = in["scene"].get<std::string>();
+    const Scene scene = load_scene(path, o);
+    trace::write_scene_trace(kTraceFile, scene, fill_options(o, is_obj_file(path)), filter);
+  } else if (in.contains("triangle")) {
+    trace::TriangleInput t;
+    if (!in["triangle"].is_array() || in["triangle"].size() != 3)
+      throw std::invalid_argument("input.triangle: three vertices [x, y]");
+    const std::vector<Color> c = colours(in, 3);
+    for (int i = 0; i < 3; ++i) {
+      t.vertices[i] = point(in["triangle"][i], "input.triangle");
+      t.colors[i] = c[i];
+    }
+    t.width = width;
+    t.height = height;
+    trace::write_triangle_trace(kTraceFile, t, fill_options(o, false), filter);
+  } else if (in.contains("polygon")) {
+    trace::GeneralPolygonInput p;
+    std::size_t n = 0;
+    for (const auto& contour : in["polygon"]) {
+      p.contours.emplace_back();
+      for (const auto& v : contour) p.contours.back().push_back(point(v, "input.polygon"));
+      n += p.contours.back().size();
+    }
+    p.colors = colours(in, n);
+    p.width = width;
+    p.height = height;
+    trace::write_polygon_trace(kTraceFile, p, fill_options(o, false), filter);
+  } else {
+    throw std::invalid_argument("input: give scene (a file), triangle or polygon");
+  }
+}
+
+std::string read_file(const char* path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+}  // namespace scantrace::web
+
+using namespace scantrace;
+
+extern "C" {
+
+// The trace `scantrace trace` writes for `input_json` ({"scene": path} | {"triangle": [[x, y] ×3],
+// "colors"?, "width"?, "height"?} | {"polygon": [[[x, y], …], …], "colors"?, …}) under the
+// options (fill options, "level", "triangles", "max_events"): JSON Lines in the result's text.
+EMSCRIPTEN_KEEPALIVE int st_trace(const char* input_json, const char* options_json) {
+  return web::run([&] {
+    const nlohmann::json in = web::parse_options(input_json);
+    web::trace_to_file(in, web::parse_options(options_json));
+    web::result().text = web::read_file(web::kTraceFile);
+  });
+}
+
+// The display lists of the trace file at `path`, steps [first, first + count) (all by default):
+// {"steps": [{"kind", "triangle", "first_row", "last_row"}, …], "frames": [frame JSON, …]}
+// at options.width × options.height (1280 × 720), planned as `replay` plans them.
+EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
+  return web::run([&] {
+    const nlohmann::json o = web::parse_options(options_json);
+    trace::Trace t = trace::Trace::load(path);
+    viz::StepOptions steps;
+    steps.rows_per_step = o.value("rows_per_step", 0);
+    steps.mode = viz::parse_replay_mode(o.value("mode", std::string("auto")));
+    viz::FrameSequence s(t, steps, {o.value("width", 1280), o.value("height", 720)},
+                         o.value("source", std::string(path)));
+    if (o.contains("marked_pixel"))
+      s.mark_on_every_frame(viz::CanvasPixel{o["marked_pixel"][0].get<std::int64_t>(),
+                                             o["marked_pixel"][1].get<std::int64_t>()});
+    const std::size_t n = s.steps().size();
+    const std::size_t first = std::min<std::size_t>(o.value("first", std::size_t{0}), n);
+    const std::size_t last = std::min<std::size_t>(first + o.value("count", n), n);
+    std::string out = "{\"steps\":[";
+    for (std::size_t i = 0; i < n; ++i) {
+      const viz::Step& st = s.steps()[i];
+      nlohmann::json step{{"kind", viz::to_string(st.kind)},
+                          {"triangle", st.triangle},
+                          {"first_row", st.first_row},
+                          {"last_row", st.last_row}};
+      // Where the canvas appears on the frame: canvas pixel (x, y) is centred at frame point
+      // origin + cell·(x, y), inside `view` (a page maps a click back to the pixel).
+      if (const auto g = s.geometry(i)) {
+        const viz::Point2d o = g->to_frame(0, 0);
+        step["view"] = {g->view().x, g->view().y, g->view().width, g->view().height};
+        step["origin"] = {o.x, o.y};
+        step["cell"] = g->cell();
+      }
+      out += (i ? "," : "") + step.dump();
+    }
+    out += "],\"frames\":[";
+    for (std::size_t i = first; i < last; ++i) out += (i > first ? "," : "") + viz::to_json(s.frame(i));
+    out += "]}";
+    web::result().text = std::move(out);
+  });
+}
+
+// drawScantraceFrame's source (viz/frame_json.hpp), for a page to compile once.
+EMSCRIPTEN_KEEPALIVE const char* st_canvas_script() { return viz::frame_canvas_script(); }
+
+// The built-in demo scene (`scantrace demo`'s demo_scene.json) as scene JSON.
+EMSCRIPTEN_KEEPALIVE int st_demo_scene() {
+  return web::run([] { web::result().text = scene_to_json(demo_scene()); });
+}
+
+}  // extern "C"

@@ -1,0 +1,388 @@
+// The explorer page (docs/web.md): drag a triangle's vertices on the pixel grid and watch the
+// real fill (the WebAssembly module) redo its edge table, active edge list and spans; step
+// through the composer's frames with `scantrace step`'s keys; click a pixel for its `why`; open a
+// scene; drop an image rendered for it for a `diff`. The state is kept in the address.
+import { fromHash, fromHex, toHash, toHex } from './state.js';
+
+const $ = (id) => document.getElementById(id);
+
+export async function start(st) {
+  const drawFrame = new Function(`${st.canvasScript()}; return drawScantraceFrame;`)();
+  let s = fromHash(location.hash);
+  let scene = null; // scene mode: {name, data}
+  let sceneObj = null; // the scene the grid shows (triangle mode: the triangle as a one-face scene)
+  let events = [], traceText = '', plan = [], fill = null, diffPicture = null;
+  let view = { zoom: 1, x: 0, y: 0 }; // canvas pixel (0, 0) at screen (x, y), `zoom` px a pixel
+  let drag = null, marked = null;
+
+  const grid = $('grid'), gctx = grid.getContext('2d');
+  const frame = $('frame'), fctx = frame.getContext('2d');
+  const fillCanvas = document.createElement('canvas');
+
+  function showError(e) {
+    $('error').textContent = e ? `error: ${e.message || e}` : '';
+    $('error').hidden = !e;
+  }
+
+  function fillOptions() {
+    return { shading: s.shading, fill_rule: s.fill_rule, subpixel_bits: s.subpixel_bits, method: s.method };
+  }
+
+  function triangleScene() {
+    return {
+      width: s.size[0], height: s.size[1], background: [1, 1, 1],
+      vertices: s.triangle, vcolors: s.colors, faces: [[0, 1, 2]], depth: [0, 0, 0],
+    };
+  }
+
+  // Re-runs the module on the state: the fill, the trace and its steps (the current frame drawn).
+  function recompute({ frame = true } = {}) {
+    const t0 = performance.now();
+    showError(null);
+    try {
+      sceneObj = s.mode === 'triangle' ? triangleScene() : null;
+      const input = s.mode === 'triangle' ? triangleScene() : scene;
+      fill = st.render(input, fillOptions());
+      fillCanvas.width = fill.width;
+      fillCanvas.height = fill.height;
+      fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
+      const traced = s.mode === 'triangle'
+        ? { triangle: s.triangle, colors: s.colors, width: s.size[0], height: s.size[1] }
+        : { scene };
+      traceText = st.traceText(traced, { ...fillOptions(), level: s.mode === 'triangle' ? 'scanline' : 'triangle' });
+      events = traceText.split('\n').filter((l) => l).map((l) => JSON.parse(l));
+      // The plan of steps (a frame sequence of its own: a tenth of a second), only when asked
+      // for a frame; a drag keeps the plan of the triangle it started from.
+      if (frame || !plan.length) plan = st.frames(traceText, { count: 0 }).steps;
+      s.step = Math.min(s.step, Math.max(0, plan.length - 1));
+      $('fill-ms').textContent = `${fill.ms.toFixed(2)} ms`;
+    } catch (e) {
+      showError(e);
+    }
+    redraw({ frame });
+    // The module's work and the synchronous drawing of one change (the frame's pixel blocks
+    // decode after): what a drag costs a frame of the display (docs/performance.md).
+    document.body.dataset[frame ? 'recomputeMs' : 'dragMs'] = (performance.now() - t0).toFixed(1);
+  }
+
+  function redraw({ frame = true } = {}) {
+    drawGrid();
+    if (frame) drawStep();
+    showTables();
+    history.replaceState(null, '', toHash(s));
+  }
+
+  function fitView() {
+    const w = s.mode === 'triangle' ? s.size[0] : fill ? fill.width : 512;
+    const h = s.mode === 'triangle' ? s.size[1] : fill ? fill.height : 512;
+    view.zoom = Math.max(0.25, Math.min(grid.width / w, grid.height / h));
+    view.x = (grid.width - w * view.zoom) / 2;
+    view.y = (grid.height - h * view.zoom) / 2;
+  }
+
+  const toScreen = ([x, y]) => [view.x + x * view.zoom, view.y + y * view.zoom];
+  const toCanvas = (px, py) => [(px - view.x) / view.zoom, (py - view.y) / view.zoom];
+
+  function currentStep() {
+    return plan[s.step] || null;
+  }
+
+  function drawGrid() {
+    gctx.setTransform(1, 0, 0, 1, 0, 0);
+    gctx.fillStyle = '#ddd';
+    gctx.fillRect(0, 0, grid.width, grid.height);
+    gctx.imageSmoothingEnabled = false;
+    gctx.drawImage(fillCanvas, view.x, view.y, fillCanvas.width * view.zoom, fillCanvas.height * view.zoom);
+    if (diffPicture) {
+      const c = document.createElement('canvas');
+      c.width = diffPicture.width;
+      c.height = diffPicture.height;
+      c.getContext('2d').putImageData(new ImageData(diffPicture.rgba, diffPicture.width, diffPicture.height), 0, 0);
+      gctx.drawImage(c, view.x, view.y, c.width * view.zoom, c.height * view.zoom);
+    }
+    const z = view.zoom;
+    if (z >= 6) {
+      // The pixel grid and the pixel centres, where coverage is decided.
+      gctx.strokeStyle = 'rgba(0,0,0,0.15)';
+      gctx.lineWidth = 1;
+      const [x0, y0] = toCanvas(0, 0).map((v) => Math.max(0, Math.floor(v)));
+      const [x1, y1] = toCanvas(grid.width, grid.height).map(Math.ceil);
+      gctx.beginPath();
+      for (let x = x0; x <= Math.min(x1, fillCanvas.width); ++x) {
+        gctx.moveTo(view.x + x * z, view.y + y0 * z);
+        gctx.lineTo(view.x + x * z, view.y + Math.min(y1, fillCanvas.height) * z);
+      }
+      for (let y = y0; y <= Math.min(y1, fillCanvas.height); ++y) {
+        gctx.moveTo(view.x + x0 * z, view.y + y * z);
+        gctx.lineTo(view.x + Math.min(x1, fillCanvas.width) * z, view.y + y * z);
+      }
+      gctx.stroke();
+    }
+    const step = currentStep();
+    if (step && step.kind === 'scanlines') {
+      // The current scanline through the pixel centres of its row (y + 0.5).
+      gctx.strokeStyle = '#c00';
+      gctx.lineWidth = 2;
+      gctx.beginPath();
+      const [, sy] = toScreen([0, step.last_row + 0.5]);
+      gctx.moveTo(view.x, sy);
+      gctx.lineTo(view.x + fillCanvas.width * z, sy);
+      gctx.stroke();
+    }
+    if (s.mode === 'triangle') {
+      gctx.strokeStyle = '#000';
+      gctx.lineWidth = 1.5;
+      gctx.beginPath();
+      s.triangle.forEach((v, i) => {
+        const [px, py] = toScreen(v);
+        if (i === 0) gctx.moveTo(px, py);
+        else gctx.lineTo(px, py);
+      });
+      gctx.closePath();
+      gctx.stroke();
+      s.triangle.forEach((v, i) => {
+        const [px, py] = toScreen(v);
+        gctx.fillStyle = toHex(s.colors[i]);
+        gctx.strokeStyle = '#000';
+        gctx.beginPath();
+        gctx.arc(px, py, 7, 0, 2 * Math.PI);
+        gctx.fill();
+        gctx.stroke();
+      });
+    }
+    if (marked) {
+      gctx.strokeStyle = '#f0f';
+      gctx.lineWidth = 2;
+      const [px, py] = toScreen(marked);
+      gctx.strokeRect(px, py, Math.max(3, z), Math.max(3, z));
+    }
+  }
+
+  async function drawStep() {
+    const n = plan.length;
+    $('step-no').textContent = n ? `step ${s.step + 1} / ${n}` : 'no steps';
+    if (!n) return;
+    const wanted = s.step;
+    const f = st.frames(traceText, { first: wanted, count: 1, source: s.mode === 'triangle' ? 'the explorer\u2019s triangle' : scene.name }).frames[0];
+    frame.width = f.w;
+    frame.height = f.h;
+    await drawFrame(fctx, f);
+    frame.dataset.step = String(wanted);
+  }
+
+  function showTables() {
+    const step = currentStep();
+    $('step-kind').textContent = step ? `${step.kind}${step.kind === 'scanlines' ? ` rows ${step.first_row}..${step.last_row}` : ''}` : '';
+    const table = events.find((e) => e.type === 'edge_table' && (!step || e.triangle === Math.max(0, step.triangle)));
+    $('edge-table').textContent = table
+      ? table.edges.map((e) => `edge ${e.edge}: (${e.from}) -> (${e.to})  rows ${e.first_row}..${e.last_row}  x@ymin ${e.x_at_y_min}  dx/dy ${e.dx_dy}`).join('\n')
+      : '(none: the trace is at triangle level, or no edge)';
+    const row = step && step.kind === 'scanlines'
+      ? events.find((e) => e.type === 'scanline' && e.triangle === step.triangle && e.y === step.last_row)
+      : null;
+    $('active').textContent = row
+      ? [`y = ${row.y}  entered [${row.entered}]  retired [${row.retired}]`,
+        ...row.active_edges.map((a) => `edge ${a.edge}  x = ${a.x}`),
+        ...(row.active_points || []).map((p) => `point x = ${p.x}  colour (${p.color.map((c) => c.toFixed(3)).join(', ')})`),
+        ...(row.span ? [`span [${row.span.x_begin}, ${row.span.x_end})`] : []),
+        ...((row.spans || []).map((sp) => `span [${sp.x_begin}, ${sp.x_end})`))].join('\n')
+      : '(choose a scanline step: \u2192 \u2190)';
+    $('events').textContent = `${events.length} events, ${traceText.length} bytes of JSON Lines`;
+  }
+
+  function setStep(k) {
+    s.step = Math.max(0, Math.min(plan.length - 1, k));
+    redraw();
+  }
+
+  function why(x, y) {
+    marked = [x, y];
+    try {
+      const story = st.why(s.mode === 'triangle' ? sceneObj : scene, x, y, fillOptions());
+      $('why').textContent = JSON.stringify(story, null, 1);
+      $('why').dataset.pixel = `${x},${y}`;
+    } catch (e) {
+      showError(e);
+    }
+    redraw();
+  }
+
+  // --- input -------------------------------------------------------------------------------
+  function pointer(e) {
+    const r = grid.getBoundingClientRect();
+    return [(e.clientX - r.left) * (grid.width / r.width), (e.clientY - r.top) * (grid.height / r.height)];
+  }
+  const snap = (v) => {
+    const g = 2 ** s.subpixel_bits;
+    return Math.round(v * g) / g;
+  };
+
+  grid.addEventListener('mousedown', (e) => {
+    const [px, py] = pointer(e);
+    if (s.mode === 'triangle') {
+      const i = s.triangle.findIndex((v) => Math.hypot(toScreen(v)[0] - px, toScreen(v)[1] - py) <= 9);
+      if (i >= 0) {
+        drag = { vertex: i };
+        return;
+      }
+    }
+    drag = { pan: [px, py, view.x, view.y], moved: false };
+  });
+  window.addEventListener('mousemove', (e) => {
+    if (!drag) return;
+    const [px, py] = pointer(e);
+    if (drag.vertex !== undefined) {
+      const [x, y] = toCanvas(px, py);
+      s.triangle[drag.vertex] = [snap(x), snap(y)];
+      // While dragging: the fill, the trace and the tables follow the mouse; the composed frame
+      // of the step (the slowest part, a few hundred ms) waits for the release.
+      recompute({ frame: false });
+    } else {
+      const [x0, y0, vx, vy] = drag.pan;
+      if (Math.hypot(px - x0, py - y0) > 3) drag.moved = true;
+      view.x = vx + px - x0;
+      view.y = vy + py - y0;
+      drawGrid();
+    }
+  });
+  window.addEventListener('mouseup', (e) => {
+    if (drag && drag.vertex !== undefined) recompute();
+    if (drag && drag.pan && !drag.moved) {
+      const [x, y] = toCanvas(...pointer(e)).map(Math.floor);
+      if (fill && x >= 0 && y >= 0 && x < fill.width && y < fill.height) why(x, y);
+    }
+    drag = null;
+  });
+  grid.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    const [px, py] = pointer(e);
+    const [cx, cy] = toCanvas(px, py);
+    view.zoom = Math.max(0.25, Math.min(64, view.zoom * (e.deltaY < 0 ? 1.25 : 0.8)));
+    view.x = px - cx * view.zoom;
+    view.y = py - cy * view.zoom;
+    drawGrid();
+  }, { passive: false });
+
+  // `scantrace step`'s keys: → ← (n p space), PgDn PgUp (ten), Home End, g (go to a row).
+  window.addEventListener('keydown', (e) => {
+    if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+    const k = e.key;
+    if (k === 'ArrowRight' || k === 'n' || k === ' ') setStep(s.step + 1);
+    else if (k === 'ArrowLeft' || k === 'p') setStep(s.step - 1);
+    else if (k === 'PageDown') setStep(s.step + 10);
+    else if (k === 'PageUp') setStep(s.step - 10);
+    else if (k === 'Home') setStep(0);
+    else if (k === 'End') setStep(plan.length - 1);
+    else if (k === 'g') {
+      const row = Number(prompt('go to the step of row:'));
+      const i = plan.findIndex((p) => p.kind === 'scanlines' && p.first_row <= row && row <= p.last_row);
+      if (i >= 0) setStep(i);
+    } else return;
+    e.preventDefault();
+  });
+
+  function bindOption(id, key, parse = (v) => v) {
+    const el = $(id);
+    el.value = String(s[key]);
+    el.addEventListener('change', () => {
+      s[key] = parse(el.value);
+      recompute();
+    });
+  }
+  bindOption('shading', 'shading');
+  bindOption('fill-rule', 'fill_rule');
+  bindOption('method', 'method');
+  bindOption('bits', 'subpixel_bits', Number);
+  [0, 1, 2].forEach((i) => {
+    const el = $(`color${i}`);
+    el.value = toHex(s.colors[i]);
+    el.addEventListener('input', () => {
+      s.colors[i] = fromHex(el.value);
+      recompute();
+    });
+  });
+  $('triangle-mode').addEventListener('click', () => {
+    s.mode = 'triangle';
+    diffPicture = null;
+    fitView();
+    recompute();
+  });
+  $('demo-scene').addEventListener('click', () => openScene({ name: 'demo_scene.json', data: st.demoScene() }));
+  $('open').addEventListener('change', () => $('open').files[0] && openFile($('open').files[0]));
+
+  function openScene(sc) {
+    scene = sc;
+    s.mode = 'scene';
+    s.sceneName = sc.name;
+    s.step = 0;
+    diffPicture = null;
+    recompute();
+    fitView();
+    redraw();
+  }
+
+  async function openFile(file) {
+    const bytes = new Uint8Array(await file.arrayBuffer());
+    if (/\.(json|obj)$/i.test(file.name)) openScene({ name: file.name, data: bytes });
+    else if (/\.png$/i.test(file.name)) await diffImage(file, bytes);
+    else showError(`${file.name}: drop a scene (.json, .obj) or an image rendered for it (.png)`);
+  }
+
+  // A dropped PNG against the open scene: the browser decodes it, the module compares.
+  async function diffImage(file, bytes) {
+    if (s.mode !== 'scene') return showError(`${file.name}: open the scene it was rendered for first`);
+    try {
+      const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+      const c = document.createElement('canvas');
+      c.width = bitmap.width;
+      c.height = bitmap.height;
+      const ctx = c.getContext('2d');
+      ctx.drawImage(bitmap, 0, 0);
+      const img = ctx.getImageData(0, 0, c.width, c.height);
+      const report = st.diff(scene, { width: c.width, height: c.height, rgba: img.data, name: file.name }, fillOptions());
+      diffPicture = st.lastDiffPicture;
+      $('diff').textContent = JSON.stringify(report, null, 1);
+      showError(null);
+      redraw();
+    } catch (e) {
+      showError(e.status ? e : `${file.name}: cannot decode the image`);
+    }
+  }
+
+  document.addEventListener('dragover', (e) => e.preventDefault());
+  document.addEventListener('drop', (e) => {
+    e.preventDefault();
+    if (e.dataTransfer.files[0]) openFile(e.dataTransfer.files[0]);
+  });
+  window.addEventListener('hashchange', () => {
+    if (location.hash === toHash(s)) return;
+    s = fromHash(location.hash);
+    recompute();
+  });
+
+  if (s.mode === 'scene') openScene({ name: 'demo_scene.json', data: st.demoScene() });
+  else {
+    fitView();
+    recompute();
+  }
+  // For the console and the page's test (web/tests/chromium_explorer.mjs): where things are.
+  window.explorer = {
+    state: () => structuredClone(s),
+    vertexOnScreen: (i) => {
+      const r = grid.getBoundingClientRect();
+      const [px, py] = toScreen(s.triangle[i]);
+      return [r.left + px * (r.width / grid.width), r.top + py * (r.height / grid.height)];
+    },
+    pixelOnScreen: (x, y) => {
+      const r = grid.getBoundingClientRect();
+      const [px, py] = toScreen([x + 0.5, y + 0.5]);
+      return [r.left + px * (r.width / grid.width), r.top + py * (r.height / grid.height)];
+    },
+    traceText: () => traceText,
+    scene: () => (s.mode === 'triangle' ? JSON.stringify(triangleScene()) : null),
+    fillPixels: () => Array.from(fillCanvas.getContext('2d').getImageData(0, 0, fillCanvas.width, fillCanvas.height).data),
+  };
+  // Milliseconds from navigation to a working page (the test prints it; docs/performance.md).
+  document.body.dataset.readyMs = performance.now().toFixed(0);
+  document.body.dataset.ready = '1';
+}

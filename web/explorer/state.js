@@ -1,0 +1,55 @@
+// The explorer's state and its address (#triangle=20,20;250,80;300,400&shading=gouraud&step=12):
+// a teacher links a step by copying the address bar.
+export const defaults = {
+  mode: 'triangle',
+  triangle: [[20, 20], [250, 80], [300, 400]],
+  colors: [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+  size: [512, 512],
+  shading: 'gouraud',
+  fill_rule: 'top-left',
+  subpixel_bits: 8,
+  method: 'exact',
+  step: 0,
+};
+
+const hex = (c) => '#' + c.map((v) => Math.round(v * 255).toString(16).padStart(2, '0')).join('');
+export const toHex = hex;
+export const fromHex = (h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16) / 255);
+
+export function toHash(s) {
+  const p = new URLSearchParams();
+  if (s.mode === 'triangle') p.set('triangle', s.triangle.map((v) => v.join(',')).join(';'));
+  else p.set('scene', s.sceneName || 'demo');
+  p.set('colors', s.colors.map((c) => hex(c).slice(1)).join(';'));
+  p.set('size', s.size.join('x'));
+  for (const k of ['shading', 'fill_rule', 'subpixel_bits', 'method', 'step']) p.set(k, String(s[k]));
+  return '#' + p.toString().replace(/%2C/g, ',').replace(/%3B/g, ';');
+}
+
+// The state in `hash`, each value checked; what is missing or malformed keeps its default.
+export function fromHash(hash) {
+  const s = structuredClone(defaults);
+  const p = new URLSearchParams(hash.replace(/^#/, ''));
+  const num = (t) => (/^-?\d+(\.\d+)?(e-?\d+)?$/i.test(t) ? Number(t) : NaN);
+  if (p.has('triangle')) {
+    const v = p.get('triangle').split(';').map((xy) => xy.split(',').map(num));
+    if (v.length === 3 && v.every((xy) => xy.length === 2 && xy.every(Number.isFinite))) s.triangle = v;
+  }
+  if (p.has('scene')) s.mode = 'scene';
+  if (p.has('colors')) {
+    const c = p.get('colors').split(';');
+    if (c.length === 3 && c.every((h) => /^[0-9a-f]{6}$/i.test(h))) s.colors = c.map((h) => fromHex('#' + h));
+  }
+  if (p.has('size')) {
+    const m = /^(\d+)x(\d+)$/.exec(p.get('size'));
+    if (m && +m[1] > 0 && +m[2] > 0 && +m[1] <= 4096 && +m[2] <= 4096) s.size = [+m[1], +m[2]];
+  }
+  if (['flat', 'gouraud'].includes(p.get('shading'))) s.shading = p.get('shading');
+  if (['top-left', 'closed'].includes(p.get('fill_rule'))) s.fill_rule = p.get('fill_rule');
+  if (['exact', 'float', 'double', 'halfspace'].includes(p.get('method'))) s.method = p.get('method');
+  const bits = num(p.get('subpixel_bits') || '');
+  if (Number.isInteger(bits) && bits >= 0 && bits <= 12) s.subpixel_bits = bits;
+  const step = num(p.get('step') || '');
+  if (Number.isInteger(step) && step >= 0) s.step = step;
+  return s;
+}

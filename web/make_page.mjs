@@ -1,0 +1,65 @@
+// Assembles the web build's pages (docs/web.md), each one self-contained HTML file: the module's
+// glue, the JavaScript API, the page's script and the .wasm (gzip, base64; the page inflates it
+// with the browser's DecompressionStream) inlined into the page's template. No network, no
+// external font or script: they work opened from file://.
+//
+//   node make_page.mjs explorer BUILD_WEB_DIR OUT.html    the explorer
+//   node make_page.mjs player BUILD_WEB_DIR OUT.html      the trace page's template: `replay -o
+//        OUT.html` (cli/trace_page.cpp) puts {cfg, trace (gzip, base64)} in place of
+//        /*SCANTRACE_PAGE_DATA*/null
+import fs from 'node:fs';
+import path from 'node:path';
+import zlib from 'node:zlib';
+
+const here = path.dirname(new URL(import.meta.url).pathname);
+const [kind, dir, out] = process.argv.slice(2);
+const read = (p) => fs.readFileSync(p, 'utf8');
+
+// The modules become one script: their imports of each other dropped, their exports plain.
+const unmodule = (text) =>
+  text
+    .replace(/^import [^;]*from '\.\/[\w.]+';$/gm, '')
+    .replace(/^export default \w+;$/gm, '')
+    .replace(/^export (class|async function|function|const) /gm, '$1 ');
+
+const wasm = zlib.gzipSync(fs.readFileSync(path.join(dir, 'scantrace_wasm.wasm')), { level: 9 }).toString('base64');
+const common = [
+  unmodule(read(path.join(dir, 'scantrace_wasm.mjs'))),
+  unmodule(read(path.join(here, 'scantrace.mjs'))),
+  `async function gunzipBase64(text) {
+  const bytes = Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
+  const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+  return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+function showFatal(e) {
+  const el = document.getElementById('error');
+  el.hidden = false;
+  el.textContent = 'error: ' + (e && e.message ? e.message : e);
+}`,
+];
+let script;
+if (kind === 'explorer') {
+  script = [
+    ...common,
+    unmodule(read(path.join(here, 'explorer', 'state.js'))),
+    unmodule(read(path.join(here, 'explorer', 'explorer.js'))),
+    `gunzipBase64('${wasm}').then((wasmBinary) => load({ wasmBinary })).then(start).catch(showFatal);`,
+  ];
+} else if (kind === 'player') {
+  script = [
+    ...common,
+    unmodule(read(path.join(here, 'player', 'player.js'))),
+    'const page = /*SCANTRACE_PAGE_DATA*/null;',
+    `Promise.all([gunzipBase64('${wasm}'), gunzipBase64(page.trace)])
+  .then(([wasmBinary, trace]) => load({ wasmBinary }).then((st) => startPlayer(st, page.cfg, new TextDecoder().decode(trace))))
+  .catch(showFatal);`,
+  ];
+} else {
+  console.error('usage: node make_page.mjs explorer|player BUILD_WEB_DIR OUT.html');
+  process.exit(2);
+}
+const page = read(path.join(here, kind, `${kind}.html`)).replace('/*SCANTRACE_SCRIPT*/', () => script.join('\n'));
+// Written whole under another name, then renamed: never half a page.
+fs.writeFileSync(out + '.tmp', page);
+fs.renameSync(out + '.tmp', out);
+console.log(`${out}: ${(page.length / 1e6).toFixed(2)} MB`);

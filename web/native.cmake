@@ -1,0 +1,68 @@
+# The WebAssembly build seen from the native build (docs/web.md): the target `scantrace_web`
+# configures and builds web/ with emscripten's toolchain into ${CMAKE_BINARY_DIR}/web (build/web/:
+# the ES module, its .wasm, the JavaScript API and the explorer page), and the tests that hold the
+# module to the native command run in this build's ctest. Included by the top-level
+# CMakeLists.txt when SCANTRACE_BUILD_WEB is on.
+find_program(SCANTRACE_EMCC emcc)
+find_program(SCANTRACE_NODE node)
+set(SCANTRACE_EMSCRIPTEN_TOOLCHAIN /usr/share/emscripten/cmake/Modules/Platform/Emscripten.cmake
+    CACHE FILEPATH "emscripten's CMake toolchain file (Debian's emscripten package)")
+if(NOT SCANTRACE_EMCC OR NOT SCANTRACE_NODE OR NOT EXISTS ${SCANTRACE_EMSCRIPTEN_TOOLCHAIN})
+  message(WARNING "SCANTRACE_BUILD_WEB: emcc, node or ${SCANTRACE_EMSCRIPTEN_TOOLCHAIN} not "
+                  "found (bash scripts/deps.sh installs emscripten and nodejs); the web build and "
+                  "its tests are left out")
+  return()
+endif()
+
+# Debian's emscripten runs its JavaScript tools with `node` and Debian's node-acorn, which a Node
+# from elsewhere (NodeSource's) does not look for in /usr/share/nodejs.
+set(web_env NODE_PATH=/usr/share/nodejs)
+set(web_dir ${CMAKE_BINARY_DIR}/web)
+# Its own make, which does not share the outer one's job slots: as many jobs as cores.
+cmake_host_system_information(RESULT web_jobs QUERY NUMBER_OF_LOGICAL_CORES)
+add_custom_target(scantrace_web ALL
+  COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} -S ${PROJECT_SOURCE_DIR} -B ${web_dir}
+          -DCMAKE_TOOLCHAIN_FILE=${SCANTRACE_EMSCRIPTEN_TOOLCHAIN} -DCMAKE_BUILD_TYPE=Release
+          -G "Unix Makefiles" --log-level=WARNING
+  COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} --build ${web_dir} --parallel ${web_jobs}
+  COMMENT "WebAssembly build (emscripten) into ${web_dir}"
+  USES_TERMINAL)
+
+if(SCANTRACE_BUILD_TESTS)
+  # The module against the native command: pixels, traces, why and diff (web/tests/node_compare.mjs).
+  add_test(NAME "web: node module equals the native command"
+           COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/node_compare.mjs ${web_dir}
+                   $<TARGET_FILE:scantrace> ${CMAKE_BINARY_DIR}/web-tests/node
+                   ${CMAKE_BINARY_DIR}/examples/demo/demo_scene.json)
+  set_tests_properties("web: node module equals the native command" PROPERTIES
+                       FIXTURES_REQUIRED demo_files LABELS "web" TIMEOUT 600)
+endif()
+
+if(SCANTRACE_BUILD_TESTS)
+  # The explorer page in headless Chromium, opened from file:// (web/tests/chromium_explorer.mjs).
+  # `scantrace explore -o` writes the page the Chromium test opens.
+  add_test(NAME "web: scantrace explore writes the explorer page"
+           COMMAND $<TARGET_FILE:scantrace> explore -o ${CMAKE_BINARY_DIR}/web-tests/explorer.html)
+  set_tests_properties("web: scantrace explore writes the explorer page" PROPERTIES
+                       LABELS "web" FIXTURES_SETUP explorer_page)
+  find_program(SCANTRACE_CHROMIUM chromium)
+  if(SCANTRACE_CHROMIUM)
+    add_test(NAME "web: explorer in headless Chromium"
+             COMMAND ${SCANTRACE_NODE} --experimental-websocket --no-warnings
+                     ${PROJECT_SOURCE_DIR}/web/tests/chromium_explorer.mjs
+                     ${CMAKE_BINARY_DIR}/web-tests/explorer.html
+                     $<TARGET_FILE:scantrace> ${CMAKE_BINARY_DIR}/web-tests/chromium)
+    set_tests_properties("web: explorer in headless Chromium" PROPERTIES LABELS "web;browser"
+                         FIXTURES_REQUIRED explorer_page TIMEOUT 300)
+  endif()
+endif()
+
+if(SCANTRACE_BUILD_TESTS AND SCANTRACE_CHROMIUM)
+  # The trace page of `replay -o OUT.html` in headless Chromium (web/tests/chromium_trace_page.mjs).
+  add_test(NAME "web: trace page in headless Chromium"
+           COMMAND ${SCANTRACE_NODE} --experimental-websocket --no-warnings
+                   ${PROJECT_SOURCE_DIR}/web/tests/chromium_trace_page.mjs $<TARGET_FILE:scantrace>
+                   ${CMAKE_BINARY_DIR}/web-tests/trace_page)
+  set_tests_properties("web: trace page in headless Chromium" PROPERTIES LABELS "web;browser"
+                       TIMEOUT 300)
+endif()

@@ -1,0 +1,108 @@
+// Types of scantrace's JavaScript API (scantrace.mjs; docs/web.md).
+
+/** JSON text of a scene file, a parsed scene object, or a named file (".obj": a model). */
+export type SceneInput = string | object | { name: string; data: string | Uint8Array };
+
+/** The CLI's fill flags, same names and values (missing: the CLI's defaults). */
+export interface FillOptions {
+  shading?: 'flat' | 'gouraud';
+  fill_rule?: 'top-left' | 'closed';
+  subpixel_bits?: number;
+  method?: 'exact' | 'float' | 'double' | 'halfspace';
+  winding?: 'even-odd' | 'non-zero';
+  cull?: 'none' | 'back' | 'front';
+  depth?: 'painter' | 'zbuffer';
+  clamp_colors?: boolean;
+}
+
+export interface TraceOptions extends FillOptions {
+  level?: 'triangle' | 'scanline' | 'pixel';
+  triangles?: number[];
+  max_events?: number;
+}
+
+export type TraceInput =
+  | { scene: SceneInput }
+  | { triangle: [number, number][]; colors?: [number, number, number][]; width?: number; height?: number }
+  | { polygon: [number, number][][]; colors?: [number, number, number][]; width?: number; height?: number };
+
+/** One JSON Lines event of trace format v1 (trace/trace_schema.json). */
+export interface TraceEvent {
+  event: string;
+  [key: string]: unknown;
+}
+
+export interface Rendered {
+  width: number;
+  height: number;
+  /** Row-major RGBA, 8 bits a channel: the pixels of `scantrace render`'s PNG. */
+  rgba: Uint8ClampedArray;
+  faces: number;
+  /** The fill's time inside the module, in milliseconds. */
+  ms: number;
+}
+
+export interface FrameStep {
+  kind: string;
+  triangle: number;
+  first_row: number;
+  last_row: number;
+}
+
+/** A display list in the canvas JSON of viz/frame_json.hpp, for drawScantraceFrame. */
+export interface CanvasFrame {
+  w: number;
+  h: number;
+  bg: string;
+  ops: unknown[];
+}
+
+export interface FrameOptions {
+  width?: number;
+  height?: number;
+  first?: number;
+  count?: number;
+  rows_per_step?: number;
+  source?: string;
+}
+
+export interface DecodedImage {
+  width: number;
+  height: number;
+  rgba: Uint8Array | Uint8ClampedArray;
+  name?: string;
+}
+
+export interface DiffOptions extends FillOptions {
+  tolerance?: number;
+  undo?: boolean;
+}
+
+export class ScantraceError extends Error {
+  /** 1: bad input (the CLI's one-line message); 2: a bad argument of the API. */
+  status: 1 | 2;
+}
+
+export class Scantrace {
+  render(scene: SceneInput, options?: FillOptions): Rendered;
+  traceText(input: TraceInput, options?: TraceOptions): string;
+  trace(input: TraceInput, options?: TraceOptions): TraceEvent[];
+  frames(trace: string | TraceEvent[], options?: FrameOptions): { steps: FrameStep[]; frames: CanvasFrame[] };
+  /** `scantrace why SCENE X Y --json`'s document (trace/why_schema.json). */
+  why(scene: SceneInput, x: number, y: number, options?: FillOptions): Record<string, unknown>;
+  /** drawScantraceFrame's JavaScript source (viz/frame_json.hpp). */
+  canvasScript(): string;
+  /** The built-in demo scene (`scantrace demo`'s demo_scene.json) as scene JSON text. */
+  demoScene(): string;
+  /** The picture of the last diff's differences (grade/diff_picture.hpp), or null. */
+  lastDiffPicture: { width: number; height: number; rgba: Uint8ClampedArray } | null;
+  /** `scantrace diff SCENE IMAGE --json`'s report. */
+  diff(scene: SceneInput, image: DecodedImage, options?: DiffOptions): Record<string, unknown>;
+}
+
+/** Loads the module: its .wasm read beside scantrace.mjs, or the bytes given. */
+export function load(options?: {
+  wasmBinary?: Uint8Array;
+  print?: (text: string) => void;
+  printErr?: (text: string) => void;
+}): Promise<Scantrace>;

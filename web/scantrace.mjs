@@ -1,0 +1,169 @@
+// scantrace's JavaScript API (docs/web.md; types in scantrace.d.ts): the real fill, trace, frame
+// composer, why and diff, compiled to WebAssembly (scantrace_wasm.mjs + .wasm), in Node and in a
+// page alike.
+//
+//   import { load } from './scantrace.mjs';
+//   const st = await load();
+//   const { width, height, rgba } = st.render(sceneJsonText);
+//
+// Inputs are handed to the module as files in its memory file system, under the name the caller
+// gives (default scene.json), so messages name them as the CLI names its files.
+import createScantraceWasm from './scantrace_wasm.mjs';
+
+export class ScantraceError extends Error {
+  // status 1: bad input (the message is the CLI's one line); 2: a bad argument of the API.
+  constructor(message, status) {
+    super(message);
+    this.name = 'ScantraceError';
+    this.status = status;
+  }
+}
+
+const isNode = typeof process === 'object' && !!(process.versions && process.versions.node);
+
+async function wasmBytes() {
+  const url = new URL('./scantrace_wasm.wasm', import.meta.url);
+  if (isNode) {
+    const fs = await import('node:fs/promises');
+    return new Uint8Array(await fs.readFile(url));
+  }
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url}: ${response.status} ${response.statusText}`);
+  return new Uint8Array(await response.arrayBuffer());
+}
+
+// options.wasmBinary: the module's bytes (a page with the wasm inlined); else read beside this file.
+export async function load(options = {}) {
+  const wasmBinary = options.wasmBinary || (await wasmBytes());
+  const module = await createScantraceWasm({
+    wasmBinary,
+    print: options.print || (() => {}),
+    printErr: options.printErr || (() => {}),
+  });
+  return new Scantrace(module);
+}
+
+const decoder = new TextDecoder();
+
+export class Scantrace {
+  constructor(module) {
+    this.m = module;
+    // Inputs are written to /in and named relative to it, so a message names the file as the
+    // caller named it ("scene.json: …"), as the CLI names a file given relative to its directory.
+    this.m.FS.mkdirTree('/in');
+    this.m.FS.chdir('/in');
+  }
+
+  // scene: JSON text, a scene object, or {name, data} (data text or bytes; name ending .obj: a model).
+  _sceneFile(scene) {
+    let name = 'scene.json';
+    let data = scene;
+    if (scene && typeof scene === 'object' && !(scene instanceof Uint8Array)) {
+      if ('data' in scene && 'name' in scene) {
+        name = String(scene.name);
+        data = scene.data;
+      } else {
+        data = JSON.stringify(scene);
+      }
+    }
+    if (typeof data !== 'string' && !(data instanceof Uint8Array))
+      throw new ScantraceError('scene: JSON text, a scene object or {name, data}', 2);
+    const base = name.replace(/^.*[\\/]/, '') || 'scene.json';
+    this.m.FS.writeFile(`/in/${base}`, data);
+    return base;
+  }
+
+  _call(name, args) {
+    const m = this.m;
+    const stack = [];
+    const cargs = args.map((a) => {
+      if (typeof a === 'string') {
+        const n = m.lengthBytesUTF8(a) + 1;
+        const p = m._malloc(n);
+        m.stringToUTF8(a, p, n);
+        stack.push(p);
+        return p;
+      }
+      if (a instanceof Uint8Array) {
+        const p = m._malloc(Math.max(1, a.length));
+        m.HEAPU8.set(a, p);
+        stack.push(p);
+        return p;
+      }
+      return a;
+    });
+    let status;
+    try {
+      status = m['_st_' + name](...cargs);
+    } finally {
+      for (const p of stack) m._free(p);
+    }
+    if (status !== 0) throw new ScantraceError(m.UTF8ToString(m._st_error()), status);
+    return {
+      text: () => decoder.decode(m.HEAPU8.subarray(m._st_result_text(), m._st_result_text() + m._st_result_size())),
+      bytes: () => m.HEAPU8.slice(m._st_result_bytes(), m._st_result_bytes() + m._st_result_bytes_size()),
+    };
+  }
+
+  // {width, height, rgba (Uint8ClampedArray, row-major RGBA), faces, ms}: `scantrace render`'s image.
+  render(scene, options = {}) {
+    const r = this._call('render', [this._sceneFile(scene), JSON.stringify(options)]);
+    const info = JSON.parse(r.text());
+    return { ...info, rgba: new Uint8ClampedArray(r.bytes().buffer) };
+  }
+
+  // The JSON Lines `scantrace trace` writes, as text. input: {scene} | {triangle, colors?,
+  // width?, height?} | {polygon, colors?, width?, height?}.
+  traceText(input, options = {}) {
+    const spec = { ...input };
+    if ('scene' in spec) spec.scene = this._sceneFile(spec.scene);
+    return this._call('trace', [JSON.stringify(spec), JSON.stringify(options)]).text();
+  }
+
+  // The same trace as event objects, one per line (header first, footer last).
+  trace(input, options = {}) {
+    return this.traceText(input, options)
+      .split('\n')
+      .filter((l) => l.length > 0)
+      .map((l) => JSON.parse(l));
+  }
+
+  // Display lists of a trace's steps for drawScantraceFrame: {steps, frames}. trace: JSON Lines
+  // text or event objects. options: width, height (1280 × 720), first, count, rows_per_step.
+  frames(trace, options = {}) {
+    const text = typeof trace === 'string' ? trace : trace.map((e) => JSON.stringify(e)).join('\n') + '\n';
+    this.m.FS.writeFile('/in/trace.jsonl', text);
+    return JSON.parse(this._call('frames', ['trace.jsonl', JSON.stringify(options)]).text());
+  }
+
+  // `scantrace why SCENE X Y --json`'s document.
+  why(scene, x, y, options = {}) {
+    return JSON.parse(this._call('why', [this._sceneFile(scene), x | 0, y | 0, JSON.stringify(options)]).text());
+  }
+
+  // drawScantraceFrame's JavaScript source (viz/frame_json.hpp).
+  canvasScript() {
+    return this.m.UTF8ToString(this.m._st_canvas_script());
+  }
+
+  // The built-in demo scene as scene JSON text.
+  demoScene() {
+    return this._call('demo_scene', []).text();
+  }
+
+  // `scantrace diff SCENE IMAGE --json`'s report. image: {width, height, rgba, name?}, decoded.
+  // diffPicture(): the picture of the last diff's differences, {width, height, rgba}.
+  diff(scene, image, options = {}) {
+    const { width, height, rgba } = image;
+    if (!(width > 0 && height > 0) || !rgba || rgba.length !== width * height * 4)
+      throw new ScantraceError('image: {width, height, rgba} with width × height × 4 bytes', 2);
+    const bytes = rgba instanceof Uint8Array ? rgba : new Uint8Array(rgba.buffer, rgba.byteOffset, rgba.length);
+    const r = this._call('diff', [this._sceneFile(scene), bytes, width, height, image.name || 'image.png', JSON.stringify(options)]);
+    const report = JSON.parse(r.text());
+    const picture = new Uint8ClampedArray(r.bytes().buffer);
+    const w = report.canvas ? report.canvas.width : 0;
+    this.lastDiffPicture = w ? { width: w, height: picture.length / 4 / w, rgba: picture } : null;
+    return report;
+  }
+}
+

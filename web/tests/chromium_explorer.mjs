@@ -1,0 +1,158 @@
+// The explorer in headless Chromium (issue 33; docs/web.md), opened from file:// with real input
+// events over the DevTools protocol, checked against the native command:
+// - the address restores the state (shading, step);
+// - dragging a vertex changes the trace shown into the native `trace` of the new triangle;
+// - `scantrace step`'s keys step; a click on a pixel shows that pixel's `why --json`;
+// - the page's fill pixels equal the native render; a PNG given for an open scene is diffed as
+//   `diff --json` diffs it; a malformed scene shows the CLI's line and the page keeps working;
+// - no console error, no exception, no network request.
+//
+//   node --experimental-websocket chromium_explorer.mjs EXPLORER.html SCANTRACE WORK_DIR
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+
+import { checker, launch, until, watchProblems } from './cdp.mjs';
+import { decodePng, encodePng } from './png.mjs';
+
+const [explorer, scantraceArg, work] = process.argv.slice(2);
+const scantrace = path.resolve(scantraceArg);
+fs.mkdirSync(work, { recursive: true });
+const native = (args, ok = [0]) => {
+  const r = spawnSync(scantrace, ['-q', ...args], { encoding: 'utf8', cwd: work, maxBuffer: 1 << 28 });
+  if (!ok.includes(r.status)) throw new Error(`scantrace ${args.join(' ')}: exit ${r.status}: ${r.stderr}`);
+  return r;
+};
+const jsonl = (text) => text.split('\n').filter((l) => l).map((l) => JSON.parse(l));
+
+const b = await launch();
+const problems = watchProblems(b);
+const checks = checker();
+const check = checks.check;
+const text = (id) => b.evaluate(`document.getElementById(${JSON.stringify(id)}).textContent`);
+const mouse = async (type, [x, y]) => b.page('Input.dispatchMouseEvent', { type, x, y, button: 'left', buttons: type === 'mouseReleased' ? 0 : 1, clickCount: 1 });
+const key = async (k, code) => {
+  await b.page('Input.dispatchKeyEvent', { type: 'rawKeyDown', key: k, code, windowsVirtualKeyCode: { ArrowRight: 39, ArrowLeft: 37, PageDown: 34, PageUp: 33, Home: 36, End: 35 }[k] });
+  await b.page('Input.dispatchKeyEvent', { type: 'keyUp', key: k, code });
+};
+const stepShown = async () => Number((await text('step-no')).match(/step (\d+)/)[1]) - 1;
+
+try {
+  for (const d of ['Runtime', 'Log', 'Network', 'Page', 'DOM']) await b.page(`${d}.enable`);
+  const url = `file://${path.resolve(explorer)}#triangle=20,20;250,80;300,400&shading=flat&step=12`;
+  const t0 = Date.now();
+  await b.page('Page.navigate', { url });
+  await until('the page to start', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"));
+  console.log(`explorer ready ${Date.now() - t0} ms after navigating (${await b.evaluate("document.body.dataset.readyMs")} ms by the page's clock)`);
+
+  await check('the address restores the state', async () => {
+    assert.equal(await b.evaluate("document.getElementById('shading').value"), 'flat');
+    assert.equal(await stepShown(), 12);
+    assert.deepStrictEqual((await b.evaluate('explorer.state()')).triangle, [[20, 20], [250, 80], [300, 400]]);
+  });
+
+  await check('the trace shown is the native trace', async () => {
+    native(['trace', '--triangle', '20,20 250,80 300,400', '--shading', 'flat', '-o', 'before.jsonl']);
+    assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'before.jsonl'), 'utf8')));
+  });
+
+  await check('dragging a vertex re-traces as the native trace of the new triangle', async () => {
+    const from = await b.evaluate('explorer.vertexOnScreen(2)');
+    const to = [from[0] - 83.3, from[1] - 121.7];
+    await mouse('mousePressed', from);
+    for (let i = 1; i <= 5; ++i) await mouse('mouseMoved', [from[0] + (to[0] - from[0]) * i / 5, from[1] + (to[1] - from[1]) * i / 5]);
+    await mouse('mouseReleased', to);
+    console.log(`a drag's move took ${await b.evaluate('document.body.dataset.dragMs')} ms (fill, trace, tables), its release ${await b.evaluate('document.body.dataset.recomputeMs')} ms (and the plan and the frame)`);
+    const tri = (await b.evaluate('explorer.state()')).triangle;
+    assert.notDeepStrictEqual(tri[2], [300, 400]);
+    // Snapped to the 2^-8 grid.
+    for (const v of tri[2]) assert.equal(v * 256, Math.round(v * 256));
+    native(['trace', '--triangle', tri.map((v) => v.join(',')).join(' '), '--shading', 'flat', '-o', 'after.jsonl']);
+    const shown = jsonl(await b.evaluate('explorer.traceText()'));
+    assert.deepStrictEqual(shown, jsonl(fs.readFileSync(path.join(work, 'after.jsonl'), 'utf8')));
+    assert.notDeepStrictEqual(shown, jsonl(fs.readFileSync(path.join(work, 'before.jsonl'), 'utf8')));
+    assert.ok((await b.evaluate('location.hash')).includes(`triangle=${tri.map((v) => v.join(',')).join(';')}`));
+  });
+
+  await check("scantrace step's keys step", async () => {
+    await key('Home', 'Home');
+    assert.equal(await stepShown(), 0);
+    await key('ArrowRight', 'ArrowRight');
+    await key('ArrowRight', 'ArrowRight');
+    assert.equal(await stepShown(), 2);
+    await key('PageDown', 'PageDown');
+    assert.equal(await stepShown(), 12);
+    await key('ArrowLeft', 'ArrowLeft');
+    assert.equal(await stepShown(), 11);
+    await key('End', 'End');
+    const n = Number((await text('step-no')).match(/\/ (\d+)/)[1]);
+    assert.equal(await stepShown(), n - 1);
+    await key('PageUp', 'PageUp');
+    assert.equal(await stepShown(), n - 11);
+    await until('the frame of the step drawn', async () => (await b.evaluate("document.getElementById('frame').dataset.step")) === String(n - 11));
+  });
+
+  const scene = path.join(work, 'explorer_triangle.json');
+  fs.writeFileSync(scene, await b.evaluate('explorer.scene()'));
+
+  await check('the fill pixels are the native render', async () => {
+    native(['render', 'explorer_triangle.json', '--shading', 'flat', '-o', 'explorer_triangle.png']);
+    const want = decodePng(fs.readFileSync(path.join(work, 'explorer_triangle.png')));
+    const got = await b.evaluate('explorer.fillPixels()');
+    assert.equal(got.length, want.rgba.length);
+    assert.ok(got.every((v, i) => v === want.rgba[i]), 'pixels differ');
+  });
+
+  await check('a click on a pixel shows its why', async () => {
+    // Mouse events land on whole CSS pixels: the pixel clicked is the one under that point, at
+    // most one canvas pixel from the aim at this zoom.
+    const at = (await b.evaluate('explorer.pixelOnScreen(150, 120)')).map(Math.round);
+    await mouse('mousePressed', at);
+    await mouse('mouseReleased', at);
+    const pixel = await until('the why panel', () => b.evaluate("document.getElementById('why').dataset.pixel"));
+    const [x, y] = pixel.split(',').map(Number);
+    assert.ok(Math.abs(x - 150) <= 1 && Math.abs(y - 120) <= 1, `clicked ${pixel}`);
+    const want = JSON.parse(native(['why', 'explorer_triangle.json', String(x), String(y), '--json', '--shading', 'flat']).stdout);
+    assert.deepStrictEqual(JSON.parse(await text('why')), want);
+  });
+
+  // Files go in through the page's file input, as a drop or a chooser gives them.
+  const setFile = async (file) => {
+    const { root } = await b.page('DOM.getDocument', {});
+    const { nodeId } = await b.page('DOM.querySelector', { nodeId: root.nodeId, selector: '#open' });
+    await b.page('DOM.setFileInputFiles', { nodeId, files: [file] });
+  };
+
+  await check('a malformed scene shows the CLI line and the page keeps working', async () => {
+    const bad = path.join(work, 'broken.json');
+    fs.writeFileSync(bad, '{"width": 10, "height": 10, "vertices": [[0, 0]], "faces": [[0, 1, 2]]}');
+    const line = native(['render', 'broken.json', '-o', 'broken.png'], [1]).stderr.trim().replace(/^scantrace: /, '');
+    await setFile(bad);
+    await until('the error line', async () => (await text('error')).length > 0);
+    assert.equal(await text('error'), line);
+    await b.evaluate("document.getElementById('triangle-mode').click()");
+    await until('the error cleared', async () => (await text('error')) === '');
+  });
+
+  await check('an image for the open scene is diffed as diff --json diffs it', async () => {
+    await setFile(scene);
+    await until('the scene open', async () => (await b.evaluate('explorer.state().mode')) === 'scene');
+    // A student-style image: the closed rule on whole pixels, and a block of wrong colours.
+    native(['render', 'explorer_triangle.json', '--fill-rule', 'closed', '--subpixel-bits', '0', '-o', 'student.png']);
+    const img = decodePng(fs.readFileSync(path.join(work, 'student.png')));
+    for (let y = 100; y < 130; ++y) for (let x = 100; x < 140; ++x) img.rgba[(y * img.width + x) * 4 + 1] ^= 0x55;
+    fs.writeFileSync(path.join(work, 'student.png'), encodePng(img));
+    const want = JSON.parse(native(['diff', 'explorer_triangle.json', 'student.png', '--json', '--shading', 'flat'], [0, 3]).stdout);
+    await setFile(path.join(work, 'student.png'));
+    await until('the diff report', async () => (await text('diff')).startsWith('{'));
+    assert.deepStrictEqual(JSON.parse(await text('diff')), want);
+  });
+
+  await check('no console error, no exception, no network request', async () => {
+    assert.deepStrictEqual(problems, []);
+  });
+} finally {
+  await b.close();
+}
+console.log(`${checks.passed} checks passed${process.exitCode ? ', some FAILED' : ''}`);

@@ -1,0 +1,177 @@
+// The WebAssembly build is the same rasterizer (issue 33; docs/web.md): in Node, the module's
+// render, trace, why and diff are compared with the native `scantrace` command's outputs:
+// bit-identical pixels (the PNG decoded here), the same trace events (decoded JSON), the same
+// why / diff documents.
+//
+//   node node_compare.mjs WEB_DIR SCANTRACE WORK_DIR [DEMO_SCENE.json]
+// The course scene (/work/shared/data/hw1_2024.json) is compared when it exists.
+import assert from 'node:assert/strict';
+import { execFileSync, spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+import { decodePng, encodePng } from './png.mjs';
+import { hardCases, manyFaces } from './scenes.mjs';
+
+const [webDir, scantraceArg, work, demoScene] = process.argv.slice(2);
+const scantrace = path.resolve(scantraceArg);
+const { load, ScantraceError } = await import(pathToFileURL(path.join(webDir, 'scantrace.mjs')));
+const started = Date.now();
+const st = await load();
+fs.mkdirSync(work, { recursive: true });
+const course = '/work/shared/data/hw1_2024.json';
+
+let checks = 0;
+const durations = [];
+function check(what, f) {
+  const t0 = Date.now();
+  try {
+    f();
+    ++checks;
+    durations.push([Date.now() - t0, what]);
+  } catch (e) {
+    console.error(`FAIL ${what}: ${e.message.split('\n').slice(0, 8).join('\n')}`);
+    process.exitCode = 1;
+  }
+}
+
+function flags(o) {
+  const f = [];
+  if (o.shading) f.push('--shading', o.shading);
+  if (o.fill_rule) f.push('--fill-rule', o.fill_rule);
+  if (o.subpixel_bits !== undefined) f.push('--subpixel-bits', String(o.subpixel_bits));
+  if (o.method) f.push('--method', o.method);
+  return f;
+}
+
+function native(args, okStatuses = [0]) {
+  const r = spawnSync(scantrace, ['-q', ...args], { encoding: 'utf8', maxBuffer: 1 << 28 });
+  if (!okStatuses.includes(r.status)) throw new Error(`scantrace ${args.join(' ')}: exit ${r.status}: ${r.stderr}`);
+  return r.stdout;
+}
+
+function firstDifference(a, b, width) {
+  for (let i = 0; i < a.length; ++i)
+    if (a[i] !== b[i]) return `first difference at pixel (${(i >> 2) % width}, ${Math.floor((i >> 2) / width)}) channel ${i & 3}: ${a[i]} vs ${b[i]}`;
+  return 'none';
+}
+
+function compareRender(name, file, options) {
+  check(`render ${name} ${JSON.stringify(options)}`, () => {
+    const png = path.join(work, `${name}.png`);
+    native(['render', file, ...flags(options), '--threads', '1', '-o', png]);
+    const want = decodePng(fs.readFileSync(png));
+    const got = st.render({ name: path.basename(file), data: fs.readFileSync(file) }, options);
+    assert.equal(got.width, want.width);
+    assert.equal(got.height, want.height);
+    const same = Buffer.compare(Buffer.from(got.rgba), Buffer.from(want.rgba)) === 0;
+    assert.ok(same, firstDifference(got.rgba, want.rgba, got.width));
+  });
+}
+
+function readJsonl(file) {
+  return fs.readFileSync(file, 'utf8').split('\n').filter((l) => l).map((l) => JSON.parse(l));
+}
+
+// Scenes: files on disk, as the CLI reads them.
+const scenes = [];
+if (demoScene && fs.existsSync(demoScene)) scenes.push(['demo', demoScene]);
+else console.log('skipped: the built-in demo scene (no file given)');
+if (fs.existsSync(course)) scenes.push(['course', course]);
+else console.log(`skipped: the course scene (${course} absent)`);
+const many = path.join(work, 'many_faces.json');
+fs.writeFileSync(many, JSON.stringify(manyFaces(25000, 1200, 1200)));
+scenes.push(['many_faces', many]);
+const hard = path.join(work, 'hard_cases.json');
+fs.writeFileSync(hard, JSON.stringify(hardCases()));
+scenes.push(['hard_cases', hard]);
+
+const optionSets = [
+  {},
+  { shading: 'flat' },
+  { fill_rule: 'closed', subpixel_bits: 0 },
+  { method: 'float' },
+  { method: 'double', subpixel_bits: 2 },
+  { method: 'halfspace' },
+];
+for (const [name, file] of scenes)
+  for (const [i, o] of optionSets.entries())
+    if (name !== 'many_faces' || i === 0) compareRender(`${name}_${i}`, file, o);
+
+// Traces: a triangle at every level, the hard triangles, a polygon, and a scene.
+const triangleCases = [
+  [[20, 20], [250, 80], [300, 400]],
+  [[-1e9, -1e9], [1e9, 3.5], [200.25, 1e9]],
+  [[10, 500], [500, 10], [10.0001, 499.999]],
+  [[100.00390625, 3.5], [7.25, 200.75], [300.5, 120.125]],
+];
+// Triangle 1 covers the whole canvas: at pixel level 262,144 events a trace, 13 s each here for
+// nothing its scanline level does not already hold (its crossings are the 128-bit path's).
+for (const [i, tri] of triangleCases.entries())
+  for (const level of i === 1 ? ['triangle', 'scanline'] : ['triangle', 'scanline', 'pixel'])
+    for (const o of [{}, { subpixel_bits: 0, fill_rule: 'closed', shading: 'flat' }, { method: 'float' }]) {
+      check(`trace triangle ${i} ${level} ${JSON.stringify(o)}`, () => {
+        const out = path.join(work, 'triangle.jsonl');
+        native(['trace', '--triangle', tri.map((v) => v.join(',')).join(' '), '--level', level, ...flags(o), '-o', out]);
+        assert.deepStrictEqual(st.trace({ triangle: tri }, { ...o, level }), readJsonl(out));
+      });
+    }
+check('trace polygon', () => {
+  const out = path.join(work, 'polygon.jsonl');
+  const contours = [[[50, 50], [400, 60], [300, 300], [60, 420]], [[100, 100], [200, 110], [150, 200]]];
+  native(['trace', '--polygon', contours.map((c) => c.map((v) => v.join(',')).join(' ')).join(' | '),
+    '--colors', '1,0,0 0,1,0 0,0,1 1,1,0 0,1,1 1,0,1 0.5,0.5,0.5', '--winding', 'non-zero', '-o', out]);
+  const colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1], [1, 0, 1], [0.5, 0.5, 0.5]];
+  assert.deepStrictEqual(st.trace({ polygon: contours, colors }, { winding: 'non-zero' }), readJsonl(out));
+});
+// The course scene's first 300 faces (its whole trace is 49 MB, a minute to decode twice here).
+for (const [name, file] of scenes.filter(([n]) => n !== 'many_faces'))
+  check(`trace scene ${name}`, () => {
+    const out = path.join(work, `${name}.jsonl`);
+    const some = name === 'course' ? { triangles: [...Array(300).keys()] } : {};
+    native(['trace', file, ...(some.triangles ? ['--triangles', '0-299'] : []), '-o', out]);
+    assert.deepStrictEqual(st.trace({ scene: { name: path.basename(file), data: fs.readFileSync(file) } }, some), readJsonl(out));
+  });
+
+// why: pixels of each scene (an edge, the middle, a corner).
+for (const [name, file] of scenes.filter(([n]) => n !== 'many_faces'))
+  for (const [x, y] of [[0, 0], [200, 200], [256, 300], [511, 511]])
+    check(`why ${name} ${x} ${y}`, () => {
+      const want = JSON.parse(native(['why', file, String(x), String(y), '--json']));
+      assert.deepStrictEqual(st.why({ name: path.basename(file), data: fs.readFileSync(file) }, x, y), want);
+    });
+
+// diff: a student-style image of each scene (the render with the closed rule and whole pixels,
+// flipped colours of a block, a missing corner), through the native CLI and the module.
+for (const [name, file] of scenes.filter(([n]) => n !== 'many_faces'))
+  check(`diff ${name}`, () => {
+    const png = path.join(work, `${name}_student.png`);
+    native(['render', file, '--fill-rule', 'closed', '--subpixel-bits', '0', '-o', png]);
+    const img = decodePng(fs.readFileSync(png));
+    for (let y = 10; y < 40; ++y)
+      for (let x = 10; x < 60; ++x) img.rgba[(y * img.width + x) * 4] ^= 0x80;
+    fs.writeFileSync(png, encodePng(img));
+    const want = JSON.parse(native(['diff', file, png, '--json'], [0, 3]));
+    const got = st.diff({ name: path.basename(file), data: fs.readFileSync(file) }, { ...img, name: png });
+    assert.deepStrictEqual(got, want);
+  });
+
+// Bad input: the CLI's one-line message, and the module keeps working.
+check('bad scene', () => {
+  const bad = path.join(work, 'bad.json');
+  fs.writeFileSync(bad, '{"width": 10, "height": 10, "vertices": [[0, 0]], "faces": [[0, 1, 2]]}');
+  const r = spawnSync(scantrace, ['render', 'bad.json', '-o', 'bad.png'], { encoding: 'utf8', cwd: work });
+  assert.equal(r.status, 1);
+  assert.throws(() => st.render({ name: 'bad.json', data: fs.readFileSync(bad) }), (e) => {
+    assert.ok(e instanceof ScantraceError);
+    assert.equal(e.status, 1);
+    assert.ok(r.stderr.includes(e.message), `CLI said ${JSON.stringify(r.stderr)}, module ${JSON.stringify(e.message)}`);
+    return true;
+  });
+  assert.equal(st.render(fs.readFileSync(hard, 'utf8')).width, 512);
+});
+
+durations.sort((x, y) => y[0] - x[0]);
+console.log(`slowest: ${durations.slice(0, 5).map(([ms, what]) => `${what} ${(ms / 1000).toFixed(1)} s`).join('; ')}`);
+console.log(`${checks} checks passed${process.exitCode ? ', some FAILED' : ''} in ${((Date.now() - started) / 1000).toFixed(1)} s`);

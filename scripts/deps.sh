@@ -38,6 +38,8 @@ packages+=(libxml2-utils hershey-fonts-data)
 # The Python package's build (pip install ., python3 -m build) and its benchmark's alternatives
 # (python/bench/bench_alternatives.py: OpenCV's and PIL's polygon fills).
 packages+=(python3-setuptools python3-wheel python3-build python3-venv python3-opencv python3-pil)
+# The grader (python -m scantrace.grade) runs each student's code in a bubblewrap sandbox.
+packages+=(bubblewrap)
 
 if [ "${1:-}" = "--demo" ]; then
   packages=("${demo_packages[@]}")

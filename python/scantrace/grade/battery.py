@@ -180,7 +180,7 @@ class Battery:
                              f"yours {np.round(r.value, 4).tolist()}")
         self._add("vector_interp: ordinary cases", "vector_interp", ok / len(VECTOR_CASES),
                   [f"{ok} of {len(VECTOR_CASES)} cases right."] + lines, verdict=verdict)
-        ok, lines, failures = 0, [], []
+        ok, lines, failures, verdict = 0, [], [], ""
         for j, (text, args, kind) in enumerate(VECTOR_DEGENERATE):
             r = self.results[f"vi_{len(VECTOR_CASES) + j}"]
             accepted = _accepted(args, kind)
@@ -191,13 +191,15 @@ class Battery:
             what = (self._failed_call(r) if r.status != "ok" else
                     f"returned {np.round(r.value, 4).tolist()}")
             lines.append(f"- {text} `{args}`: {what}")
-            if kind == "equal":
+            if r.status not in ("ok", "error"):
+                verdict = verdict or r.status   # a sandbox verdict, not a wrong formula
+            elif kind == "equal":
                 failures.append((f"`vector_interp{tuple(args)}`",
                                  r.detail.strip().splitlines()[-1] if r.status != "ok"
                                  and r.detail.strip() else what))
         self._add("vector_interp: degenerate cases", "vector_interp_degenerate",
                   ok / len(VECTOR_DEGENERATE),
-                  [f"{ok} of {len(VECTOR_DEGENERATE)} cases right."] + lines)
+                  [f"{ok} of {len(VECTOR_DEGENERATE)} cases right."] + lines, verdict=verdict)
         self.causes += diagnose.diagnose_vector_interp(failures)
 
     def _probe_images(self, func, probes):

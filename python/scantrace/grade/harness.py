@@ -211,6 +211,11 @@ class _DemoFreeLoader(importlib.machinery.SourceFileLoader):
     _KEEP = (ast.Import, ast.ImportFrom, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef,
              ast.Assign, ast.AnnAssign, ast.AugAssign, ast.Try)
 
+    def get_code(self, fullname):
+        # Always from the source: a cached .pyc of the plain import would bring the demo back.
+        path = self.get_filename(fullname)
+        return self.source_to_code(self.get_data(path), path)
+
     def source_to_code(self, data, path, *, _optimize=-1):
         tree = ast.parse(data, path)
         kept = []

@@ -248,7 +248,7 @@ class Session:
         if drop is not None:
             os.chown(batch_out, drop, drop)
         os.chmod(self.work, 0o755)
-        args = ["-I", harness, spec]
+        args = ["-I", "-B", harness, spec]   # -B: no .pyc written into the submission
         command = _bwrap_command(self.work, self.submission, args) if self.sandbox \
             else [PYTHON, *args]
         env = None if self.sandbox else {"PATH": "/usr/bin:/bin", "HOME": str(batch_out),

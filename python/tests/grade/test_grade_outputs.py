@@ -3,6 +3,7 @@ from Gradescope's documented fields), the reports, exit statuses, and the shapes
 submissions it copes with (split files in a zip, nested lists of 0-255 values, new canvases)."""
 
 import json
+import os
 import pathlib
 import subprocess
 import sys
@@ -10,6 +11,7 @@ import textwrap
 import zipfile
 
 import jsonschema
+import pytest
 
 from scantrace.grade import __main__ as cli
 
@@ -114,3 +116,16 @@ def test_split_zipped_submission_with_lists_scores_full(tmp_path, sandbox_ok):
     failed = [(t["name"], t["output"]) for t in results["tests"] if t["status"] != "passed"]
     assert failed == []
     assert results["extra_data"]["causes"] == []
+
+
+def test_the_scantrace_command_forwards_to_the_grader(tmp_path):
+    binary = os.environ.get("SCANTRACE_BINARY")
+    if not binary:
+        pytest.skip("SCANTRACE_BINARY is not set (CTest sets it)")
+    r = subprocess.run([binary, "grade", "--help"], capture_output=True, text=True)
+    assert r.returncode == 0 and "--hidden-seed" in r.stdout and "Gradescope" in r.stdout
+    r = subprocess.run([binary, "grade"], capture_output=True, text=True)
+    assert r.returncode == 2 and "SUBMISSION" in r.stderr
+    r = subprocess.run([binary, "grade", str(tmp_path / "nothing.zip"), "-o", str(tmp_path),
+                        "--no-sandbox"], capture_output=True, text=True)
+    assert r.returncode == 1 and "nothing.zip: no such file or directory" in r.stderr

@@ -213,11 +213,18 @@ def diagnose_image(student, reference, uncovered, alternatives):
                                     f"{_describe_colour(bg)}", detail=_describe_colour(bg)))
                 base = image_mismatch(student, reference)
     for cause_id, alt in alternatives.items():
-        m = image_mismatch(student, alt)
-        if base > 0 and m < base * 0.5:
-            causes.append(Cause(cause_id, 1 - m / base,
-                                f"{base:.2%} of the pixels differ from the correct painter's "
-                                f"order, {m:.2%} from this order"))
+        # Only the pixels this order changes decide (a wrong fill elsewhere does not blur it).
+        deciding = np.abs(alt - reference).max(axis=2) > 1.5 / 255
+        if base == 0 or not deciding.any():
+            continue
+        close = 1.5 / 255
+        as_alt = int((np.abs(student - alt).max(axis=2)[deciding] <= close).sum())
+        as_ref = int((np.abs(student - reference).max(axis=2)[deciding] <= close).sum())
+        if as_alt >= 0.5 * deciding.sum() and as_alt > 2 * as_ref:
+            causes.append(Cause(cause_id, as_alt / (as_alt + as_ref),
+                                f"of the {int(deciding.sum())} pixels this order changes, yours "
+                                f"has {as_alt} as painted in this order and {as_ref} as in the "
+                                "correct one"))
     return student, causes
 
 

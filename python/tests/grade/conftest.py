@@ -13,6 +13,8 @@ from scantrace.grade.grader import Options, grade
 from scantrace.grade.sandbox import Limits, sandbox_problem
 
 SHARED_DATA = pathlib.Path(os.environ.get("SCANTRACE_SHARED_DATA", "../shared/data"))
+SOURCE_DIR = pathlib.Path(os.environ.get("SCANTRACE_SOURCE_DIR",
+                                         pathlib.Path(__file__).resolve().parents[3]))
 
 # A student's correct solution, written as students of the course write it: explicit loops,
 # math.ceil on the crossings, painter's order by mean depth (stable), a demo at the bottom that

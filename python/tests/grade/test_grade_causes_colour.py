@@ -6,7 +6,7 @@ import pytest
 from scantrace.grade import rubric
 from scantrace.grade.causes import CONFIDENCE
 
-from conftest import grade_source, wrong_source
+from conftest import SOURCE_DIR, grade_source, wrong_source
 
 OTHER_CAUSES = ["flat_colour_not_mean", "gouraud_weights_permuted", "colours_paired_after_sort",
                 "transposed", "bgr", "background", "order_reversed", "order_unstable_on_ties",
@@ -31,3 +31,12 @@ def test_permutation_is_named(tmp_path, sandbox_ok):
     # The wrong submission takes vcolors[[1, 2, 0]]: vertex 0 gets the colour of vertex 1, …
     assert "vertex 0 gets the colour of vertex 1" in graded.causes[0].sentence
     assert "vertex 2 gets the colour of vertex 0" in graded.causes[0].sentence
+
+
+def test_two_mistakes_are_both_named(tmp_path, sandbox_ok):
+    # docs/grading.md's example: the span's last pixel left out *and* ties painted the wrong way
+    # round. The fill mistake changes pixels all over the hidden scenes; the order is still
+    # decided on the pixels the order alone changes.
+    source = (SOURCE_DIR / "docs" / "grading" / "student_hw1.py").read_text()
+    graded = grade_source(tmp_path, source)
+    assert [c.id for c in graded.causes] == ["right_end_excluded", "order_unstable_on_ties"]

@@ -1,6 +1,7 @@
 """python3 -m scantrace.grade: the command line of the grader (also `scantrace grade`)."""
 
 import argparse
+import math
 import pathlib
 import sys
 
@@ -22,17 +23,25 @@ Exit status: 0 every submission graded (whatever its score), 1 a submission coul
 at all (or the sandbox cannot run here), 2 usage."""
 
 
+def _finite(text):
+    """A float option's value: a finite number (argparse's float() takes nan and inf)."""
+    value = float(text)
+    if not math.isfinite(value) or value <= 0:
+        raise argparse.ArgumentTypeError(f"expected a finite number > 0, got {text!r}")
+    return value
+
+
 def _parser():
     p = argparse.ArgumentParser(prog="scantrace grade", description=DESCRIPTION,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("submissions", nargs="+", metavar="SUBMISSION")
     p.add_argument("-o", "--output", default="grade-out", metavar="DIR",
                    help="where the reports go (default: grade-out)")
-    p.add_argument("--jobs", type=int, default=1, metavar="N",
+    p.add_argument("--jobs", type=int, default=1, metavar="INT",
                    help="submissions graded at once, each in its own sandbox (default 1)")
     p.add_argument("--rubric", metavar="R.toml",
                    help="points per test and cause (default: the documented default rubric)")
-    p.add_argument("--hidden-seed", type=int, metavar="S",
+    p.add_argument("--hidden-seed", type=int, metavar="INT",
                    help="generate the hidden scenes from this seed (never shown to the code)")
     p.add_argument("--scene", metavar="PATH",
                    help="the course scene (hw1.npy, a scene .json or .mat) for the course-scene "
@@ -41,9 +50,9 @@ def _parser():
                    help="take every function from this module of the submission")
     p.add_argument("--no-sandbox", action="store_true",
                    help="run student code without bubblewrap (only for code you trust)")
-    p.add_argument("--call-seconds", type=float, default=10.0, metavar="S",
+    p.add_argument("--call-seconds", type=_finite, default=10.0, metavar="FLOAT",
                    help="wall-time limit of one call (default 10; a scene gets 6 times this)")
-    p.add_argument("--memory-mb", type=int, default=2048, metavar="MB",
+    p.add_argument("--memory-mb", type=int, default=2048, metavar="INT",
                    help="address-space limit of the student's process (default 2048)")
     p.add_argument("--quiet", action="store_true", help="no progress on stderr")
     return p
@@ -53,6 +62,8 @@ def main(argv=None):
     args = _parser().parse_args(argv)
     if args.jobs < 1:
         _parser().error("--jobs: expected a number >= 1")
+    if args.memory_mb < 64:
+        _parser().error("--memory-mb: expected a number >= 64")
     try:
         rubric = rubric_module.load(args.rubric)
     except rubric_module.RubricError as e:

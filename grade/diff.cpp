@@ -111,6 +111,7 @@ class DiffRun {
     index_reference_pixels();
     unmatch_recoloured_flat_faces();
     find_missing_and_shifted();
+    find_widened();
     classify_pixels();
     settle_ambiguous_pixels();
     count_categories();
@@ -294,6 +295,37 @@ class DiffRun {
     return best > same && 2 * best >= shown_[f];
   }
 
+  // Stage 7: faces drawn one pixel too wide at both ends of their spans (a floor/ceil rule, the
+  // line-drawing pixels as span ends). Such a face gains pixels beyond both ends of its spans and
+  // loses pixels only where a neighbour widened over them; a face translated by one pixel gains on
+  // one side and uncovers pixels on the other (a vertical move gains on the left and the right of
+  // its lower edges, but uncovers its upper ones). Widened faces are not `shifted`.
+  void find_widened() {
+    std::vector<std::int64_t> left(n_faces_, 0), right(n_faces_, 0), uncovered(n_faces_, 0);
+    for (std::size_t i : differing_) {
+      const int R = ids_.ids[i], I = seen_[i], x = px(i), y = py(i);
+      if (I == R) continue;
+      const bool extension = I >= 0 && !faces_[I].degenerate() && !faces_[I].covers(x, y, rule_);
+      if (extension) {
+        left[static_cast<std::size_t>(I)] += faces_[I].covers(x + 1, y, rule_);
+        right[static_cast<std::size_t>(I)] += faces_[I].covers(x - 1, y, rule_);
+      }
+      if (R >= 0 && !extension) ++uncovered[static_cast<std::size_t>(R)];
+    }
+    widened_.assign(n_faces_, 0);
+    for (std::size_t f = 0; f < n_faces_; ++f) {
+      widened_[f] = left[f] > 0 && right[f] > 0 && 4 * uncovered[f] <= left[f] + right[f];
+      if (widened_[f]) shifted_[f] = 0;
+    }
+  }
+
+  // (x, y) is a pixel one beyond either end of a span of widened face I.
+  bool widened_pixel(int I, int x, int y) {
+    if (I < 0 || !widened_[static_cast<std::size_t>(I)] || faces_[I].covers(x, y, rule_))
+      return false;
+    return faces_[I].covers(x + 1, y, rule_) || faces_[I].covers(x - 1, y, rule_);
+  }
+
   void tag_missing(const FaceGeometry& g, int x, int y) {
     if (!g.covers(x + 1, y, rule_)) ++tags_missing_["the right end of the span is one pixel short"];
     if (!g.covers(x - 1, y, rule_)) ++tags_missing_["the left end of the span is one pixel short"];
@@ -364,7 +396,7 @@ class DiffRun {
     return tie ? "order_tie" : drawn_before ? "order" : "other";
   }
 
-  // Stage 7: every differing pixel gets the first category that applies.
+  // Stage 8: every differing pixel gets the first category that applies.
   void classify_pixels() {
     cats_.assign(differing_.size(), {});
     hidden_.assign(differing_.size(), 0);
@@ -380,6 +412,9 @@ class DiffRun {
     if (I >= 0 && faces_[I].degenerate()) return "degenerate_drawn";
     if (I == kNoFace || I == R) return R >= 0 ? "colour" : "background";
     if (on_boundary(R, I, x, y)) return "boundary";
+    // A widened neighbour over a face missing everywhere: the missing face is the finding.
+    if ((R < 0 || !missing_[static_cast<std::size_t>(R)]) && widened_pixel(I, x, y))
+      return "widened";
     if ((R >= 0 && shifted_[static_cast<std::size_t>(R)]) ||
         (I >= 0 && shifted_[static_cast<std::size_t>(I)]))
       return "shifted";
@@ -424,7 +459,7 @@ class DiffRun {
     return cat;
   }
 
-  // Stage 8: the pixels both readings fit. When faces that are partly visible show the wrong
+  // Stage 9: the pixels both readings fit. When faces that are partly visible show the wrong
   // painter's order on a good share of the differing pixels, the faces hidden everywhere were
   // painted over too, not skipped. So are they when most of the faces the reference shows are
   // hidden: no usual special case loses most faces, painting nearest first does.
@@ -459,7 +494,7 @@ class DiffRun {
       }
   }
 
-  // Stage 9: the counts, the per-pixel map, the damage per face, the examples to explain.
+  // Stage 10: the counts, the per-pixel map, the damage per face, the examples to explain.
   void count_categories() {
     report_.category_map.assign(static_cast<std::size_t>(W_) * H_, 0);
     for (std::size_t k = 0; k < differing_.size(); ++k) {
@@ -476,7 +511,7 @@ class DiffRun {
     }
   }
 
-  // Stage 10: dominant near-boundary patterns.
+  // Stage 11: dominant near-boundary patterns.
   void find_patterns() {
     const auto dominant = [&](const std::map<std::string, std::int64_t>& tags,
                               std::int64_t total, const char* what) {
@@ -540,7 +575,7 @@ class DiffRun {
                     });
   }
 
-  // Stage 11: the colour diagnosis: which usual mistake reproduces the wrong colours?
+  // Stage 12: the colour diagnosis: which usual mistake reproduces the wrong colours?
   void diagnose_colours() {
     if (colour_pixels_.empty()) return;
     std::vector<Hypothesis> hyp;
@@ -562,7 +597,7 @@ class DiffRun {
                    max_diff(report_.reference(px(i), py(i)), image_(px(i), py(i))));
   }
 
-  // Stage 12: the faces most affected, and the missing ones.
+  // Stage 13: the faces most affected, and the missing ones.
   void list_faces() {
     for (const auto& [face, cats] : damage_) {
       FaceDamage d{face, 0, ""};
@@ -584,7 +619,7 @@ class DiffRun {
       }
   }
 
-  // Stage 13: a few pixels of each category, explained.
+  // Stage 14: a few pixels of each category, explained.
   void explain_examples() {
     for (const char* cat : kCategories)
       for (std::size_t i : first_[cat]) {
@@ -621,7 +656,7 @@ class DiffRun {
   std::vector<std::size_t> differing_;
   std::vector<std::size_t> start_, pixels_;  // each face's reference pixels
   std::vector<std::int64_t> own_, ref_pixels_, shown_;
-  std::vector<char> missing_, shifted_;
+  std::vector<char> missing_, shifted_, widened_;
   std::map<std::string, std::int64_t> tags_missing_, tags_extra_;
   std::map<std::pair<int, int>, double> shares_;
   std::map<int, DepthPlane> planes_;

@@ -27,6 +27,7 @@ Command add_check_command(CLI::App& app);
 Command add_why_command(CLI::App& app);
 Command add_diff_command(CLI::App& app);
 Command add_explore_command(CLI::App& app);  // the web build's explorer page (web/)
+Command add_grade_command(CLI::App& app);
 
 // Thrown by a command that ran to the end but must exit with a status of its own (diff: the images
 // differ); main() returns `status` without printing anything more.

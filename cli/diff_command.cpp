@@ -79,8 +79,9 @@ Command add_diff_command(CLI::App& app) {
       "Compares IMAGE, what another renderer produced for SCENE, with the reference\n"
       "render, and says where and why they differ: global mistakes first (canvas\n"
       "size, background colour, transposed, flipped, BGR, [0, 255] floats), each\n"
-      "undone before the pixels are classified (boundary, near_boundary, shifted,\n"
-      "order, order_tie, missing_face, degenerate_drawn, colour, background, other;\n"
+      "undone before the pixels are classified (boundary, near_boundary, widened,\n"
+      "shifted, order, order_tie, missing_face, degenerate_drawn, colour,\n"
+      "background, other;\n"
       "see docs/grading.md). Prints a Markdown summary; -o DIR also writes\n"
       "DIR/diff.png and DIR/report.json.");
   cmd->add_option("SCENE", args->scene,

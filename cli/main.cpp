@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
   constexpr AddCommand commands[]{add_demo_command,   add_render_command,  add_trace_command,
                                   add_replay_command, add_explain_command, add_stress_command,
                                   add_bench_command,  add_check_command,   add_why_command,
-                                  add_diff_command,   add_step_command,    add_explore_command};
+                                  add_diff_command,   add_step_command,    add_explore_command,
+                                  add_grade_command};
   return run_app(argc, argv, commands);
 #else
   // The demo's build (SCANTRACE_ALL_COMMANDS off: scripts/build.sh --demo) leaves out the
@@ -19,7 +20,7 @@ int main(int argc, char** argv) {
   constexpr AddCommand commands[]{add_demo_command,    add_render_command, add_trace_command,
                                   add_replay_command,  add_explain_command, add_check_command,
                                   add_step_command};
-  constexpr const char* left_out[]{"stress", "bench", "why", "diff", "explore"};
+  constexpr const char* left_out[]{"stress", "bench", "why", "diff", "explore", "grade"};
   return run_app(argc, argv, commands, left_out);
 #endif
 }

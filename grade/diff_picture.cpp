@@ -7,6 +7,7 @@ namespace scantrace::grade {
 const std::array<std::array<std::uint8_t, 3>, kCategories.size()> kCategoryColours{{
     {230, 0, 0},      // boundary: red
     {255, 140, 0},    // near_boundary: orange
+    {120, 200, 40},   // widened: lime
     {200, 200, 0},    // shifted: olive yellow
     {200, 0, 200},    // order: magenta
     {230, 160, 230},  // order_tie: pale magenta

@@ -28,8 +28,8 @@
 namespace scantrace::grade {
 
 // The per-pixel categories, in the order they are tried (the names of the JSON report).
-inline constexpr std::array<const char*, 10> kCategories{
-    "boundary",     "near_boundary",    "shifted", "order",      "order_tie",
+inline constexpr std::array<const char*, 11> kCategories{
+    "boundary",  "near_boundary", "widened",          "shifted", "order",      "order_tie",
     "missing_face", "degenerate_drawn", "colour",  "background", "other"};
 // Index of a category name in kCategories; -1 when unknown.
 int category_index(const std::string& name);

@@ -44,6 +44,8 @@ packages+=(python3-hypothesis python3-nbclient python3-ipykernel python3-nbconve
 # The WebAssembly build and its tests (web/, docs/web.md): emscripten compiles, Node runs the
 # module's tests (node-acorn: emscripten's JavaScript optimizer).
 packages+=(emscripten nodejs node-acorn)
+# The grader (python -m scantrace.grade) runs each student's code in a bubblewrap sandbox.
+packages+=(bubblewrap)
 
 if [ "${1:-}" = "--demo" ]; then
   packages=("${demo_packages[@]}")

@@ -91,7 +91,7 @@ class DiffReport:
 
     ``agrees``: the command's exit status 0 (no differing pixel, no global mistake).
     ``differing_pixels``, ``compared_pixels``, ``tolerance``; ``categories``: the count of
-    differing pixels per category (boundary, near_boundary, shifted, order, order_tie,
+    differing pixels per category (boundary, near_boundary, widened, shifted, order, order_tie,
     missing_face, degenerate_drawn, colour, background, other; docs/grading.md);
     ``global_mistakes``: [{'kind', 'text', 'undone'}] (canvas size, background, transposed,
     flipped, BGR, [0, 255] floats); ``faces``: the most affected faces [{'face', 'pixels',

@@ -90,6 +90,10 @@ RUN = {
         "exit": 3, "files": ["graded/diff.png", "graded/report.json"], "course": True},
     "scantrace why ../shared/data/hw1_2024.json 279 23 --shading flat": {
         "out": ["final colour (0.0706, 0.0667, 0.0497), written by face 415"], "course": True},
+    "build/cli/scantrace grade docs/grading/student_hw1.py -o graded-hw1 --hidden-seed 2024": {
+        "files": ["graded-hw1/results.json", "graded-hw1/report.md", "graded-hw1/report.html",
+                  "graded-hw1/causes/right_end_excluded.png"],
+        "out": ["right_end_excluded: ", "order_unstable_on_ties: "]},
 }
 
 NOT_RUN = {
@@ -116,6 +120,8 @@ NOT_RUN = {
     "build/cli/scantrace step scantrace-demo/triangle.jsonl": "a window: tests/interactive",
     'build/cli/scantrace step --triangle "20,20 250,80 300,400"': "a window: tests/interactive",
     "echo $?": "prints the previous command's status, which RUN checks",
+    "scantrace grade subs/* -o class-out --jobs 2 --hidden-seed 2024": "needs a folder of "
+        "submissions; python/tests/grade/test_grade_class.py grades a generated class of 30",
 }
 
 PROGRAMS = ("build/cli/scantrace", "scantrace", "bash", "cmake", "python3", "PYTHONPATH=",

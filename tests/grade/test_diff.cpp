@@ -135,6 +135,31 @@ TEST_CASE("a span one pixel too wide is near_boundary, extra, right of the span"
   CHECK(mentions(r.patterns, "right of the span"));
 }
 
+TEST_CASE("spans one pixel too wide at both ends are widened, a face moved one pixel shifted",
+          "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
+  const RgbImage wide = render_wrong(s, Shading::flat, Mistake::span_wide_both);
+  const RgbImage moved = render_wrong(s, Shading::flat, Mistake::shift_right);
+  const long long n_wide = count_differing(good, wide), n_moved = count_differing(good, moved);
+  REQUIRE(n_wide > 50);
+  REQUIRE(n_moved > 50);
+  const DiffReport w = diff(s, opts(Shading::flat), as_8bit(wide));
+  INFO("widened image: " << w.to_json()["categories"].dump());
+  const DiffReport m = diff(s, opts(Shading::flat), as_8bit(moved));
+  INFO("moved image: " << m.to_json()["categories"].dump());
+  CHECK(w.differing_pixels == n_wide);
+  CHECK(m.differing_pixels == n_moved);
+  // Each mistake in its own category: most of the widened image's pixels are `widened` (the rest
+  // mostly on the tiles' outlines, `boundary`; measured: 909 widened, 463 boundary, 60 shifted of
+  // 1432), few `shifted`; the moved image is never `widened`.
+  CHECK(w.categories.at("widened") + w.categories.at("boundary") >= n_wide * 9 / 10);
+  CHECK(w.categories.at("widened") > w.categories.at("boundary"));
+  CHECK(w.categories.at("shifted") <= n_wide / 20);
+  CHECK(m.categories.at("widened") == 0);
+  CHECK(m.categories.at("shifted") >= n_moved / 2);
+}
+
 TEST_CASE("nearest-first painting is order", "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);

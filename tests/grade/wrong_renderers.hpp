@@ -27,6 +27,8 @@ enum class Mistake {
   closed_rule,        // both span ends inclusive, the last row too
   drop_last_row,      // range(ymin, ymax): the last row of every face is missing
   span_one_too_wide,  // one extra pixel right of every span
+  span_wide_both,     // one extra pixel left of every span and one right of it
+  shift_right,        // every face drawn one pixel to the right of its place
   nearest_first,      // painter's order reversed
   skip_horizontal,    // faces with a horizontal edge are not drawn
   paint_degenerate,   // zero-area faces drawn as the pixels their segment crosses
@@ -106,24 +108,31 @@ inline RgbImage render_wrong(const Scene& s, Shading shading, Mistake m, int bit
         if (poly.covers(x, y, FillRule::top_left)) last_row = y;
     for (long long y = y0; y <= y1; ++y) {
       if (m == Mistake::drop_last_row && y == last_row) continue;
-      long long row_last = -1;
+      long long row_first = -1, row_last = -1;
       for (long long x = x0; x <= x1; ++x) {
         if (!poly.covers(x, y, rule)) continue;
+        if (row_first < 0) row_first = x;
         row_last = x;
         const auto w = poly.barycentric(x, y);
         Color col = shading == Shading::flat || m == Mistake::flat_first_vertex
                         ? (m == Mistake::flat_first_vertex ? c[0] : reference::mean_color(c))
                         : c[0] * w[0] + c[1] * w[1] + c[2] * w[2];
-        img(static_cast<int>(x), static_cast<int>(y)) = Rgb32f::from(col);
-        mark(x, y, f);
+        const long long to = m == Mistake::shift_right ? x + 1 : x;
+        if (to >= s.width) continue;
+        img(static_cast<int>(to), static_cast<int>(y)) = Rgb32f::from(col);
+        mark(to, y, f);
       }
-      if (m == Mistake::span_one_too_wide && row_last >= 0 && row_last + 1 < s.width) {
-        const auto w = poly.barycentric(row_last + 1, y);
+      const auto extra = [&](long long x) {
+        if (x < 0 || x >= s.width) return;
+        const auto w = poly.barycentric(x, y);
         const Color col = shading == Shading::flat ? reference::mean_color(c)
                                                    : c[0] * w[0] + c[1] * w[1] + c[2] * w[2];
-        img(static_cast<int>(row_last + 1), static_cast<int>(y)) = Rgb32f::from(col);
-        mark(row_last + 1, y, f);
-      }
+        img(static_cast<int>(x), static_cast<int>(y)) = Rgb32f::from(col);
+        mark(x, y, f);
+      };
+      if ((m == Mistake::span_one_too_wide || m == Mistake::span_wide_both) && row_last >= 0)
+        extra(row_last + 1);
+      if (m == Mistake::span_wide_both && row_first >= 0) extra(row_first - 1);
     }
   }
   return img;

@@ -1,0 +1,104 @@
+"""python3 -m scantrace.grade: the command line of the grader (also `scantrace grade`)."""
+
+import argparse
+import math
+import pathlib
+import sys
+
+from . import classmode, rubric as rubric_module
+from .grader import Options, course_arrays, grade
+from .sandbox import Limits, sandbox_problem
+
+DESCRIPTION = """\
+Grades students' triangle-filling code (vector_interp, f_shading, g_shading, render_img): runs
+their functions in a sandbox (bubblewrap: no network, read-only system, private /tmp, limits) on
+probe triangles, vector_interp cases, hidden scenes and the course scene, and names each mistake
+as a cause with its fix and evidence.
+
+One SUBMISSION writes DIR/results.json (Gradescope's format), DIR/report.md and DIR/report.html;
+several write DIR/NAME/... for each and DIR/class.csv, DIR/class.html. A SUBMISSION is a
+directory of .py files, one .py file or a .zip.
+
+Exit status: 0 every submission graded (whatever its score), 1 a submission could not be graded
+at all (or the sandbox cannot run here), 2 usage."""
+
+
+def _finite(text):
+    """A float option's value: a finite number (argparse's float() takes nan and inf)."""
+    value = float(text)
+    if not math.isfinite(value) or value <= 0:
+        raise argparse.ArgumentTypeError(f"expected a finite number > 0, got {text!r}")
+    return value
+
+
+def _parser():
+    p = argparse.ArgumentParser(prog="scantrace grade", description=DESCRIPTION,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("submissions", nargs="+", metavar="SUBMISSION")
+    p.add_argument("-o", "--output", default="grade-out", metavar="DIR",
+                   help="where the reports go (default: grade-out)")
+    p.add_argument("--jobs", type=int, default=1, metavar="INT",
+                   help="submissions graded at once, each in its own sandbox (default 1)")
+    p.add_argument("--rubric", metavar="R.toml",
+                   help="points per test and cause (default: the documented default rubric)")
+    p.add_argument("--hidden-seed", type=int, metavar="INT",
+                   help="generate the hidden scenes from this seed (never shown to the code)")
+    p.add_argument("--scene", metavar="PATH",
+                   help="the course scene (hw1.npy, a scene .json or .mat) for the course-scene "
+                        "tests")
+    p.add_argument("--module", metavar="NAME",
+                   help="take every function from this module of the submission")
+    p.add_argument("--no-sandbox", action="store_true",
+                   help="run student code without bubblewrap (only for code you trust)")
+    p.add_argument("--call-seconds", type=_finite, default=10.0, metavar="FLOAT",
+                   help="wall-time limit of one call (default 10; a scene gets 6 times this)")
+    p.add_argument("--memory-mb", type=int, default=2048, metavar="INT",
+                   help="address-space limit of the student's process (default 2048)")
+    p.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    return p
+
+
+def main(argv=None):
+    args = _parser().parse_args(argv)
+    if args.jobs < 1:
+        _parser().error("--jobs: expected a number >= 1")
+    if args.memory_mb < 64:
+        _parser().error("--memory-mb: expected a number >= 64")
+    try:
+        rubric = rubric_module.load(args.rubric)
+    except rubric_module.RubricError as e:
+        print(f"scantrace grade: {e}", file=sys.stderr)
+        return 1
+    if not args.no_sandbox:
+        problem = sandbox_problem()
+        if problem:
+            print(f"scantrace grade: refusing to run student code without a sandbox: {problem}. "
+                  "Install bubblewrap, allow user namespaces, or pass --no-sandbox for code "
+                  "you trust.", file=sys.stderr)
+            return 1
+    scene = None
+    if args.scene:
+        import scantrace
+        try:
+            scene = course_arrays(scantrace.load_scene(args.scene))
+        except (ValueError, OSError) as e:
+            print(f"scantrace grade: {e}", file=sys.stderr)
+            return 1
+    options = Options(rubric, scene, args.hidden_seed, args.module, not args.no_sandbox,
+                      Limits(call_seconds=args.call_seconds, memory_mb=args.memory_mb))
+    out = pathlib.Path(args.output)
+    if len(args.submissions) == 1:
+        graded = grade(args.submissions[0], out, options)
+        if graded.error:
+            print(f"scantrace grade: {graded.error}", file=sys.stderr)
+            return 1
+        if not args.quiet:
+            print(f"{graded.name}: {graded.score:g} / {graded.max_score:g}"
+                  + "".join(f"\n  {c.id}: {c.sentence}" for c in graded.causes)
+                  + f"\nreport: {out / 'report.md'}")
+        return 0
+    return classmode.run(args.submissions, out, options, args.jobs, progress=not args.quiet)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

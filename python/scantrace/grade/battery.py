@@ -1,0 +1,336 @@
+"""The tests a submission is graded on: vector_interp cases, the probes through f_shading and
+g_shading, hidden scenes from the instructor's seed and the course scene, through render_img and
+face by face. Builds the calls, runs them in one sandbox session, scores each test and gathers the
+causes.
+"""
+
+import dataclasses
+
+import numpy as np
+
+import scantrace
+
+from . import diagnose, fill_models, hidden
+from .probes import COLOURS, GOURAUD, PROBES
+
+
+@dataclasses.dataclass
+class TestResult:
+    name: str
+    max_score: float
+    score: float = 0.0
+    output: str = ""
+    visibility: str = "visible"
+    verdict: str = ""       # the sandbox's verdict when the code did not run to the end
+
+    @property
+    def status(self):
+        return "passed" if self.score >= self.max_score else "failed"
+
+
+# The course's vector_interp(p1, p2, V1, V2, coord, dim): (arguments, accepted answers).
+VECTOR_CASES = (
+    ("colour at the middle along x", ([0, 0], [10, 0], [1, 0, 0], [0, 0, 1], 5, 1), None),
+    ("a quarter along y", ([2, 3], [8, 11], [0.0, 0.2, 1.0], [1.0, 0.6, 0.0], 5, 2), None),
+    ("p1 after p2", ([10, 4], [2, 4], [0.5, 0.5, 0.5], [0.0, 1.0, 0.25], 4, 1), None),
+    ("a scalar value", ([1, 1], [1, 9], 2.0, 10.0, 3, 2), None),
+    ("at an endpoint", ([3, 7], [9, 1], [0.1, 0.2, 0.3], [0.9, 0.8, 0.7], 9, 1), None),
+)
+# Degenerate: equal coordinates along dim (V1, V2 or their midpoint accepted), a coordinate
+# outside the segment (the line extended, or clamped to the nearer end).
+VECTOR_DEGENERATE = (
+    ("equal x with dim 1", ([4, 2], [4, 9], [1, 0, 0], [0, 0, 1], 4, 1), "equal"),
+    ("equal points with dim 2", ([5, 5], [5, 5], [0.2, 0.4, 0.6], [0.6, 0.4, 0.2], 5, 2),
+     "equal"),
+    ("coord outside the segment", ([0, 0], [10, 0], [0, 0, 0], [1, 1, 1], 12, 1), "outside"),
+)
+
+
+def _accepted(args, kind):
+    p1, p2, v1, v2, coord, dim = args
+    v1, v2 = np.asarray(v1, float), np.asarray(v2, float)
+    if kind == "equal":
+        return [v1, v2, (v1 + v2) / 2]
+    extended = scantrace.vector_interp(p1, p2, v1, v2, coord, dim)
+    return [np.asarray(extended, float), v2 if abs(coord - p2[dim - 1]) < abs(coord - p1[dim - 1])
+            else v1]
+
+
+def canvas(value, shape):
+    """A student's canvas as float RGB in [0, 1] of `shape` (values 0-255 are scaled), or an
+    error message."""
+    if value.ndim != 3 or value.shape[2] != 3:
+        return None, f"returned an array of shape {value.shape}, expected {shape}"
+    if value.shape != tuple(shape) and value.shape[:2] != tuple(shape)[1::-1]:
+        return None, f"returned an array of shape {value.shape}, expected {shape}"
+    if not np.isfinite(value).all():
+        return None, "returned NaN or infinite values"
+    if value.max() > 1.5:
+        value = value / 255.0
+    return value, ""
+
+
+class Battery:
+    def __init__(self, session, functions, rubric, scene=None, hidden_seed=None):
+        self.session, self.functions, self.rubric = session, functions, rubric
+        self.scene, self.hidden_seed = scene, hidden_seed
+        self.calls, self.tests, self.causes = [], [], []
+
+    # ---- calls -------------------------------------------------------------------------------
+    def _call(self, call_id, func, args, **extra):
+        if func not in self.functions:
+            return None
+        self.calls.append({"id": call_id, "kind": "call", "func": func, "args": args, **extra})
+        return call_id
+
+    def _probe_call(self, func, probe):
+        args = [0, {"npy": self.session.input(probe.array)},
+                {"npy": self.session.input(COLOURS)}]
+        return self._call(f"{func}_{probe.name}", func, args, canvas=0,
+                          canvas_shape=[*probe.size, 3])
+
+    def _scene_inputs(self, scene):
+        s = self.session
+        return {"faces": s.input(scene["faces"]), "vertices": s.input(scene["vertices"]),
+                "vcolors": s.input(scene["vcolors"]), "depth": s.input(scene["depth"])}
+
+    def _scene_calls(self, label, scene, with_faces):
+        names = self._scene_inputs(scene)
+        order = np.argsort(-_mean_depth(scene), kind="stable")
+        order_name = self.session.input(order.astype(np.int64))
+        for shading in ("f", "g"):
+            self._call(f"{label}_render_{shading}", "render_img",
+                       [{"npy": names[k]} for k in ("faces", "vertices", "vcolors", "depth")]
+                       + [shading], timeout=self.session.limits.call_seconds * 6)
+            func = "f_shading" if shading == "f" else "g_shading"
+            if with_faces and func in self.functions:
+                self.calls.append({"id": f"{label}_faces_{shading}", "kind": "faces",
+                                   "func": func, "canvas_shape": [512, 512, 3],
+                                   "vertices": names["vertices"], "faces": names["faces"],
+                                   "vcolors": names["vcolors"], "order": order_name,
+                                   "timeout": self.session.limits.call_seconds * 6})
+
+    def build(self):
+        for i, (_, args, _) in enumerate(VECTOR_CASES + VECTOR_DEGENERATE):
+            self._call(f"vi_{i}", "vector_interp", list(args))
+        for probe in PROBES:
+            self._probe_call("f_shading", probe)
+        for probe in GOURAUD:
+            self._probe_call("g_shading", probe)
+        self.hidden = hidden.scenes(self.hidden_seed, self.rubric.hidden_scenes) \
+            if self.hidden_seed is not None else []
+        for k, scene in enumerate(self.hidden):
+            self._scene_calls(f"hidden{k + 1}", scene, with_faces=False)
+        if self.scene is not None:
+            self._scene_calls("course", self.scene, with_faces=True)
+
+    # ---- scoring -----------------------------------------------------------------------------
+    def grade(self, results):
+        self.results = results
+        self._vector_interp()
+        self._probes_flat()
+        self._probes_gouraud()
+        for k, scene in enumerate(self.hidden):
+            for shading in ("f", "g"):
+                self._scene_test(f"hidden{k + 1}_render_{shading}", scene, shading,
+                                 f"Hidden scene {k + 1}: {_SHADING[shading]} (render_img)",
+                                 "hidden_scene", "after_published", painter=True)
+        if self.scene is not None:
+            for shading in ("f", "g"):
+                self._scene_test(f"course_render_{shading}", self.scene, shading,
+                                 f"Course scene: {_SHADING[shading]} (render_img)",
+                                 "course_scene", "visible", painter=True)
+                self._scene_test(f"course_faces_{shading}", self.scene, shading,
+                                 f"Course scene face by face: {_SHADING[shading]} "
+                                 f"({'f' if shading == 'f' else 'g'}_shading in the painter's "
+                                 "order)", "course_faces", "visible", painter=False)
+        return self.tests
+
+    def _missing(self, name, key, func):
+        self.tests.append(TestResult(name, self.rubric.points(key), 0.0,
+                                     f"No function `{func}` was found in the submission.",
+                                     verdict="missing"))
+
+    def _failed_call(self, result):
+        text = f"**{result.status}**: {result.detail}"
+        return text if len(text) < 3000 else text[:3000] + " …"
+
+    def _add(self, name, key, fraction, lines, visibility="visible", verdict=""):
+        points = self.rubric.points(key)
+        self.tests.append(TestResult(name, points, round(points * fraction, 2),
+                                     "\n".join(lines), visibility, verdict))
+
+    def _vector_interp(self):
+        if "vector_interp" not in self.functions:
+            self._missing("vector_interp: ordinary cases", "vector_interp", "vector_interp")
+            self._missing("vector_interp: degenerate cases", "vector_interp_degenerate",
+                          "vector_interp")
+            return
+        ok, lines, verdict = 0, [], ""
+        for i, (text, args, _) in enumerate(VECTOR_CASES):
+            r = self.results[f"vi_{i}"]
+            expected = np.asarray(scantrace.vector_interp(*args), float)
+            if r.status != "ok":
+                lines.append(f"- {text} `{args}`: {self._failed_call(r)}")
+                verdict = verdict or r.status
+            elif r.value.shape == expected.shape and np.allclose(r.value, expected, atol=1e-6):
+                ok += 1
+            else:
+                lines.append(f"- {text} `{args}`: expected {np.round(expected, 4).tolist()}, "
+                             f"yours {np.round(r.value, 4).tolist()}")
+        self._add("vector_interp: ordinary cases", "vector_interp", ok / len(VECTOR_CASES),
+                  [f"{ok} of {len(VECTOR_CASES)} cases right."] + lines, verdict=verdict)
+        ok, lines, failures, verdict = 0, [], [], ""
+        for j, (text, args, kind) in enumerate(VECTOR_DEGENERATE):
+            r = self.results[f"vi_{len(VECTOR_CASES) + j}"]
+            accepted = _accepted(args, kind)
+            if r.status == "ok" and any(r.value.shape == a.shape and np.allclose(r.value, a)
+                                        for a in accepted):
+                ok += 1
+                continue
+            what = (self._failed_call(r) if r.status != "ok" else
+                    f"returned {np.round(r.value, 4).tolist()}")
+            lines.append(f"- {text} `{args}`: {what}")
+            if r.status not in ("ok", "error"):
+                verdict = verdict or r.status   # a sandbox verdict, not a wrong formula
+            elif kind == "equal":
+                failures.append((f"`vector_interp{tuple(args)}`",
+                                 r.detail.strip().splitlines()[-1] if r.status != "ok"
+                                 and r.detail.strip() else what))
+        self._add("vector_interp: degenerate cases", "vector_interp_degenerate",
+                  ok / len(VECTOR_DEGENERATE),
+                  [f"{ok} of {len(VECTOR_DEGENERATE)} cases right."] + lines, verdict=verdict)
+        self.causes += diagnose.diagnose_vector_interp(failures)
+
+    def _probe_images(self, func, probes):
+        images, lines, verdict = [], [], ""
+        for probe in probes:
+            r = self.results[f"{func}_{probe.name}"]
+            if r.status != "ok":
+                lines.append(f"- probe `{probe.name}`: {self._failed_call(r)}")
+                verdict = verdict or r.status
+                continue
+            img, error = canvas(r.value, (*probe.size, 3))
+            if img is None:
+                lines.append(f"- probe `{probe.name}`: {error}")
+                continue
+            if img.shape != (*probe.size, 3):
+                img = img.transpose(1, 0, 2)
+            images.append((probe, img))
+        return self._untransposed(images), lines, verdict
+
+    def _untransposed(self, images):
+        """Probe images written as img[x][y]: undone (the rest is graded) and named once."""
+        pairs = [(p, img, diagnose.covered(img), fill_models.correct(p.array, p.size))
+                 for p, img in images]
+        straight = sum(int((got != want).sum()) for _, _, got, want in pairs)
+        flipped = sum(int((got.T != want).sum()) for _, _, got, want in pairs)
+        if straight == 0 or flipped > straight * 0.5:
+            return images
+        probe, _, got, want = max(pairs, key=lambda q: int((q[2] != q[3]).sum()))
+        self._add_causes([diagnose.Cause(
+            "transposed", 1 - flipped / straight,
+            f"probe `{probe.name}`: {int((got != want).sum())} pixels differ from the expected "
+            f"fill, {int((got.T != want).sum())} once your image is read as img[x][y]",
+            picture_pixels=diagnose.fill_picture(got, want))], "")
+        return [(p, np.ascontiguousarray(img.transpose(1, 0, 2))) for p, img in images]
+
+    def _probes_flat(self):
+        name = "Probes: flat fill (f_shading on single triangles)"
+        if "f_shading" not in self.functions:
+            return self._missing(name, "probes_flat", "f_shading")
+        images, lines, verdict = self._probe_images("f_shading", PROBES)
+        mean = COLOURS.mean(axis=0)
+        ok = 0
+        for probe, img in images:
+            expected = fill_models.correct(probe.array, probe.size)
+            got = diagnose.covered(img)
+            colour_ok = not got.any() or np.abs(img[got] - mean).max() <= 2 / 255
+            if (got == expected).all() and colour_ok:
+                ok += 1
+            else:
+                n = int((got != expected).sum())
+                lines.append(f"- probe `{probe.name}` ({probe.what}): {n} pixels differ"
+                             + ("" if colour_ok else ", wrong colour"))
+        self.causes += diagnose.diagnose_fill(
+            [(p, diagnose.covered(img)) for p, img in images])
+        self.causes += diagnose.diagnose_flat(images, COLOURS)
+        self._add(name, "probes_flat", ok / len(PROBES),
+                  [f"{ok} of {len(PROBES)} probes filled exactly."] + lines, verdict=verdict)
+
+    def _probes_gouraud(self):
+        name = "Probes: Gouraud fill (g_shading on single triangles)"
+        if "g_shading" not in self.functions:
+            return self._missing(name, "probes_gouraud", "g_shading")
+        images, lines, verdict = self._probe_images("g_shading", GOURAUD)
+        ok = 0
+        for probe, img in images:
+            ref = scantrace.g_shading(np.ones((*probe.size, 3)), probe.array, COLOURS)
+            expected, got = diagnose.covered(ref), diagnose.covered(img)
+            both = expected & got
+            error = float(np.abs(img[both] - ref[both]).max()) if both.any() else 0.0
+            if (expected == got).all() and error <= 0.02:
+                ok += 1
+            else:
+                lines.append(f"- probe `{probe.name}` ({probe.what}): "
+                             f"{int((expected != got).sum())} pixels filled differently, "
+                             f"largest colour error {error:.3f}")
+        self.causes += diagnose.diagnose_gouraud(images, COLOURS, scantrace.g_shading)
+        self._add(name, "probes_gouraud", ok / len(GOURAUD),
+                  [f"{ok} of {len(GOURAUD)} probes filled and coloured right."] + lines,
+                  verdict=verdict)
+
+    def _scene_test(self, call_id, scene, shading, name, key, visibility, painter):
+        func = "render_img" if painter else ("f_shading" if shading == "f" else "g_shading")
+        if func not in self.functions:
+            return self._missing(name, key, func)
+        r = self.results[call_id]
+        if r.status != "ok":
+            return self._add(name, key, 0.0, [self._failed_call(r)], visibility, r.status)
+        img, error = canvas(r.value, (512, 512, 3))
+        if img is None:
+            return self._add(name, key, 0.0, [f"`{func}` {error}."], visibility)
+        reference = scantrace.render_img(scene["faces"], scene["vertices"], scene["vcolors"],
+                                         scene["depth"], shading)
+        fixed, causes = img, []
+        if painter:
+            uncovered = _uncovered(scene, shading, reference)
+            fixed, causes = diagnose.diagnose_image(img, reference, uncovered,
+                                                    _painter_alternatives(scene, shading))
+            self._add_causes(causes, f"{name}: ")
+        mismatch = diagnose.image_mismatch(fixed, reference)
+        fraction = min(max((1 - mismatch - 0.8) / 0.2, 0.0), 1.0)
+        lines = [f"{mismatch:.2%} of the pixels differ from the reference"
+                 + (" (after undoing " + ", ".join(c.id for c in causes if c.id in
+                                                  ("transposed", "bgr", "background")) + ")"
+                    if any(c.id in ("transposed", "bgr", "background") for c in causes) else "")
+                 + "."]
+        self._add(name, key, fraction if mismatch > 0 else 1.0, lines, visibility)
+
+    def _add_causes(self, causes, prefix):
+        for c in causes:
+            if not any(k.id == c.id for k in self.causes):
+                c.evidence = prefix + c.evidence
+                self.causes.append(c)
+
+
+_SHADING = {"f": "flat", "g": "Gouraud"}
+
+
+def _mean_depth(scene):
+    return np.asarray(scene["depth"], np.float64).reshape(-1)[scene["faces"]].mean(axis=1)
+
+
+def _uncovered(scene, shading, white):
+    black = scantrace.render(scene["vertices"], scene["faces"], scene["vcolors"], scene["depth"],
+                             shading=shading, background=(0.0, 0.0, 0.0))
+    return (white == 1.0).all(axis=2) & (black == 0.0).all(axis=2)
+
+
+def _painter_alternatives(scene, shading):
+    """The scene painted nearest first (a reversed sort), and with ties of mean depth painted in
+    reverse face order (an unstable or reversed argsort)."""
+    f, v, c, d = scene["faces"], scene["vertices"], scene["vcolors"], scene["depth"]
+    reversed_order = scantrace.render_img(f, v, c, -np.asarray(d, np.float64), shading)
+    ties_reversed = scantrace.render_img(f[::-1].copy(), v, c, d, shading)
+    return {"order_reversed": reversed_order, "order_unstable_on_ties": ties_reversed}

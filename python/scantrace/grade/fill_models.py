@@ -1,0 +1,211 @@
+"""The pixels a triangle's fill writes under the correct rule and under each mistaken rule a
+student may have coded: one *fill model* per geometric cause. Written here in exact arithmetic
+(fractions), independently of the C++ fill; the correct model is checked against the C++ fill in
+the tests.
+
+A model maps a triangle (3 x 2 vertices [x, y]) and a canvas (height, width) to a boolean mask.
+The correct rule is the course's half-open scanline rule (docs/design.md §3): rows
+ceil(y_min) … ceil(y_max) − 1, and on each row the columns ceil(x_L) … ceil(x_R) − 1.
+"""
+
+import math
+from fractions import Fraction
+
+import numpy as np
+
+
+def _edges(tri):
+    """The non-horizontal edges, each (top, bottom) with top[1] < bottom[1]."""
+    edges = []
+    for a, b in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])):
+        if a[1] == b[1]:
+            continue
+        edges.append((a, b) if a[1] < b[1] else (b, a))
+    return edges
+
+
+def _x_at(edge, y):
+    (x0, y0), (x1, y1) = edge
+    return x0 + (y - y0) * (x1 - x0) / (y1 - y0)
+
+
+def _exact(tri):
+    return [(Fraction(float(x)), Fraction(float(y))) for x, y in tri]
+
+
+def _is_degenerate(tri):
+    (x0, y0), (x1, y1), (x2, y2) = tri
+    return (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0) == 0
+
+
+def _active(edges, y):
+    """The two edges crossing row y (y_top <= y < y_bottom, the half-open rule of edges)."""
+    return [e for e in edges if e[0][1] <= y < e[1][1]]
+
+
+def _span_ends(tri, y, at=None):
+    """(x_L, x_R) where row y crosses the triangle (exact), or None. `at(edge, y)` gives the row
+    at which each edge is evaluated (edge_lag evaluates one row late)."""
+    active = _active(_edges(tri), y)
+    if len(active) < 2:
+        return None
+    xs = sorted(_x_at(e, at(e, y) if at else y) for e in active[:2])
+    return xs[0], xs[1]
+
+
+def _rows(tri):
+    ys = [v[1] for v in tri]
+    return math.ceil(min(ys)), math.ceil(max(ys))   # half-open [first, end)
+
+
+def _mask(shape, spans):
+    mask = np.zeros(shape, dtype=bool)
+    h, w = shape
+    for y, (a, b) in spans.items():
+        if 0 <= y < h:
+            mask[y, max(a, 0):max(min(b, w), 0)] = True
+    return mask
+
+
+def _floor_half_up(x):
+    return math.floor(x + Fraction(1, 2))
+
+
+def _spans(tri, ends, rows=None, at=None):
+    """Row -> [begin, end) columns, with `ends(x_L, x_R)` the model's integer span ends."""
+    tri = _exact(tri)
+    if _is_degenerate(tri):
+        return {}
+    first, end = rows(tri) if rows else _rows(tri)
+    spans = {}
+    for y in range(first, end):
+        crossing = _span_ends(tri, Fraction(y), at) or _closed_crossing(tri, Fraction(y))
+        if crossing is not None:
+            spans[y] = ends(*crossing)
+    return spans
+
+
+def _closed_crossing(tri, y):
+    """The crossing of row y including a bottom vertex or horizontal edge (the closed rule's
+    extra row), where the half-open edge test finds fewer than two edges."""
+    xs = []
+    for a, b in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])):
+        lo, hi = sorted((a[1], b[1]))
+        if lo <= y <= hi:
+            xs += [a[0], b[0]] if a[1] == b[1] else [_x_at((a, b), y)]
+    return (min(xs), max(xs)) if xs else None
+
+
+def correct(tri, shape):
+    return _mask(shape, _spans(tri, lambda l, r: (math.ceil(l), math.ceil(r))))
+
+
+def span_end_rounding(which):
+    """Span ends rounded to the nearest integer ('nearest': halves up, as int(x + 0.5); 'even':
+    Python's round()), at the 'left', 'right' or 'both' ends, or truncated ('floor', as int())
+    instead of ceil."""
+    def model(tri, shape):
+        def ends(l, r):
+            rnd = {"nearest": _floor_half_up, "even": round, "floor": math.floor}[which[1]]
+            return (rnd(l) if which[0] in ("left", "both") else math.ceil(l),
+                    rnd(r) if which[0] in ("right", "both") else math.ceil(r))
+        return _mask(shape, _spans(tri, ends))
+    return model
+
+
+def right_end_excluded(tri, shape):
+    # range(ceil(x_L), floor(x_R)): the last pixel inside the triangle is left out.
+    return _mask(shape, _spans(tri, lambda l, r: (math.ceil(l), math.floor(r))))
+
+
+def _closed_rows(tri):
+    ys = [v[1] for v in tri]
+    return math.ceil(min(ys)), math.floor(max(ys)) + 1
+
+
+def closed_rule(tri, shape):
+    # Every pixel whose centre is inside or on any edge: x_L <= x <= x_R, y_min <= y <= y_max.
+    return _mask(shape, _spans(tri, lambda l, r: (math.ceil(l), math.floor(r) + 1),
+                               rows=_closed_rows))
+
+
+def span_too_wide(tri, shape):
+    # The pixels a line drawing of the two edges lights, used as span ends: floor(x_L) … ceil(x_R).
+    return _mask(shape, _spans(tri, lambda l, r: (math.floor(l), math.ceil(r) + 1)))
+
+
+def top_row_dropped(tri, shape):
+    return _mask(shape, _spans(tri, lambda l, r: (math.ceil(l), math.ceil(r)),
+                               rows=lambda t: (_rows(t)[0] + 1, _rows(t)[1])))
+
+
+def bottom_row_dropped(tri, shape):
+    return _mask(shape, _spans(tri, lambda l, r: (math.ceil(l), math.ceil(r)),
+                               rows=lambda t: (_rows(t)[0], _rows(t)[1] - 1)))
+
+
+def edge_lag(tri, shape):
+    # x of each edge updated after the row is drawn: row y uses the crossing of row y − 1 (the
+    # edge's own first row uses its start).
+    def at(edge, y):
+        return max(y - 1, math.ceil(edge[0][1]))
+    return _mask(shape, _spans(tri, lambda l, r: (math.ceil(l), math.ceil(r)), at=at))
+
+
+def float_drift(tri, shape):
+    """x accumulated as x += dx/dy in float64 from each edge's first row: on rows where the exact
+    crossing is a whole number the sum is a hair off, and ceil() moves the span end by one."""
+    h, w = shape
+    mask = np.zeros(shape, dtype=bool)
+    ex = _exact(tri)
+    if _is_degenerate(ex):
+        return mask
+    first, end = _rows(ex)
+    accumulated = {}
+    for e in _edges(ex):
+        (x0, y0), (x1, y1) = e
+        step = float(x1 - x0) / float(y1 - y0)
+        x = float(x0) + (math.ceil(y0) - float(y0)) * step
+        for y in range(math.ceil(y0), math.ceil(y1)):
+            accumulated[(e, y)] = x
+            x += step
+    for y in range(first, end):
+        active = _active(_edges(ex), Fraction(y))
+        if len(active) < 2:
+            continue
+        xs = sorted(accumulated[(e, y)] for e in active[:2])
+        if 0 <= y < h:
+            mask[y, max(math.ceil(xs[0]), 0):max(min(math.ceil(xs[1]), w), 0)] = True
+    return mask
+
+
+def degenerate(tri):
+    return _is_degenerate(_exact(tri))
+
+
+# The geometric causes and their models (span_end_rounding has one model per variant).
+MODELS = {
+    ("span_end_rounding", "nearest at both ends"): span_end_rounding(("both", "nearest")),
+    ("span_end_rounding", "nearest at the left end"): span_end_rounding(("left", "nearest")),
+    ("span_end_rounding", "nearest at the right end"): span_end_rounding(("right", "nearest")),
+    ("span_end_rounding", "rounded with round() (halves to even) at both ends"):
+        span_end_rounding(("both", "even")),
+    ("span_end_rounding", "truncated (floor) at both ends"): span_end_rounding(("both", "floor")),
+    ("right_end_excluded", ""): right_end_excluded,
+    ("closed_rule", ""): closed_rule,
+    ("span_too_wide", ""): span_too_wide,
+    ("top_row_dropped", ""): top_row_dropped,
+    ("bottom_row_dropped", ""): bottom_row_dropped,
+    ("edge_lag", ""): edge_lag,
+    ("float_drift", ""): float_drift,
+}
+
+
+def row_spans(mask):
+    """Row -> list of [begin, end) runs of a mask (one run for a convex fill)."""
+    spans = {}
+    for y in np.flatnonzero(mask.any(axis=1)):
+        row = np.concatenate(([False], mask[y], [False]))
+        d = np.flatnonzero(np.diff(row.astype(np.int8)))
+        spans[int(y)] = [(int(a), int(b)) for a, b in zip(d[::2], d[1::2])]
+    return spans

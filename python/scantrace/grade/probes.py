@@ -1,0 +1,55 @@
+"""The probe triangles: small canvases, each triangle chosen so that the fill rules and the
+mistakes of fill_models.py draw different pixels on at least one of them (tests/grade checks that
+every two models differ on some probe). Integer vertices as in the course's scene, and a few
+non-integer ones.
+"""
+
+import dataclasses
+
+import numpy as np
+
+# Far from white (the blank canvas) in every channel, and different per vertex so a permutation
+# of the colours changes every pixel of a Gouraud fill.
+COLOURS = np.array([[0.9, 0.1, 0.2], [0.1, 0.7, 0.3], [0.2, 0.3, 0.8]])
+
+
+@dataclasses.dataclass(frozen=True)
+class Probe:
+    name: str
+    what: str
+    vertices: tuple
+    size: tuple = (24, 24)     # (height, width)
+
+    @property
+    def array(self):
+        return np.array(self.vertices, dtype=np.float64)
+
+    @property
+    def integer(self):
+        return bool(np.all(self.array == np.round(self.array)))
+
+
+PROBES = (
+    Probe("general", "a scalene triangle", ((2, 3), (17, 8), (7, 19))),
+    Probe("flat_top", "a horizontal top edge", ((3, 4), (18, 4), (9, 16))),
+    Probe("flat_bottom", "a horizontal bottom edge", ((10, 3), (3, 17), (19, 17))),
+    Probe("vertical_left", "a vertical left edge", ((4, 3), (4, 18), (17, 12))),
+    Probe("vertical_right", "a vertical right edge", ((18, 2), (18, 19), (5, 9))),
+    Probe("sliver", "a sliver", ((2, 5), (21, 8), (3, 7))),
+    Probe("steep", "steep edges", ((11, 1), (14, 22), (8, 15))),
+    Probe("long_edges", "long edges of slopes 1/3 and 3/10 (far from their start)",
+          ((2, 1), (12, 31), (22, 37)), (40, 40)),
+    Probe("border", "a vertex on the canvas corner", ((0, 0), (15, 2), (6, 14))),
+    Probe("non_integer", "non-integer vertices", ((2.5, 3.25), (18.75, 9.5), (8.2, 20.6))),
+    Probe("halves", "vertices on half pixels", ((3.5, 2.5), (19.5, 10.5), (6.5, 20.5))),
+    Probe("zero_area", "a zero-area (collinear) face", ((3, 3), (9, 9), (15, 15))),
+    Probe("zero_area_flat", "a zero-area horizontal face", ((3, 8), (12, 8), (18, 8))),
+)
+
+# The same triangle with its vertices listed in every order: a Gouraud fill must give the same
+# image; colours paired after a sort, or a fixed permutation of the weights, do not.
+ORDERS = ((0, 1, 2), (1, 2, 0), (2, 0, 1), (0, 2, 1), (2, 1, 0), (1, 0, 2))
+GOURAUD = tuple(
+    Probe(f"gouraud_{''.join(map(str, order))}", f"a triangle with its vertices in order {order}",
+          tuple(((2, 3), (19, 9), (8, 21))[k] for k in order))
+    for order in ORDERS) + (PROBES[1], PROBES[3], PROBES[7])

@@ -1,0 +1,127 @@
+"""What one graded submission writes: results.json (Gradescope's autograder format, at most
+100 KB), report.md and report.html, and the causes' pictures beside them (causes/ID.png)."""
+
+import base64
+import html
+import json
+import os
+import pathlib
+import tempfile
+
+import scantrace
+
+RESULTS_LIMIT = 100_000
+
+
+def _write_atomic(path, data):
+    """Writes a file whole or not at all (a temp file renamed over it)."""
+    path = pathlib.Path(path)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix="." + path.name)
+    with os.fdopen(fd, "wb") as f:
+        f.write(data.encode("utf-8") if isinstance(data, str) else data)
+    os.chmod(tmp, 0o644)
+    os.replace(tmp, path)
+
+
+def results_json(graded):
+    """Gradescope's results.json: tests with name, score, max_score, status, output (Markdown),
+    visibility; top-level score, execution_time, output; the causes under extra_data."""
+    tests = [{"name": t.name, "number": str(i + 1), "score": t.score, "max_score": t.max_score,
+              "status": t.status, "output": t.output, "output_format": "md",
+              "visibility": t.visibility,
+              **({"extra_data": {"verdict": t.verdict}} if t.verdict else {})}
+             for i, t in enumerate(graded.tests)]
+    result = {"score": graded.score, "execution_time": round(graded.seconds, 2),
+              "output": graded.summary(), "output_format": "md", "visibility": "visible",
+              "stdout_visibility": "hidden", "tests": tests,
+              "extra_data": {"max_score": graded.max_score,
+                             "causes": [c.as_json() for c in graded.causes],
+                             "notes": graded.notes}}
+    text = json.dumps(result, indent=1)
+    # Keep under Gradescope's limit: shorten the longest test outputs first.
+    while len(text.encode()) > RESULTS_LIMIT:
+        longest = max(tests, key=lambda t: len(t["output"]))
+        if len(longest["output"]) < 200:
+            break
+        longest["output"] = longest["output"][: len(longest["output"]) // 2] + "\n… (shortened)"
+        text = json.dumps(result, indent=1)
+    return text
+
+
+def _cause_md(c):
+    lines = [f"### `{c.id}`", "", c.sentence, "", f"**Fix:** {c.fix}", "",
+             f"**Evidence:** {c.evidence}"]
+    if c.picture:
+        lines += ["", f"![{c.id}: grey both, red expected only, blue yours only]({c.picture})"]
+    return lines
+
+
+def markdown(graded):
+    lines = [f"# {graded.name}: {graded.score:g} / {graded.max_score:g}", ""]
+    if graded.causes:
+        lines += ["## What is wrong", ""]
+        for c in graded.causes:
+            lines += _cause_md(c) + [""]
+    else:
+        lines += ["No mistake found by the probes." if graded.score >= graded.max_score
+                  else "No cause confirmed: see the tests below.", ""]
+    lines += ["## Tests", "", "| test | score | status |", "|---|---|---|"]
+    for t in graded.tests:
+        lines.append(f"| {t.name} | {t.score:g} / {t.max_score:g} | "
+                     f"{t.verdict or t.status} |")
+    lines.append("")
+    for t in graded.tests:
+        if t.output:
+            lines += [f"### {t.name}", "", t.output, ""]
+    if graded.notes:
+        lines += ["## Notes", ""] + [f"- {n}" for n in graded.notes] + [""]
+    return "\n".join(lines)
+
+
+def _inline(text):
+    """Markdown's `code` as <code>, the rest escaped."""
+    parts = html.escape(text).split("`")
+    return "".join(f"<code>{p}</code>" if i % 2 else p for i, p in enumerate(parts))
+
+
+def html_report(graded, directory):
+    rows = "".join(f"<tr><td>{_inline(t.name)}</td><td>{t.score:g} / {t.max_score:g}</td>"
+                   f"<td class='{t.status}'>{html.escape(t.verdict or t.status)}</td></tr>"
+                   for t in graded.tests)
+    causes = ""
+    for c in graded.causes:
+        picture = ""
+        if c.picture:
+            data = base64.b64encode((directory / c.picture).read_bytes()).decode()
+            picture = (f"<img alt='{c.id}' src='data:image/png;base64,{data}'>"
+                       "<p class='legend'>grey: both; red: expected only; blue: yours only</p>")
+        causes += (f"<section><h3><code>{c.id}</code></h3><p>{_inline(c.sentence)}</p>"
+                   f"<p><b>Fix:</b> {_inline(c.fix)}</p><p><b>Evidence:</b> "
+                   f"{_inline(c.evidence)}</p>{picture}</section>")
+    details = "".join(f"<h3>{_inline(t.name)}</h3><pre>{html.escape(t.output)}</pre>"
+                      for t in graded.tests if t.output)
+    return f"""<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>{html.escape(graded.name)}: grade</title>
+<style>body{{font-family:sans-serif;max-width:60em;margin:2em auto}}
+td,th{{padding:.2em .8em;border-bottom:1px solid #ddd}}.failed{{color:#b00}}.passed{{color:#070}}
+img{{image-rendering:pixelated;border:1px solid #ccc}}.legend{{font-size:small;color:#666}}
+pre{{white-space:pre-wrap;background:#f6f6f6;padding:.5em}}</style></head><body>
+<h1>{html.escape(graded.name)}: {graded.score:g} / {graded.max_score:g}</h1>
+<h2>What is wrong</h2>{causes or "<p>No cause confirmed.</p>"}
+<h2>Tests</h2><table><tr><th>test</th><th>score</th><th>status</th></tr>{rows}</table>
+{details}
+</body></html>
+"""
+
+
+def write(graded, directory):
+    directory = pathlib.Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    for c in graded.causes:
+        if c.picture_pixels is not None:
+            (directory / "causes").mkdir(exist_ok=True)
+            c.picture = f"causes/{c.id}.png"
+            scantrace.write_png(c.picture_pixels, str(directory / c.picture))
+    _write_atomic(directory / "report.md", markdown(graded))
+    _write_atomic(directory / "report.html", html_report(graded, directory))
+    _write_atomic(directory / "results.json", results_json(graded))

@@ -40,7 +40,10 @@ endif()
 
 if(SCANTRACE_BUILD_TESTS)
   # The explorer page in headless Chromium, opened from file:// (web/tests/chromium_explorer.mjs).
-  # `scantrace explore -o` writes the page the Chromium test opens.
+  # `scantrace explore -o` writes the page the Chromium test opens, into a folder made here: the
+  # command, like every output of scantrace, does not create missing parent folders (a fresh
+  # clone's CI failed on it where a worktree had the folder from an earlier run).
+  file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/web-tests)
   add_test(NAME "web: scantrace explore writes the explorer page"
            COMMAND $<TARGET_FILE:scantrace> explore -o ${CMAKE_BINARY_DIR}/web-tests/explorer.html)
   set_tests_properties("web: scantrace explore writes the explorer page" PROPERTIES

@@ -227,11 +227,14 @@ class Session:
             paths = {"submission": "/submission", "out": "/out/" + batch_out.name}
             harness = "/harness/harness.py"
         else:
+            # The session's own folder, not the whole of /tmp: other sessions' submissions and
+            # the grader's temporary files lie there too (a clone under /tmp let the student
+            # read the grader's file planted by test_grade_sandbox).
             prefixes = sorted({sys.prefix, sys.base_prefix, "/usr", "/lib", "/etc", "/proc",
-                               "/dev", "/sys", tempfile.gettempdir()})
+                               "/dev", "/sys", str(self.work)})
             roots = {"read_roots": [p.rstrip("/") + "/" for p in prefixes]
                      + [str(self.submission) + "/", str(HARNESS.parent) + "/"],
-                     "write_roots": [tempfile.gettempdir() + "/", "/dev/null"]}
+                     "write_roots": [str(self.work) + "/", "/dev/null"]}
             paths = {"submission": str(self.submission), "out": str(batch_out)}
             harness = str(HARNESS)
         # Inputs are referred to relative to the result folder: the batch sees them through ../in.

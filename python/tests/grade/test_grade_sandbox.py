@@ -4,6 +4,7 @@ report is written, and the grader's own files cannot be read from inside the san
 import json
 import os
 import pathlib
+import tempfile
 import textwrap
 
 import numpy as np
@@ -51,8 +52,12 @@ EXPECTED = {0: "ok", 1: "timeout", 2: "memory", 3: "forbidden", 4: "forbidden", 
 
 @pytest.mark.parametrize("sandbox", [True, False])
 def test_each_hostile_call_gets_its_verdict_and_the_rest_run(tmp_path, sandbox_ok, sandbox):
-    secret = pathlib.Path(os.environ.get("SCANTRACE_BUILD_DIR", tmp_path)) / \
-        f"grader-secret-{os.getpid()}.txt"
+    # A grader's file outside /tmp: inside the sandbox /tmp is a private tmpfs, where the path of
+    # a file planted under the host's /tmp is merely absent (`error`), not `forbidden`.
+    base = pathlib.Path(os.environ.get("SCANTRACE_BUILD_DIR", tmp_path)).resolve()
+    if base.is_relative_to(pathlib.Path(tempfile.gettempdir()).resolve()):
+        base = pathlib.Path.home()
+    secret = base / f"grader-secret-{os.getpid()}.txt"
     secret.write_text("THE-HIDDEN-SEED-IS-42")
     try:
         sub = stage(write_submission(tmp_path / "hostile",
@@ -79,6 +84,30 @@ def test_each_hostile_call_gets_its_verdict_and_the_rest_run(tmp_path, sandbox_o
     for r in results.values():
         assert "THE-HIDDEN-SEED" not in r.detail
     assert results["m0"].value[1, 1].tolist() == [0.5, 0.5, 0.5]
+
+
+def test_without_the_sandbox_the_student_reads_no_other_temporary_file(tmp_path):
+    # --no-sandbox has only the audit hook: it must allow the session's own folder, not the whole
+    # of /tmp, where other sessions' submissions and the grader's temporary files lie (it allowed
+    # /tmp/ whole, and a file planted there was read).
+    secret = pathlib.Path(tempfile.gettempdir()) / f"grader-tmp-secret-{os.getpid()}.txt"
+    secret.write_text("THE-HIDDEN-SEED-IS-42")
+    try:
+        sub = stage(write_submission(tmp_path / "hostile",
+                                     f"SECRET = {str(secret)!r}\n" + HOSTILE))
+        session = Session(sub.root, sub.functions, Limits(call_seconds=1.0, memory_mb=1024),
+                          sandbox=False)
+        v = session.input(np.array([[5, 0], [5, 0], [0, 5]]))
+        c = session.input(np.eye(3))
+        results = session.run([{"id": "m5", "kind": "call", "func": "f_shading",
+                                "args": [0, {"npy": v}, {"npy": c}], "canvas": 0,
+                                "canvas_shape": [4, 4, 3]}])
+        session.close()
+        sub.close()
+    finally:
+        secret.unlink()
+    assert results["m5"].status == "forbidden"
+    assert str(secret) in results["m5"].detail
 
 
 def test_planted_grader_files_are_not_there_inside(tmp_path, sandbox_ok):

@@ -164,6 +164,16 @@ TEST_CASE("no numeric option of any subcommand accepts NaN or an infinity",
   for (const std::string& sub : subs) {
     INFO("subcommand " << sub);
     REQUIRE(base.count(sub) == 1);  // a new subcommand: give it its positionals above
+    if (sub == "grade") {
+      // `grade` hands its whole command line to the Python package (cli/grade_command.cpp). A
+      // build without the package (the asan preset) has no grader to ask for its options; where
+      // it is built (the Release suite) its options are checked here like the others.
+      const auto help = run_scantrace(dir.path(), {"grade", "--help"});
+      if (help.exit_code != 0 && help.err.find("No module named 'scantrace'") != std::string::npos) {
+        WARN("grade: the scantrace Python package is not built here; its options are not checked");
+        continue;
+      }
+    }
     for (const HelpOption& o : options_of(sub)) {
       INFO("option " << o.name << " (" << o.type << ")");
       std::vector<std::string> values;

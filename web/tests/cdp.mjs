@@ -55,7 +55,9 @@ export async function launch() {
         proc.kill();
         await new Promise((r) => proc.once('exit', r));
       }
-      fs.rmSync(profile, { recursive: true, force: true });
+      // Chromium's helper processes may still write into the profile after the browser exits
+      // (a clean clone's CI run failed on ENOTEMPTY): retry the removal a while.
+      fs.rmSync(profile, { recursive: true, force: true, maxRetries: 20, retryDelay: 100 });
     },
   };
 }

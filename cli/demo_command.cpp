@@ -1,7 +1,8 @@
 // scantrace demo [-o DIR]: the embedded default, no input needed. Renders the built-in demo scene
 // both ways, fills the course's example triangle, traces it and replays the trace into the
-// explanatory video, and saves the scene so that `scantrace render` can reproduce the renders
-// from a file.
+// explanatory video and page (cli/demo_explain.hpp), and saves the scene so that `scantrace
+// render` can reproduce the renders from a file. Compiled into both executables: `scantrace`
+// runs it when scantrace-tools is not built (the demo's build, cli/main_render.cpp).
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -12,17 +13,15 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/demo_explain.hpp"
 #include "cli/stopwatch.hpp"
-#include "cli/trace_page.hpp"
 #include "demo/demo_mesh.hpp"
 #include "demo/demo_scene.hpp"
+#include "io/png_writer.hpp"
 #include "io/scene_json.hpp"
 #include "src/painter.hpp"
 #include "src/shade_mesh.hpp"
 #include "trace/record.hpp"
-#include "viz/image_file.hpp"
-#include "viz/progress.hpp"
-#include "viz/replay.hpp"
 
 namespace scantrace::cli {
 namespace {
@@ -44,7 +43,7 @@ void render_scene(const Scene& scene, Shading shading, const std::filesystem::pa
   const Stopwatch clock;
   const RgbImage image = render(scene, options, &stats);
   const double ms = clock.ms();
-  write_png(image, file);
+  png::write(image, file);
   spdlog::info(
       "wrote {}: the demo scene, {} shading ({} faces drawn, {} skipped, {} pixels, "
       "{:.2f} ms)",
@@ -64,7 +63,7 @@ void render_model(const std::filesystem::path& file) {
   options.visibility = Visibility::zbuffer;
   RenderStats stats;
   const RgbImage image = render(scene, options, &stats);
-  write_png(image, file);
+  png::write(image, file);
   spdlog::info(
       "wrote {}: a generated torus ({} faces), Lambert-lit, Gouraud, gamma 2.2, z-buffer "
       "({} drawn, {} culled as back faces)",
@@ -82,50 +81,13 @@ void trace_demo_triangle(const std::filesystem::path& image_file,
   RgbImage image;
   const trace::Footer footer =
       trace::write_triangle_trace(trace_file, input, FillOptions{}, trace::TraceFilter{}, &image);
-  write_png(image, image_file);
+  png::write(image, image_file);
   spdlog::info(
       "wrote {}: the course's example triangle (20,20) (250,80) (300,400), red, green "
       "and blue vertices, Gouraud",
       image_file.string());
   spdlog::info("wrote {}: its step-by-step trace, {} events (edge table, then every scanline)",
                trace_file.string(), footer.events);
-}
-
-// The video and the page are made from the trace file just written, so they explain exactly what
-// the file holds; it is read once for both.
-void explain_demo_triangle(const std::filesystem::path& trace_file,
-                           const std::filesystem::path& video, const std::filesystem::path& page) {
-  const trace::Trace t = trace::Trace::load(trace_file);
-  viz::ReplayOptions options;
-  options.source = trace_file.string();
-  const auto replay_to = [&](const std::filesystem::path& out) {
-    std::unique_ptr<viz::Progress> progress;
-    if (spdlog::should_log(spdlog::level::info))
-      progress = std::make_unique<viz::StderrProgress>(out.string(), "frames");
-    return viz::replay(t, out, options, progress.get());
-  };
-  const Stopwatch clock;
-  const viz::ReplayResult r = replay_to(video);
-  spdlog::info(
-      "wrote {}: the explanatory video of that trace, {} steps, {:.0f} s ({} {}x{}, {} "
-      "frames, made in {:.1f} s)",
-      video.string(), r.steps, r.seconds, r.format == "h264" ? "H.264" : "MPEG-4",
-      options.size.width, options.size.height, r.frames, clock.ms() / 1000);
-  // The trace and its player when the web build is there (cli/trace_page.hpp); the demo's own
-  // build has none, and writes the page of pre-drawn frames.
-  if (!trace_page_template().empty()) {
-    const std::size_t bytes = write_trace_page(t, options, page);
-    spdlog::info(
-        "wrote {}: the same steps as a self-contained page (the trace and its player, {:.0f} KB): "
-        "open it in a browser and step with the arrow keys",
-        page.string(), bytes / 1e3);
-    return;
-  }
-  const viz::ReplayResult p = replay_to(page);
-  spdlog::info(
-      "wrote {}: the same steps as a self-contained page ({} steps, {:.1f} MB): open it in a "
-      "browser and step with the arrow keys",
-      page.string(), p.steps, p.bytes / 1e6);
 }
 
 void run_demo(const DemoArgs& args) {
@@ -164,7 +126,10 @@ Command add_demo_command(CLI::App& app) {
       "Gouraud-shaded torus), DIR/triangle_gouraud.png\n"
       "(512x512 each), DIR/triangle.jsonl (its trace), DIR/triangle.mp4 (the video\n"
       "of that trace, 1280x720, under a minute), DIR/triangle.html (the same\n"
-      "steps as a page to step through in a browser) and DIR/demo_scene.json.");
+      "steps as a page to step through in a browser) and DIR/demo_scene.json.\n"
+      "The demo's own build (scripts/build.sh --demo, without OpenCV) writes the\n"
+      "page with SVG frames and no video; the full build adds the video, and its\n"
+      "page holds the trace and the WebAssembly player when the web build is there.");
   return {cmd, [args] { run_demo(*args); }};
 }
 

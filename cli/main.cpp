@@ -1,26 +1,14 @@
 // `scantrace-tools`: every subcommand of `scantrace` (docs/design.md §7). The `scantrace`
 // executable runs `render` itself and hands every other command line to this one
 // (cli/main_render.cpp).
-#include "cli/all_commands.hpp"  // generated: SCANTRACE_ALL_COMMANDS (cli/CMakeLists.txt)
 #include "cli/app.hpp"
 
 int main(int argc, char** argv) {
   using namespace scantrace::cli;
-#if SCANTRACE_ALL_COMMANDS
   constexpr AddCommand commands[]{add_demo_command,   add_render_command,  add_trace_command,
                                   add_replay_command, add_explain_command, add_stress_command,
                                   add_bench_command,  add_check_command,   add_why_command,
                                   add_diff_command,   add_step_command,    add_explore_command,
                                   add_grade_command};
   return run_app(argc, argv, commands);
-#else
-  // The demo's build (SCANTRACE_ALL_COMMANDS off: scripts/build.sh --demo) leaves out the
-  // commands the demo does not run, with their libraries (the grading layer, the stress tests, the
-  // benchmark): a fifth of the demo's compile (docs/performance.md, "Building").
-  constexpr AddCommand commands[]{add_demo_command,    add_render_command, add_trace_command,
-                                  add_replay_command,  add_explain_command, add_check_command,
-                                  add_step_command};
-  constexpr const char* left_out[]{"stress", "bench", "why", "diff", "explore", "grade"};
-  return run_app(argc, argv, commands, left_out);
-#endif
 }

@@ -1,6 +1,8 @@
 // `scantrace`: the command users run. It renders itself (`scantrace render`, `--version`) and
 // hands every other command line, unchanged, to `scantrace-tools` beside it (cli/main.cpp),
-// which has every subcommand.
+// which has every subcommand. Where there is no scantrace-tools (the demo's build,
+// scripts/build.sh --demo, which installs no OpenCV), it runs `demo` too (cli/demo_explain.hpp),
+// and says of the other subcommands that the full build has them.
 //
 // Why two executables: the other subcommands replay traces into images, videos and windows
 // through OpenCV, whose image codecs, video I/O and HighGUI bring in 260 shared libraries (GDAL,
@@ -39,14 +41,21 @@ bool runs_here(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  using namespace scantrace::cli;
   if (runs_here(argc, argv)) {
-    constexpr scantrace::cli::AddCommand render[]{scantrace::cli::add_render_command};
-    return scantrace::cli::run_app(argc, argv, render);
+    constexpr AddCommand render[]{add_render_command};
+    return run_app(argc, argv, render);
   }
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   const std::filesystem::path tools =
       (ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path()) / "scantrace-tools";
+  if (!std::filesystem::exists(tools, ec)) {
+    constexpr AddCommand here[]{add_demo_command, add_render_command};
+    constexpr const char* left_out[]{"trace", "replay", "explain", "check", "step", "stress",
+                                     "bench", "why",   "diff",    "explore", "grade"};
+    return run_app(argc, argv, here, left_out);
+  }
   execv(tools.c_str(), argv);
   std::fprintf(stderr, "scantrace: error: cannot run %s: %s\n", tools.c_str(),
                std::strerror(errno));

@@ -1,7 +1,5 @@
 #include "cli/trace_page.hpp"
 
-#include <libdeflate.h>
-
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -13,9 +11,10 @@
 
 #include "cli/web_dir.hpp"  // generated: kWebBuildDir (cli/CMakeLists.txt)
 #include "io/atomic_write.hpp"
+#include "io/gzip.hpp"
 #include "io/json_input.hpp"
 #include "trace/jsonl_writer.hpp"
-#include "viz/html_player.hpp"
+#include "viz/step_page.hpp"
 
 namespace scantrace::cli {
 namespace {
@@ -32,18 +31,6 @@ std::string jsonl_of(const trace::Trace& t) {
       w.write(e);
   if (t.footer()) w.finish(*t.footer());
   return out.str();
-}
-
-// gzip at libdeflate's strongest level: the page inflates it with DecompressionStream.
-std::vector<unsigned char> gzip(const std::string& text) {
-  const std::unique_ptr<libdeflate_compressor, void (*)(libdeflate_compressor*)> c(
-      libdeflate_alloc_compressor(12), &libdeflate_free_compressor);
-  if (!c) throw std::runtime_error("out of memory");
-  std::vector<unsigned char> out(libdeflate_gzip_compress_bound(c.get(), text.size()));
-  const std::size_t n = libdeflate_gzip_compress(c.get(), text.data(), text.size(), out.data(), out.size());
-  if (n == 0) throw std::runtime_error("the compressed trace did not fit its bound");
-  out.resize(n);
-  return out;
 }
 
 }  // namespace

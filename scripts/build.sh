@@ -36,16 +36,16 @@ fi
 # The options are always given: build/ is shared by both forms, and a demo build must not leave
 # the tests switched off in the cache for the next full build (nor the reverse).
 if [ "$demo" = 1 ]; then
-  # Catch2, Google Benchmark and pybind11 are not installed for the demo, so their parts are not configured.
-  # Only the subcommands the demo runs (cli/main.cpp): stress, bench, why and diff come with the
-  # full build, which reuses every object of this one (same flags, same compiler launcher).
+  # Only the `scantrace` command, which runs `render` and `demo` without OpenCV (cli/main_render.cpp);
+  # none of OpenCV, matio, Catch2, Google Benchmark or pybind11 is installed for it. The full build
+  # adds scantrace-tools and reuses every object of this one (same flags, same compiler launcher).
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=OFF \
-    -DSCANTRACE_BUILD_BENCH=OFF -DSCANTRACE_BUILD_PYTHON=OFF -DSCANTRACE_ALL_COMMANDS=OFF \
+    -DSCANTRACE_BUILD_BENCH=OFF -DSCANTRACE_BUILD_PYTHON=OFF -DSCANTRACE_TOOLS=OFF \
     -DSCANTRACE_BUILD_WEB=OFF
   cmake --build build -j"$(nproc)" --target scantrace
 else
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=ON \
-    -DSCANTRACE_BUILD_BENCH=ON -DSCANTRACE_BUILD_PYTHON=ON -DSCANTRACE_ALL_COMMANDS=ON \
+    -DSCANTRACE_BUILD_BENCH=ON -DSCANTRACE_BUILD_PYTHON=ON -DSCANTRACE_TOOLS=ON \
     -DSCANTRACE_BUILD_WEB=ON
   cmake --build build -j"$(nproc)"
 fi

@@ -6,17 +6,18 @@
 #                             (scripts/demo.sh): the quick first run
 set -euo pipefail
 
-# The demo's packages: the compiler, CMake, and the libraries the `scantrace` target links.
-# (pkg-config finds libmatio-dev, the MATLAB .mat reader, which has no CMake package.)
-# (libxcb1-dev: `scantrace step` makes the X connection itself before HighGUI's Qt would abort on
-# a refused one, cli/x_display.hpp.) (libhwy-dev: Google Highway, the core's SIMD Gouraud spans,
-# src/shade_bytes.hpp.) (libdeflate-dev: the compressor of the PNG writer of `scantrace render`,
-# which loads no OpenCV, io/png_writer.hpp.) (libsimdjson-dev: the scene file's fast path, io/scene_json_fast.hpp.)
+# The demo's packages: the compiler, CMake, and the libraries the `scantrace` command links, which
+# runs the demo without OpenCV (cli/demo_explain.hpp): about 100 Debian packages, where OpenCV's
+# development packages alone are 316 more (docs/performance.md, "Building").
+# (pkg-config finds libdeflate-dev, the compressor of the PNG writer of `scantrace render`,
+# io/png_writer.hpp, which has no CMake package.) (libhwy-dev: Google Highway, the core's SIMD
+# Gouraud spans, src/shade_bytes.hpp.) (libsimdjson-dev: the scene file's fast path,
+# io/scene_json_fast.hpp.)
 # (ccache: scripts/build.sh compiles through it when it is installed; the demo installs it too, so
 # that the demo's build and the full one use the same compiler launcher and the full build reuses
 # the demo's objects instead of compiling everything again, issue 36.)
-demo_packages=(cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libsimdjson-dev libopencv-dev libdeflate-dev
-               libcli11-dev libtinyobjloader-dev libmatio-dev libxcb1-dev libhwy-dev ccache)
+demo_packages=(cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libsimdjson-dev libdeflate-dev
+               libcli11-dev libtinyobjloader-dev libhwy-dev ccache)
 
 # THE FULL LIST (the test command, CI): every package, the demo's included; append new ones here.
 # ffmpeg provides ffprobe, with which the tests check the codec of the videos `replay` writes;
@@ -25,6 +26,8 @@ packages=(cmake g++ make libspdlog-dev nlohmann-json3-dev libopencv-dev catch2 l
           libbenchmark-dev python3-jsonschema ffmpeg libtinyobjloader-dev clang-14 libfuzzer-14-dev
           ccache
           pybind11-dev python3-dev python3-numpy python3-pytest)
+# (libmatio-dev: the MATLAB .mat reader, found by pkg-config. libxcb1-dev: `scantrace step` makes
+# the X connection itself before HighGUI's Qt would abort on a refused one, cli/x_display.hpp.)
 packages+=(pkg-config libmatio-dev libxcb1-dev libhwy-dev libdeflate-dev libsimdjson-dev)
 # libjpeg's header read (grade/jpeg_header.hpp) and zlib for the .mat layout check
 # (io/mat5_layout.hpp): both come with libopencv-dev and libmatio-dev, named here as used.

@@ -16,8 +16,11 @@ std::string_view html_player_page() {
   html, body { margin: 0; background: #1b1d22; color: #e6e6e6;
                font: 14px/1.4 system-ui, -apple-system, "Segoe UI", sans-serif; }
   #app { display: flex; gap: 12px; padding: 8px; align-items: flex-start; }
-  #main { flex: none; }
-  #frame { display: block; image-rendering: pixelated; background: #000; }
+  /* The frame shrinks to the window beside the step list (never hidden behind it), keeping its
+     proportions; it is never enlarged past its own size. */
+  #main { flex: 1 1 auto; min-width: 0; }
+  #frame { display: block; max-width: 100%; height: auto; image-rendering: pixelated;
+           background: #000; }
   #controls { display: flex; gap: 6px; align-items: center; margin-top: 6px; }
   #controls button { background: #2d3038; color: #e6e6e6; border: 1px solid #4a4e58;
                      border-radius: 4px; padding: 3px 9px; font: inherit; cursor: pointer; }
@@ -26,7 +29,7 @@ std::string_view html_player_page() {
   #counter { font-variant-numeric: tabular-nums; min-width: 9em; text-align: right; }
   #hint { margin-top: 4px; color: #a8abb3; font-size: 13px; }
   #status { color: #ffd479; min-height: 1.4em; font-size: 13px; }
-  #list { flex: 1; min-width: 220px; max-height: calc(100vh - 24px); overflow: auto; margin: 0;
+  #list { flex: 0 0 220px; max-height: calc(100vh - 24px); overflow: auto; margin: 0;
           padding: 0 0 0 3.2em; font-size: 13px; }
   #list li { cursor: pointer; padding: 1px 4px; border-radius: 3px; }
   #list li:hover { background: #2d3038; }
@@ -96,6 +99,18 @@ const DATA = @DATA@;
   });
   let current = -1, timer = null, rowEntry = null;
 
+  // A frame as an address the <img> can show. Gzipped frames (the SVG page, viz/step_page.hpp)
+  // are inflated when first shown, not all at load: the page opens at once whatever its length.
+  const urls = DATA.gzip ? [] : DATA.frames;
+  function frameUrl(i) {
+    if (urls[i]) return Promise.resolve(urls[i]);
+    const bytes = Uint8Array.from(atob(DATA.frames[i]), function (c) { return c.charCodeAt(0); });
+    const inflated = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
+    return new Response(inflated).arrayBuffer().then(function (b) {
+      urls[i] = URL.createObjectURL(new Blob([b], { type: DATA.mime }));
+      return urls[i];
+    });
+  }
   function clamp(step) { return Math.min(base + n - 1, Math.max(base, step)); }
   function say(text) { status.textContent = text; }
   function show(step) {
@@ -103,7 +118,9 @@ const DATA = @DATA@;
     if (step === current) return;
     if (current >= 0) items[current - base].classList.remove("current");
     current = step;
-    img.src = DATA.frames[step - base];
+    const wanted = step;
+    frameUrl(step - base).then(function (url) { if (current === wanted) img.src = url; },
+                                function (e) { say("cannot show step " + wanted + ": " + e); });
     slider.value = step;
     counter.textContent = "step " + step + " / " + DATA.total;
     const li = items[step - base];
@@ -131,8 +148,9 @@ const DATA = @DATA@;
     playButton.textContent = on ? "pause" : "play";
   }
   function save() {
+    if (!urls[current - base]) { say("step " + current + " is still being drawn"); return; }
     const a = document.createElement("a");
-    a.href = DATA.frames[current - base];
+    a.href = urls[current - base];
     a.download = "step_" + String(current).padStart(5, "0") + "." + DATA.extension;
     document.body.appendChild(a);
     a.click();

@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli_test_support.hpp"
+#include "page_test_support.hpp"
 #include "demo/demo_scene.hpp"
 #include "io/scene_json.hpp"
 #include "scene_compare.hpp"
@@ -360,6 +361,54 @@ TEST_CASE("demo writes the demo renders, the example triangle and the scene", "[
   const auto default_run = run_scantrace(dir.path(), {"demo"});
   CHECK(default_run.exit_code == 0);
   CHECK(test::file_names(dir / "scantrace-demo") == expected);
+}
+
+TEST_CASE("without scantrace-tools beside it (the demo's build), scantrace runs the demo itself",
+          "[command]") {
+  // The demo's build (scripts/build.sh --demo) has no scantrace-tools and no OpenCV: `scantrace`
+  // alone, copied here without its sibling, is that build's command (cli/main_render.cpp).
+  TempDir dir;
+  std::filesystem::create_directories(dir / "bin");
+  std::filesystem::copy_file(SCANTRACE_BINARY, dir / "bin" / "scantrace");
+  const auto run = [&](const std::string& args) {
+    // Built by appending: GCC 12 raises a false -Wrestrict alarm on "literal" + std::string&&.
+    std::string command = "cd ";
+    command += test::shell_quote(dir.path().string());
+    command += " && bin/scantrace ";
+    command += args;
+    command += " >out.txt 2>err.txt";
+    const int status = std::system(command.c_str());
+    return std::pair{WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_text(dir / "err.txt")};
+  };
+  const auto [status, err] = run("demo -o out");
+  INFO("stderr: " << err);
+  REQUIRE(status == 0);
+  // Everything the full build's demo writes but the video, and a line saying how to make it.
+  const std::vector<std::string> expected{"demo_flat.png",  "demo_gouraud.png", "demo_model.png",
+                                          "demo_scene.json", "triangle.html",   "triangle.jsonl",
+                                          "triangle_gouraud.png"};
+  CHECK(test::file_names(dir / "out") == expected);
+  CHECK_THAT(err, Catch::Contains("after 'bash scripts/test.sh', run: scantrace replay "
+                                  "out/triangle.jsonl -o out/triangle.mp4"));
+  FillOptions flat;
+  flat.shading = Shading::flat;
+  CHECK(same_pixels(read_bgr(dir / "out" / "demo_flat.png"), to_bgr8(render(demo_scene(), flat))));
+  CHECK(same_pixels(read_bgr(dir / "out" / "demo_gouraud.png"), to_bgr8(render(demo_scene()))));
+  // The page: the triangle's 47 steps as SVG frames (tests/composer checks they are the
+  // composer's), small enough to mail.
+  const nlohmann::json data = test::page_data(test::read_text(dir / "out" / "triangle.html"));
+  CHECK(data["mime"] == "image/svg+xml");
+  CHECK(data["frames"].size() == 47);
+  CHECK(std::filesystem::file_size(dir / "out" / "triangle.html") < 8'000'000);
+  CHECK(trace::Trace::load(dir / "out" / "triangle.jsonl").triangles() == std::vector<int>{0});
+
+  // The subcommands of scantrace-tools are named as left out of this build, not as unknown.
+  const auto [trace_status, trace_err] = run("trace out/demo_scene.json");
+  CHECK(trace_status == 2);
+  CHECK_THAT(trace_err, Catch::Contains("'trace' is not in the demo's build"));
+  const auto [render_status, render_err] = run("-q render out/demo_scene.json -o r.png");
+  CHECK(render_status == 0);
+  CHECK(std::filesystem::exists(dir / "r.png"));
 }
 
 TEST_CASE("render of the course scene writes a 512x512 PNG", "[command][shared_data]") {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "trace/record.hpp"
+#include "composer/course_triangle.hpp"
 #include "viz/frame_json.hpp"
 #include "viz/frame_sequence.hpp"
 #include "viz/svg_frame.hpp"
@@ -16,13 +16,7 @@
 using namespace scantrace;
 
 TEST_CASE("frames compose and export without OpenCV", "[composer]") {
-  trace::TriangleInput t;
-  t.vertices = {Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}};
-  t.colors = {Color{1, 0, 0}, Color{0, 1, 0}, Color{0, 0, 1}};
-  t.width = t.height = 512;
-  FillOptions options;
-  options.shading = Shading::gouraud;
-  const trace::Trace trace = trace::record_triangle(t, options, {});
+  const trace::Trace trace = test::course_triangle_trace();
   viz::FrameSequence s(trace, {}, {1280, 720}, "the course triangle");
   REQUIRE(s.steps().size() == 47);
   std::size_t vertices = 0;

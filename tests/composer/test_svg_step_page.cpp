@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "composer/course_triangle.hpp"
 #include "page_test_support.hpp"
-#include "trace/record.hpp"
 #include "viz/step_label.hpp"
 #include "viz/step_page.hpp"
 #include "viz/svg_frame.hpp"
@@ -36,21 +36,11 @@ std::string gunzip(const std::vector<unsigned char>& gz) {
   return out;
 }
 
-trace::Trace course_triangle() {
-  trace::TriangleInput t;
-  t.vertices = {Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}};
-  t.colors = {Color{1, 0, 0}, Color{0, 1, 0}, Color{0, 0, 1}};
-  t.width = t.height = 512;
-  FillOptions options;
-  options.shading = Shading::gouraud;
-  return trace::record_triangle(t, options, {});
-}
-
 }  // namespace
 
 TEST_CASE("the SVG step page holds every step's frame as gzipped SVG, in order, with its label",
           "[composer][html]") {
-  const trace::Trace trace = course_triangle();
+  const trace::Trace trace = test::course_triangle_trace();
   // Two sequences: the page's, and one the test walks itself, so that a page that skipped,
   // repeated or reordered steps differs.
   viz::FrameSequence page_frames(trace, {}, {640, 360}, "t.jsonl");

@@ -84,5 +84,9 @@ if [ "$(id -u)" -ne 0 ]; then
   sudo=(sudo)
 fi
 "${sudo[@]}" apt-get update
+# --force-unsafe-io: dpkg does not fsync every file it unpacks, as Debian's own Docker images set
+# it. Unpacking is most of the wait (the demo's 90 MB download took 4 s, unpacking 75 s on a fresh
+# Debian 12, 2 cores): this cut it to 52-60 s from 92-94 s, measured side by side. The cost is
+# only that a power cut during the install could leave a package to reinstall.
 "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive \
-  apt-get install -y --no-install-recommends "${missing[@]}"
+  apt-get install -y --no-install-recommends -o Dpkg::Options::=--force-unsafe-io "${missing[@]}"

@@ -63,7 +63,8 @@ try {
     await mouse('mousePressed', from);
     for (let i = 1; i <= 5; ++i) await mouse('mouseMoved', [from[0] + (to[0] - from[0]) * i / 5, from[1] + (to[1] - from[1]) * i / 5]);
     await mouse('mouseReleased', to);
-    console.log(`a drag's move took ${await b.evaluate('document.body.dataset.dragMs')} ms (fill, trace, tables), its release ${await b.evaluate('document.body.dataset.recomputeMs')} ms (and the plan and the frame)`);
+    const moves = await b.evaluate('explorer.dragTimes()');
+    console.log(`a drag's moves took ${moves.map((t) => t.toFixed(1)).join(', ')} ms (fill, trace, plan, the step's frame drawn; web/bench/explorer_drag.mjs takes medians)`);
     const tri = (await b.evaluate('explorer.state()')).triangle;
     assert.notDeepStrictEqual(tri[2], [300, 400]);
     // Snapped to the 2^-8 grid.
@@ -91,6 +92,31 @@ try {
     await key('PageUp', 'PageUp');
     assert.equal(await stepShown(), n - 11);
     await until('the frame of the step drawn', async () => (await b.evaluate("document.getElementById('frame').dataset.step")) === String(n - 11));
+  });
+
+  await check("the step's frame drawn from RGBA blocks is the frame drawn from PNG blocks", async () => {
+    // The page draws the frame's pixel blocks from bytes (putImageData, the clip applied by hand);
+    // drawScantraceFrame with the PNG data URIs (drawImage under the canvas's clip) must give the
+    // same pixels.
+    const same = await b.evaluate(`(async () => {
+      const st = explorer.module();
+      const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
+      const s = explorer.state();
+      const f = st.frames(explorer.traceText(), { first: s.step, count: 1, source: 'the explorer\u2019s triangle' }).frames[0];
+      const c = document.createElement('canvas');
+      c.width = f.w;
+      c.height = f.h;
+      const ctx = c.getContext('2d');
+      await draw(ctx, f);
+      const want = ctx.getImageData(0, 0, f.w, f.h).data;
+      const got = explorer.framePixels();
+      let differ = 0;
+      for (let i = 0; i < want.length; ++i) if (want[i] !== got[i]) ++differ;
+      return [got.length === want.length, differ, f.ops.filter((op) => op[0] === 'P').length];
+    })()`);
+    assert.equal(same[0], true, 'frame sizes differ');
+    assert.ok(same[2] > 0, 'the frame has no pixel block');
+    assert.equal(same[1], 0, `${same[1]} channel values differ`);
   });
 
   const scene = path.join(work, 'explorer_triangle.json');

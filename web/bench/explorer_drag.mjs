@@ -18,12 +18,14 @@ const quartiles = (v) => { const s = [...v].sort((a, b) => a - b); return [s[s.l
 const b = await launch();
 try {
   for (const d of ['Runtime', 'Page']) await b.page(`${d}.enable`);
-  const ready = [];
+  const ready = [], parts = [];
   for (let i = 0; i < opens; ++i) {
     await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}?open=${i}#step=12` });
     await until('the page to start', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"), 60000);
     ready.push(Number(await b.evaluate('document.body.dataset.readyMs')));
+    parts.push(await b.evaluate("['script', 'inflated', 'loaded', 'ready'].map((k) => document.body.dataset[k + 'Ms']).join('/')"));
   }
+  console.log(`  script started / wasm inflated / module instantiated / first frame drawn, ms: ${parts.join(', ')}`);
   console.log(`open (navigation start to the first complete frame, ${opens} loads): median ${median(ready)} ms, all [${ready.join(', ')}]`);
 
   // Vertex 2 of the course triangle dragged back and forth along a diagonal, step 13 shown.

@@ -119,6 +119,32 @@ try {
     assert.equal(same[1], 0, `${same[1]} channel values differ`);
   });
 
+  await check('a clipped RGBA block is drawn as its clipped PNG block', async () => {
+    // No block of a triangle's replay has a clip; made here: a 9x7 block at (-2, -1) of the clip
+    // [5, 4, 5, 3] (so clipped on every side), as bytes and as a PNG data URI (the test's encoder).
+    const [w, h] = [9, 7];
+    const rgba = new Uint8Array(w * h * 4);
+    for (let i = 0; i < w * h; ++i) rgba.set([(i * 37) & 255, (i * 91) & 255, (i * 13 + 50) & 255, 255], i * 4);
+    const uri = 'data:image/png;base64,' + encodePng({ width: w, height: h, rgba }).toString('base64');
+    const differ = await b.evaluate(`(async () => {
+      const draw = new Function(explorer.module().canvasScript() + '; return drawScantraceFrame;')();
+      const data = new Uint8ClampedArray(${JSON.stringify(Array.from(rgba))});
+      const pixels = async (block) => {
+        const c = document.createElement('canvas');
+        c.width = 20;
+        c.height = 12;
+        const ctx = c.getContext('2d');
+        await draw(ctx, { w: 20, h: 12, bg: '#808080', ops: [['P', [5, 4, 5, 3], null, -2, -1, ${w}, ${h}, block]] });
+        return ctx.getImageData(0, 0, 20, 12).data;
+      };
+      const [a, b] = [await pixels({ width: ${w}, height: ${h}, data }), await pixels(${JSON.stringify(uri)})];
+      let n = 0;
+      for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
+      return n;
+    })()`);
+    assert.equal(differ, 0, `${differ} channel values differ`);
+  });
+
   const scene = path.join(work, 'explorer_triangle.json');
   fs.writeFileSync(scene, await b.evaluate('explorer.scene()'));
 

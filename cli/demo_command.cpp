@@ -121,11 +121,15 @@ void explain_demo_triangle(const std::filesystem::path& trace_file,
         page.string(), bytes / 1e3);
     return;
   }
+  // Without the web build (the demo's own build leaves out emscripten, minutes of compiling): the
+  // page of pre-drawn frames, and the line says how to get the small one.
   const viz::ReplayResult p = replay_to(page);
   spdlog::info(
-      "wrote {}: the same steps as a self-contained page ({} steps, {:.1f} MB): open it in a "
-      "browser and step with the arrow keys",
-      page.string(), p.steps, p.bytes / 1e6);
+      "wrote {}: the same steps as a self-contained page ({} steps, {:.1f} MB of pre-drawn "
+      "frames: this build has no web build; `bash scripts/build.sh --web`, then `scantrace replay "
+      "{} -o {}`, writes the trace page of under 1 MB): open it in a browser and step with the "
+      "arrow keys",
+      page.string(), p.steps, p.bytes / 1e6, trace_file.string(), page.string());
 }
 
 void run_demo(const DemoArgs& args) {

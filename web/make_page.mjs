@@ -70,7 +70,9 @@ gunzipBase64('${wasm}')
   console.error('usage: node make_page.mjs explorer|player BUILD_WEB_DIR OUT.html');
   process.exit(2);
 }
-const page = read(path.join(here, kind, `${kind}.html`)).replace('/*SCANTRACE_SCRIPT*/', () => script.join('\n'));
+// The head both pages share (doctype, charset, viewport), then the page's own template.
+const template = read(path.join(here, 'page_head.html')) + read(path.join(here, kind, `${kind}.html`)).replace(/^<!--.*-->\n/, '');
+const page = template.replace('/*SCANTRACE_SCRIPT*/', () => script.join('\n'));
 // Written whole under another name, then renamed: never half a page.
 fs.writeFileSync(out + '.tmp', page);
 fs.renameSync(out + '.tmp', out);

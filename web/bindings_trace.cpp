@@ -112,19 +112,23 @@ std::optional<trace::Trace>& kept_trace() {
 }
 
 // The same events as trace_to_file writes, recorded in memory and kept; their JSON Lines text
-// (each line as the file writer writes it: event_to_json(e).dump()).
+// (each line as the file writer writes it: event_to_json(e).dump()); the fill's image, RGBA, in
+// the result's bytes.
 std::string trace_in_memory(const nlohmann::json& in, const nlohmann::json& o) {
   require_input(in);
   const trace::TraceFilter filter = filter_of(o);
   kept_trace().reset();
+  RgbImage image;
   if (in.contains("scene")) {
     const std::string path = in["scene"].get<std::string>();
-    kept_trace() = trace::record_scene(load_scene(path, o), fill_options(o, is_obj_file(path)), filter);
+    kept_trace() = trace::record_scene(load_scene(path, o), fill_options(o, is_obj_file(path)), filter, &image);
   } else if (in.contains("triangle")) {
-    kept_trace() = trace::record_triangle(triangle_input(in), fill_options(o, false), filter);
+    kept_trace() = trace::record_triangle(triangle_input(in), fill_options(o, false), filter, &image);
   } else {
-    kept_trace() = trace::record_polygon(polygon_input(in), fill_options(o, false), filter);
+    kept_trace() = trace::record_polygon(polygon_input(in), fill_options(o, false), filter, &image);
   }
+  // The image the traced fill drew, for a page to show (a polygon has no render of its own).
+  put_rgba(image, result().bytes);
   std::string text;
   for (const trace::Event& e : kept_trace()->events()) text += trace::event_to_json(e).dump() + "\n";
   return text;
@@ -187,7 +191,8 @@ EMSCRIPTEN_KEEPALIVE int st_trace(const char* input_json, const char* options_js
     const nlohmann::json in = web::parse_options(input_json);
     const nlohmann::json o = web::parse_options(options_json);
     if (o.value("keep", false)) {
-      web::result().text = web::trace_in_memory(in, o);
+      std::string text = web::trace_in_memory(in, o);
+      web::result().text = std::move(text);
       return;
     }
     web::trace_to_file(in, o);

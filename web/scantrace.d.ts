@@ -103,6 +103,8 @@ export class Scantrace {
   demoScene(): string;
   /** The picture of the last diff's differences (grade/diff_picture.hpp), or null. */
   lastDiffPicture: { width: number; height: number; rgba: Uint8ClampedArray } | null;
+  /** After traceText/trace with keep: true of a triangle or polygon: the image its traced fill drew. */
+  lastTraceImage: { width: number; height: number; rgba: Uint8ClampedArray } | null;
   /** `scantrace diff SCENE IMAGE --json`'s report. */
   diff(scene: SceneInput, image: DecodedImage, options?: DiffOptions): Record<string, unknown>;
 }

@@ -114,10 +114,18 @@ export class Scantrace {
 
   // The JSON Lines `scantrace trace` writes, as text. input: {scene} | {triangle, colors?,
   // width?, height?} | {polygon, colors?, width?, height?}.
+  // With options.keep, lastTraceImage is the image the traced fill drew, {width, height, rgba}.
   traceText(input, options = {}) {
     const spec = { ...input };
     if ('scene' in spec) spec.scene = this._sceneFile(spec.scene);
-    return this._call('trace', [JSON.stringify(spec), JSON.stringify(options)]).text();
+    const r = this._call('trace', [JSON.stringify(spec), JSON.stringify(options)]);
+    if (options.keep) {
+      const rgba = new Uint8ClampedArray(r.bytes().buffer);
+      const width = spec.width || (spec.scene ? 0 : 512);
+      const height = rgba.length / 4 / (width || 1);
+      this.lastTraceImage = width ? { width, height, rgba } : null;
+    }
+    return r.text();
   }
 
   // The same trace as event objects, one per line (header first, footer last).

@@ -26,8 +26,12 @@ export async function start(st) {
   }
 
   function fillOptions() {
-    return { shading: s.shading, fill_rule: s.fill_rule, subpixel_bits: s.subpixel_bits, method: s.method };
+    const o = { shading: s.shading, fill_rule: s.fill_rule, subpixel_bits: s.subpixel_bits, method: s.method };
+    return s.mode === 'polygon' ? { ...o, winding: s.winding } : o;
   }
+
+  // The vertices the grid shows and drags: the triangle's, the polygon's, none for a scene.
+  const vertices = () => (s.mode === 'triangle' ? s.triangle : s.mode === 'polygon' ? s.polygon : []);
 
   function triangleScene() {
     return {
@@ -43,17 +47,19 @@ export async function start(st) {
     showError(null);
     try {
       sceneObj = s.mode === 'triangle' ? triangleScene() : null;
-      fill = st.render(s.mode === 'triangle' ? sceneObj : scene, fillOptions());
+      // A polygon has no scene to render: its fill is the image its traced fill drew.
+      if (s.mode !== 'polygon') fill = st.render(s.mode === 'triangle' ? sceneObj : scene, fillOptions());
+      const traced = s.mode === 'triangle'
+        ? { triangle: s.triangle, colors: s.colors, width: s.size[0], height: s.size[1] }
+        : s.mode === 'polygon' ? { polygon: [s.polygon], width: s.size[0], height: s.size[1] } : { scene };
+      // Kept in the module for the frames of its steps (composeStep).
+      traceText = st.traceText(traced, { ...fillOptions(), level: s.mode === 'scene' ? 'triangle' : 'scanline', keep: true });
+      if (s.mode === 'polygon') fill = { ...st.lastTraceImage, ms: 0 };
       if (fillCanvas.width !== fill.width || fillCanvas.height !== fill.height) {
         fillCanvas.width = fill.width;
         fillCanvas.height = fill.height;
       }
       fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
-      const traced = s.mode === 'triangle'
-        ? { triangle: s.triangle, colors: s.colors, width: s.size[0], height: s.size[1] }
-        : { scene };
-      // Kept in the module for the frames of its steps (composeStep).
-      traceText = st.traceText(traced, { ...fillOptions(), level: s.mode === 'triangle' ? 'scanline' : 'triangle', keep: true });
       events = traceText.split('\n').filter((l) => l).map((l) => JSON.parse(l));
       composeStep();
       $('fill-ms').textContent = `${fill.ms.toFixed(2)} ms`;
@@ -68,7 +74,7 @@ export async function start(st) {
   // blocks as bytes: nothing waits for an image to load.
   let shownFrame = null;
   function composeStep() {
-    const source = s.mode === 'triangle' ? 'the explorer\u2019s triangle' : scene.name;
+    const source = s.mode === 'scene' ? scene.name : `the explorer\u2019s ${s.mode}`;
     let r = st.frames(null, { first: s.step, count: 1, source, blocks: 'rgba' });
     plan = r.steps;
     if (s.step >= plan.length && plan.length) {
@@ -88,8 +94,8 @@ export async function start(st) {
   }
 
   function fitView() {
-    const w = s.mode === 'triangle' ? s.size[0] : fill ? fill.width : 512;
-    const h = s.mode === 'triangle' ? s.size[1] : fill ? fill.height : 512;
+    const w = s.mode !== 'scene' ? s.size[0] : fill ? fill.width : 512;
+    const h = s.mode !== 'scene' ? s.size[1] : fill ? fill.height : 512;
     view.zoom = Math.max(0.25, Math.min(grid.width / w, grid.height / h));
     view.x = (grid.width - w * view.zoom) / 2;
     view.y = (grid.height - h * view.zoom) / 2;
@@ -144,20 +150,21 @@ export async function start(st) {
       gctx.lineTo(view.x + fillCanvas.width * z, sy);
       gctx.stroke();
     }
-    if (s.mode === 'triangle') {
+    if (s.mode !== 'scene') {
       gctx.strokeStyle = '#000';
       gctx.lineWidth = 1.5;
       gctx.beginPath();
-      s.triangle.forEach((v, i) => {
+      vertices().forEach((v, i) => {
         const [px, py] = toScreen(v);
         if (i === 0) gctx.moveTo(px, py);
         else gctx.lineTo(px, py);
       });
       gctx.closePath();
       gctx.stroke();
-      s.triangle.forEach((v, i) => {
+      vertices().forEach((v, i) => {
         const [px, py] = toScreen(v);
-        gctx.fillStyle = toHex(s.colors[i]);
+        // A polygon's vertices take the command's default colours: red, green, blue, repeated.
+        gctx.fillStyle = s.mode === 'triangle' ? toHex(s.colors[i]) : ['#ff0000', '#00ff00', '#0000ff'][i % 3];
         gctx.strokeStyle = '#000';
         gctx.beginPath();
         gctx.arc(px, py, 7, 0, 2 * Math.PI);
@@ -217,6 +224,10 @@ export async function start(st) {
 
   function why(x, y) {
     marked = [x, y];
+    if (s.mode === 'polygon') {
+      $('why').textContent = '(why answers for a triangle or a scene: the pixel\u2019s spans are in the trace)';
+      return redraw();
+    }
     try {
       const story = st.why(s.mode === 'triangle' ? sceneObj : scene, x, y, fillOptions());
       $('why').textContent = JSON.stringify(story, null, 1);
@@ -239,8 +250,17 @@ export async function start(st) {
 
   grid.addEventListener('mousedown', (e) => {
     const [px, py] = pointer(e);
-    if (s.mode === 'triangle') {
-      const i = s.triangle.findIndex((v) => Math.hypot(toScreen(v)[0] - px, toScreen(v)[1] - py) <= 9);
+    if (s.mode !== 'scene') {
+      const i = vertices().findIndex((v) => Math.hypot(toScreen(v)[0] - px, toScreen(v)[1] - py) <= 9);
+      if (s.mode === 'polygon' && e.altKey && i >= 0 && s.polygon.length > 3) {
+        s.polygon.splice(i, 1);  // alt-click: the vertex removed
+        return recompute();
+      }
+      if (s.mode === 'polygon' && e.shiftKey && i < 0) {
+        const [x, y] = toCanvas(px, py);
+        s.polygon.push([snap(x), snap(y)]);  // shift-click: a vertex added after the last
+        return recompute();
+      }
       if (i >= 0) {
         drag = { vertex: i };
         return;
@@ -253,7 +273,7 @@ export async function start(st) {
     const [px, py] = pointer(e);
     if (drag.vertex !== undefined) {
       const [x, y] = toCanvas(px, py);
-      s.triangle[drag.vertex] = [snap(x), snap(y)];
+      vertices()[drag.vertex] = [snap(x), snap(y)];
       // While dragging, everything follows the mouse: the fill, the trace, the tables and the
       // composed frame of the current step. The handler's time, kept for the bench
       // (web/bench/explorer_drag.mjs) and the test's report.
@@ -316,6 +336,7 @@ export async function start(st) {
   bindOption('fill-rule', 'fill_rule');
   bindOption('method', 'method');
   bindOption('bits', 'subpixel_bits', Number);
+  bindOption('winding', 'winding');
   [0, 1, 2].forEach((i) => {
     const el = $(`color${i}`);
     el.value = toHex(s.colors[i]);
@@ -326,6 +347,12 @@ export async function start(st) {
   });
   $('triangle-mode').addEventListener('click', () => {
     s.mode = 'triangle';
+    diffPicture = null;
+    fitView();
+    recompute();
+  });
+  $('polygon-mode').addEventListener('click', () => {
+    s.mode = 'polygon';
     diffPicture = null;
     fitView();
     recompute();
@@ -393,7 +420,7 @@ export async function start(st) {
     state: () => structuredClone(s),
     vertexOnScreen: (i) => {
       const r = grid.getBoundingClientRect();
-      const [px, py] = toScreen(s.triangle[i]);
+      const [px, py] = toScreen(vertices()[i]);
       return [r.left + px * (r.width / grid.width), r.top + py * (r.height / grid.height)];
     },
     pixelOnScreen: (x, y) => {

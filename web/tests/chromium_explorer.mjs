@@ -145,6 +145,39 @@ try {
     assert.equal(differ, 0, `${differ} channel values differ`);
   });
 
+  await check('a polygon: its trace, a dragged vertex and the winding rule are the native trace --polygon', async () => {
+    // A self-crossing pentagon (a star): under non-zero its centre is inside, under even-odd not.
+    const star = [[256, 40], [380, 440], [60, 190], [450, 190], [130, 440]];
+    const arg = (p) => p.map((v) => v.join(',')).join(' ');
+    await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}#polygon=${star.map((v) => v.join(',')).join(';')}&winding=non-zero&shading=flat&step=5` });
+    await until('the polygon page', () => b.evaluate("!!document.body && document.body.dataset.ready === '1' && explorer.state().mode === 'polygon'"));
+    native(['trace', '--polygon', arg(star), '--winding', 'non-zero', '--shading', 'flat', '-o', 'star.jsonl']);
+    assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'star.jsonl'), 'utf8')));
+    // The centre (256, 250) is filled under non-zero: not the background's white.
+    const centre = await b.evaluate('explorer.fillPixels().slice((250 * 512 + 256) * 4, (250 * 512 + 256) * 4 + 3)');
+    assert.notDeepStrictEqual(centre, [255, 255, 255]);
+
+    const from = await b.evaluate('explorer.vertexOnScreen(1)');
+    const to = [from[0] + 40.4, from[1] - 61.3];
+    await mouse('mousePressed', from);
+    for (let i = 1; i <= 4; ++i) await mouse('mouseMoved', [from[0] + (to[0] - from[0]) * i / 4, from[1] + (to[1] - from[1]) * i / 4]);
+    await mouse('mouseReleased', to);
+    const moved = (await b.evaluate('explorer.state()')).polygon;
+    assert.notDeepStrictEqual(moved[1], star[1]);
+    assert.deepStrictEqual([moved[0], ...moved.slice(2)], [star[0], ...star.slice(2)]);
+    native(['trace', '--polygon', arg(moved), '--winding', 'non-zero', '--shading', 'flat', '-o', 'star_moved.jsonl']);
+    assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'star_moved.jsonl'), 'utf8')));
+    assert.ok((await b.evaluate('location.hash')).includes(`polygon=${moved.map((v) => v.join(',')).join(';')}`));
+
+    await b.evaluate("(() => { const w = document.getElementById('winding'); w.value = 'even-odd'; w.dispatchEvent(new Event('change')); })()");
+    native(['trace', '--polygon', arg(moved), '--winding', 'even-odd', '--shading', 'flat', '-o', 'star_even_odd.jsonl']);
+    assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'star_even_odd.jsonl'), 'utf8')));
+    const centre2 = await b.evaluate('explorer.fillPixels().slice((250 * 512 + 256) * 4, (250 * 512 + 256) * 4 + 3)');
+    assert.deepStrictEqual(centre2, [255, 255, 255]);
+    // Back to the triangle the next checks expect.
+    await b.evaluate("document.getElementById('triangle-mode').click()");
+  });
+
   const scene = path.join(work, 'explorer_triangle.json');
   fs.writeFileSync(scene, await b.evaluate('explorer.scene()'));
 

@@ -133,6 +133,14 @@ check('kept trace and its frames with RGBA blocks', () => {
   native(['trace', '--triangle', '20,20 250,80 299.5,371.25', '--shading', 'flat', '-o', out]);
   const text = st.traceText({ triangle: [[20, 20], [250, 80], [299.5, 371.25]] }, { shading: 'flat', keep: true });
   assert.deepStrictEqual(readJsonl(out), text.split('\n').filter((l) => l).map((l) => JSON.parse(l)));
+  // The image the kept trace's fill drew is `scantrace render`'s of the one-face scene.
+  const one = path.join(work, 'kept_triangle.json');
+  fs.writeFileSync(one, JSON.stringify({ width: 512, height: 512, background: [1, 1, 1], vertices: [[20, 20], [250, 80], [299.5, 371.25]],
+    vcolors: [[1, 0, 0], [0, 1, 0], [0, 0, 1]], faces: [[0, 1, 2]], depth: [0, 0, 0] }));
+  native(['render', one, '--shading', 'flat', '-o', path.join(work, 'kept_triangle.png')]);
+  const want = decodePng(fs.readFileSync(path.join(work, 'kept_triangle.png')));
+  assert.deepStrictEqual([st.lastTraceImage.width, st.lastTraceImage.height], [want.width, want.height]);
+  assert.ok(Buffer.from(st.lastTraceImage.rgba).equals(Buffer.from(want.rgba)), 'the kept trace\'s image differs from the render');
   for (const step of [0, 12, 30]) {
     const raw = st.frames(null, { first: step, count: 1, blocks: 'rgba', source: 'kept.jsonl' });
     const png = st.frames(fs.readFileSync(out, 'utf8'), { first: step, count: 1, source: 'kept.jsonl' });

@@ -128,6 +128,9 @@ const char* frame_canvas_script() {
   }));
   const draw = (images) => {
     let k = 0;
+    // putImageData ignores the context's transform: an RGBA block goes through it only on an
+    // untransformed context (the explorer's), else through a canvas of its own and drawImage.
+    const untransformed = ctx.getTransform().isIdentity;
     ctx.fillStyle = frame.bg;
     ctx.fillRect(0, 0, frame.w, frame.h);
     for (const op of frame.ops) {
@@ -185,9 +188,16 @@ const char* frame_canvas_script() {
       } else if (kind === 'P' && typeof op[7] === 'string') {
         ctx.imageSmoothingEnabled = false;
         ctx.drawImage(images[k++], a[0], a[1]);
+      } else if (kind === 'P' && !untransformed) {
+        const b = op[7], c = document.createElement('canvas');
+        c.width = b.width;
+        c.height = b.height;
+        c.getContext('2d').putImageData(new ImageData(b.data, b.width, b.height), 0, 0);
+        ctx.imageSmoothingEnabled = false;
+        ctx.drawImage(c, a[0], a[1]);
       } else if (kind === 'P') {
-        // putImageData ignores the transform and the clip: both applied here, the clip as the
-        // block's dirty rectangle.
+        // putImageData ignores the clip too: the clip's corner and the clip itself (as the
+        // block's dirty rectangle) applied here.
         const b = op[7], ox = clip ? clip[0] : 0, oy = clip ? clip[1] : 0;
         const dx = clip ? Math.max(0, -a[0]) : 0, dy = clip ? Math.max(0, -a[1]) : 0;
         const dw = (clip ? Math.min(b.width, clip[2] - a[0]) : b.width) - dx;

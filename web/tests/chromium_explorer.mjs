@@ -119,7 +119,7 @@ try {
     assert.equal(same[1], 0, `${same[1]} channel values differ`);
   });
 
-  await check('a clipped RGBA block is drawn as its clipped PNG block', async () => {
+  await check('a clipped RGBA block is drawn as its clipped PNG block, also on a scaled context', async () => {
     // No block of a triangle's replay has a clip; made here: a 9x7 block at (-2, -1) of the clip
     // [5, 4, 5, 3] (so clipped on every side), as bytes and as a PNG data URI (the test's encoder).
     const [w, h] = [9, 7];
@@ -129,17 +129,21 @@ try {
     const differ = await b.evaluate(`(async () => {
       const draw = new Function(explorer.module().canvasScript() + '; return drawScantraceFrame;')();
       const data = new Uint8ClampedArray(${JSON.stringify(Array.from(rgba))});
-      const pixels = async (block) => {
+      // At scale 1 (putImageData) and scale 2 (a page drawing at device pixels: drawImage).
+      const pixels = async (block, scale) => {
         const c = document.createElement('canvas');
-        c.width = 20;
-        c.height = 12;
+        c.width = 20 * scale;
+        c.height = 12 * scale;
         const ctx = c.getContext('2d');
+        ctx.setTransform(scale, 0, 0, scale, 0, 0);
         await draw(ctx, { w: 20, h: 12, bg: '#808080', ops: [['P', [5, 4, 5, 3], null, -2, -1, ${w}, ${h}, block]] });
-        return ctx.getImageData(0, 0, 20, 12).data;
+        return ctx.getImageData(0, 0, c.width, c.height).data;
       };
-      const [a, b] = [await pixels({ width: ${w}, height: ${h}, data }), await pixels(${JSON.stringify(uri)})];
       let n = 0;
-      for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
+      for (const scale of [1, 2]) {
+        const [a, b] = [await pixels({ width: ${w}, height: ${h}, data }, scale), await pixels(${JSON.stringify(uri)}, scale)];
+        for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
+      }
       return n;
     })()`);
     assert.equal(differ, 0, `${differ} channel values differ`);

@@ -33,7 +33,8 @@ void explain_demo_triangle(const std::filesystem::path& trace_file,
       video.string(), r.steps, r.seconds, r.format == "h264" ? "H.264" : "MPEG-4",
       options.size.width, options.size.height, r.frames, clock.ms() / 1000);
   // The trace and its player when the web build is there (cli/trace_page.hpp); a build without
-  // it writes the page of pre-drawn frames.
+  // it (emscripten adds minutes of compiling) writes the page of pre-drawn frames, and the line
+  // says how to get the small one.
   if (!trace_page_template().empty()) {
     const std::size_t bytes = write_trace_page(t, options, page);
     spdlog::info(
@@ -44,9 +45,11 @@ void explain_demo_triangle(const std::filesystem::path& trace_file,
   }
   const viz::ReplayResult p = replay_to(page);
   spdlog::info(
-      "wrote {}: the same steps as a self-contained page ({} steps, {:.1f} MB): open it in a "
-      "browser and step with the arrow keys",
-      page.string(), p.steps, p.bytes / 1e6);
+      "wrote {}: the same steps as a self-contained page ({} steps, {:.1f} MB of pre-drawn "
+      "frames: this build has no web build; `bash scripts/build.sh --web`, then `scantrace replay "
+      "{} -o {}`, writes the trace page of under 1 MB): open it in a browser and step with the "
+      "arrow keys",
+      page.string(), p.steps, p.bytes / 1e6, trace_file.string(), page.string());
 }
 
 }  // namespace scantrace::cli

@@ -1,7 +1,6 @@
 #include "viz/frame_json.hpp"
 
 #include <cstdio>
-#include <sstream>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -20,42 +19,53 @@ std::string box(const Rect& r) {
   return fmt::format("[{},{},{},{}]", r.x, r.y, r.width, r.height);
 }
 
+// Appends to a string: the ostream this wrote to cost a third of a frame's JSON in the
+// WebAssembly build (libc++'s stream sentries and locale lookups per `<<`), and the explorer
+// writes a frame on every mouse move of a drag.
+void put(std::string& out, const std::string& s) { out += s; }
+void put(std::string& out, const char* s) { out += s; }
+void put(std::string& out, char c) { out += c; }
+void put(std::string& out, int v) { out += std::to_string(v); }
+template <class... Parts>
+void put_all(std::string& out, const Parts&... parts) {
+  (put(out, parts), ...);
+}
+
 struct Writer {
-  std::ostringstream& out;
+  std::string& out;
   TextForm text_form = TextForm::strokes;
   void operator()(const RectOp& r) const {
-    out << "\"R\"," << r.rect.x << "," << r.rect.y << "," << r.rect.width << "," << r.rect.height
-        << ",\"" << hex_colour(r.colour) << "\"," << r.thickness;
+    put_all(out, "\"R\",", r.rect.x, ',', r.rect.y, ',', r.rect.width, ',', r.rect.height, ",\"",
+            hex_colour(r.colour), "\",", r.thickness);
   }
   void operator()(const LineOp& l) const {
     const double s = 1.0 / (1 << l.shift);
-    out << "\"L\"," << number(l.a.x * s) << "," << number(l.a.y * s) << "," << number(l.b.x * s)
-        << "," << number(l.b.y * s) << ",\"" << hex_colour(l.colour) << "\"," << l.thickness;
+    put_all(out, "\"L\",", number(l.a.x * s), ',', number(l.a.y * s), ',', number(l.b.x * s), ',',
+            number(l.b.y * s), ",\"", hex_colour(l.colour), "\",", l.thickness);
   }
   void operator()(const CircleOp& c) const {
-    out << "\"C\"," << c.centre.x << "," << c.centre.y << "," << c.radius << ",\""
-        << hex_colour(c.colour) << "\"," << c.thickness;
+    put_all(out, "\"C\",", c.centre.x, ',', c.centre.y, ',', c.radius, ",\"", hex_colour(c.colour),
+            "\",", c.thickness);
   }
   void operator()(const TextOp& t) const {
     if (text_form == TextForm::glyphs) {
       char scale[32];
       std::snprintf(scale, sizeof scale, "%.17g", t.scale);
-      out << "\"t\"," << json_string(t.text) << ",\"" << hex_colour(t.colour) << "\","
-          << t.thickness << "," << static_cast<int>(t.font) << "," << scale << "," << t.origin.x
-          << "," << t.origin.y;
+      put_all(out, "\"t\",", json_string(t.text), ",\"", hex_colour(t.colour), "\",", t.thickness,
+              ',', static_cast<int>(t.font), ',', scale, ',', t.origin.x, ',', t.origin.y);
       return;
     }
-    out << "\"T\"," << json_string(t.text) << ",\"" << hex_colour(t.colour) << "\"," << t.thickness
-        << ",[";
+    put_all(out, "\"T\",", json_string(t.text), ",\"", hex_colour(t.colour), "\",", t.thickness,
+            ",[");
     bool first_stroke = true;
     for (const auto& stroke : hershey_strokes(t.text, t.font, t.scale, t.origin)) {
-      out << (first_stroke ? "[" : ",[");
+      out += first_stroke ? "[" : ",[";
       first_stroke = false;
       for (std::size_t i = 0; i < stroke.size(); ++i)
-        out << (i ? "," : "") << number(stroke[i].x) << "," << number(stroke[i].y);
-      out << "]";
+        put_all(out, i ? "," : "", number(stroke[i].x), ',', number(stroke[i].y));
+      out += ']';
     }
-    out << "]";
+    out += ']';
   }
   void operator()(const PixelsOp& p) const {
     if (p.area.area() == 1) {  // a grid's centre dot: a filled rectangle, not an image
@@ -63,58 +73,64 @@ struct Writer {
       (*this)(RectOp{p.area, Scalar(c[0], c[1], c[2]), FILLED});
       return;
     }
-    out << "\"P\"," << p.area.x << "," << p.area.y << "," << p.area.width << "," << p.area.height
-        << ",\"" << frame_text::png_data_uri(p) << "\"";
+    put_all(out, "\"P\",", p.area.x, ',', p.area.y, ',', p.area.width, ',', p.area.height, ",\"",
+            frame_text::png_data_uri(p), '"');
   }
 };
 
 }  // namespace
 
 std::string to_json(const DrawOp& op, TextForm text) {
-  std::ostringstream out;
   // The kind first, then clip and mark: written after the body's kind, as the format says.
-  std::ostringstream body;
-  std::visit(Writer{body, text}, op.body);
-  const std::string b = body.str();
+  std::string b;
+  std::visit(Writer{b, text}, op.body);
   const std::size_t comma = b.find(',');
-  out << "[" << b.substr(0, comma) << "," << (op.clip ? box(*op.clip) : "null") << ",";
+  std::string out = "[";
+  out.append(b, 0, comma);
+  out += ',';
+  out += op.clip ? box(*op.clip) : "null";
+  out += ',';
   if (op.mark)
-    out << "{\"kind\":\"" << to_string(op.mark->kind)
-        << "\",\"what\":" << json_string(op.mark->what) << ",\"box\":" << box(op.mark->box)
-        << ",\"layer\":" << op.mark->layer << "}";
+    put_all(out, "{\"kind\":\"", to_string(op.mark->kind), "\",\"what\":", json_string(op.mark->what),
+            ",\"box\":", box(op.mark->box), ",\"layer\":", op.mark->layer, '}');
   else
-    out << "null";
-  out << b.substr(comma) << "]";
-  return out.str();
+    out += "null";
+  out.append(b, comma);
+  out += ']';
+  return out;
 }
 
 std::string to_json(const Frame& frame) {
-  std::ostringstream out;
-  out << "{\"w\":" << frame.size().width << ",\"h\":" << frame.size().height << ",\"bg\":\""
-      << hex_colour(frame.background()) << "\",\"ops\":[";
+  std::string out;
+  put_all(out, "{\"w\":", frame.size().width, ",\"h\":", frame.size().height, ",\"bg\":\"",
+          hex_colour(frame.background()), "\",\"ops\":[");
   bool first = true;
   for (const DrawOp& op : frame.ops()) {
-    out << (first ? "" : ",\n") << to_json(op);
+    put_all(out, first ? "" : ",\n", to_json(op));
     first = false;
   }
-  out << "]}\n";
-  return out.str();
+  out += "]}\n";
+  return out;
 }
 
 const char* frame_canvas_script() {
   // Coordinates are OpenCV's (pixel centres on integers): strokes are drawn half a pixel right and
   // down, filled rectangles and pixel blocks over the pixels they cover, as the SVG backend does.
   return R"JS(function drawScantraceFrame(ctx, frame) {
-  // The pixel blocks are PNG data URIs, which load asynchronously: load them all, then draw
-  // every op in order.
-  const blocks = frame.ops.filter((op) => op[0] === 'P').map((op) => new Promise((ok, fail) => {
+  // A pixel block is a PNG data URI, which loads asynchronously (load them all, then draw every
+  // op in order), or its RGBA bytes {width, height, data} (the WebAssembly module's frames with
+  // blocks: 'rgba'), drawn at once: a frame of those is drawn before this returns.
+  const blocks = frame.ops.filter((op) => op[0] === 'P' && typeof op[7] === 'string').map((op) => new Promise((ok, fail) => {
     const img = new Image();
     img.onload = () => ok(img);
     img.onerror = fail;
     img.src = op[7];
   }));
-  return Promise.all(blocks).then((images) => {
+  const draw = (images) => {
     let k = 0;
+    // putImageData ignores the context's transform: an RGBA block goes through it only on an
+    // untransformed context (the explorer's), else through a canvas of its own and drawImage.
+    const untransformed = ctx.getTransform().isIdentity;
     ctx.fillStyle = frame.bg;
     ctx.fillRect(0, 0, frame.w, frame.h);
     for (const op of frame.ops) {
@@ -169,13 +185,34 @@ const char* frame_canvas_script() {
           for (let i = 2; i < s.length; i += 2) ctx.lineTo(s[i] + 0.5, s[i + 1] + 0.5);
         }
         ctx.stroke();
-      } else if (kind === 'P') {
+      } else if (kind === 'P' && typeof op[7] === 'string') {
         ctx.imageSmoothingEnabled = false;
         ctx.drawImage(images[k++], a[0], a[1]);
+      } else if (kind === 'P' && !untransformed) {
+        const b = op[7], c = document.createElement('canvas');
+        c.width = b.width;
+        c.height = b.height;
+        c.getContext('2d').putImageData(new ImageData(b.data, b.width, b.height), 0, 0);
+        ctx.imageSmoothingEnabled = false;
+        ctx.drawImage(c, a[0], a[1]);
+      } else if (kind === 'P') {
+        // putImageData ignores the clip too: the clip's corner and the clip itself (as the
+        // block's dirty rectangle) applied here.
+        const b = op[7], ox = clip ? clip[0] : 0, oy = clip ? clip[1] : 0;
+        const dx = clip ? Math.max(0, -a[0]) : 0, dy = clip ? Math.max(0, -a[1]) : 0;
+        const dw = (clip ? Math.min(b.width, clip[2] - a[0]) : b.width) - dx;
+        const dh = (clip ? Math.min(b.height, clip[3] - a[1]) : b.height) - dy;
+        if (dw > 0 && dh > 0)
+          ctx.putImageData(new ImageData(b.data, b.width, b.height), ox + a[0], oy + a[1], dx, dy, dw, dh);
       }
       ctx.restore();
     }
-  });
+  };
+  if (!blocks.length) {
+    draw([]);
+    return Promise.resolve();
+  }
+  return Promise.all(blocks).then(draw);
 }
 )JS";
 }

@@ -13,6 +13,8 @@
 //   ["C", clip, mark, cx, cy, radius, colour, thickness]   thickness -1: a disc
 //   ["T", clip, mark, text, colour, thickness, [[x, y, x, y, ...], ...]]   the Hershey strokes
 //   ["P", clip, mark, x, y, w, h, "data:image/png;base64,..."]   a block of pixels
+// (drawScantraceFrame also takes the block as {width, height, data}, its RGBA bytes, in place of
+// the data URI: the WebAssembly module's frames with blocks: 'rgba', drawn without loading)
 // Colours are "#rrggbb". Text comes as its strokes, so the browser needs no font and draws the
 // glyphs the composer measured.
 #include <string>

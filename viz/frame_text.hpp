@@ -10,6 +10,8 @@ namespace scantrace::viz::frame_text {
 
 // At most two decimals, trailing zeros dropped ("12.5", "3", "-0.25").
 std::string number(double v);
+// The same by snprintf("%.2f") alone: number()'s reference (tests/viz/test_frame_text.cpp).
+std::string number_by_printf(double v);
 // "#rrggbb" of a BGR colour.
 std::string hex_colour(const Scalar& c);
 // `s` with & < > " escaped (XML attribute and text content).

@@ -41,6 +41,20 @@ int run(const std::function<void()>& work) {
   }
 }
 
+void put_rgba(const RgbImage& image, std::vector<std::uint8_t>& bytes) {
+  bytes.resize(static_cast<std::size_t>(image.width()) * image.height() * 4);
+  std::size_t i = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    const Rgb32f* row = image.row(y);
+    for (int x = 0; x < image.width(); ++x, i += 4) {
+      bytes[i] = to_byte(row[x].r);
+      bytes[i + 1] = to_byte(row[x].g);
+      bytes[i + 2] = to_byte(row[x].b);
+      bytes[i + 3] = 255;
+    }
+  }
+}
+
 nlohmann::json parse_options(const char* text) {
   if (!text || !*text) return nlohmann::json::object();
   nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
@@ -134,18 +148,7 @@ EMSCRIPTEN_KEEPALIVE int st_render(const char* path, const char* options_json) {
     const double t0 = emscripten_get_now();
     const RgbImage image = render(scene, options);
     const double ms = emscripten_get_now() - t0;
-    auto& bytes = web::result().bytes;
-    bytes.resize(static_cast<std::size_t>(image.width()) * image.height() * 4);
-    std::size_t i = 0;
-    for (int y = 0; y < image.height(); ++y) {
-      const Rgb32f* row = image.row(y);
-      for (int x = 0; x < image.width(); ++x, i += 4) {
-        bytes[i] = to_byte(row[x].r);
-        bytes[i + 1] = to_byte(row[x].g);
-        bytes[i + 2] = to_byte(row[x].b);
-        bytes[i + 3] = 255;
-      }
-    }
+    web::put_rgba(image, web::result().bytes);
     web::result().text = nlohmann::json{{"width", image.width()},
                                         {"height", image.height()},
                                         {"faces", scene.faces.size()},

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "src/fill_options.hpp"
+#include "src/image.hpp"
 #include "src/scene.hpp"
 
 namespace scantrace::web {
@@ -36,5 +37,8 @@ FillOptions fill_options(const nlohmann::json& options, bool model);
 Scene load_scene(const std::string& path, const nlohmann::json& options);
 
 nlohmann::json parse_options(const char* text);
+
+// `image` as RGBA bytes, each channel converted by to_byte as the PNG writer converts.
+void put_rgba(const RgbImage& image, std::vector<std::uint8_t>& bytes);
 
 }  // namespace scantrace::web

@@ -3,15 +3,18 @@
 #include <emscripten/emscripten.h>
 
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "demo/demo_scene.hpp"
 #include "io/obj_loader.hpp"
 #include "io/scene_json.hpp"
+#include "trace/event_json.hpp"
 #include "trace/record.hpp"
 #include "viz/frame_json.hpp"
 #include "viz/frame_sequence.hpp"
+#include "viz/frame_text.hpp"
 #include "web/bindings.hpp"
 
 namespace scantrace::web {
@@ -53,40 +56,116 @@ trace::TraceFilter filter_of(const nlohmann::json& o) {
   return f;
 }
 
+trace::TriangleInput triangle_input(const nlohmann::json& in) {
+  trace::TriangleInput t;
+  if (!in["triangle"].is_array() || in["triangle"].size() != 3)
+    throw std::invalid_argument("input.triangle: three vertices [x, y]");
+  const std::vector<Color> c = colours(in, 3);
+  for (int i = 0; i < 3; ++i) {
+    t.vertices[i] = point(in["triangle"][i], "input.triangle");
+    t.colors[i] = c[i];
+  }
+  t.width = in.value("width", 512);
+  t.height = in.value("height", 512);
+  return t;
+}
+
+trace::GeneralPolygonInput polygon_input(const nlohmann::json& in) {
+  trace::GeneralPolygonInput p;
+  std::size_t n = 0;
+  for (const auto& contour : in["polygon"]) {
+    p.contours.emplace_back();
+    for (const auto& v : contour) p.contours.back().push_back(point(v, "input.polygon"));
+    n += p.contours.back().size();
+  }
+  p.colors = colours(in, n);
+  p.width = in.value("width", 512);
+  p.height = in.value("height", 512);
+  return p;
+}
+
+void require_input(const nlohmann::json& in) {
+  if (!in.contains("scene") && !in.contains("triangle") && !in.contains("polygon"))
+    throw std::invalid_argument("input: give scene (a file), triangle or polygon");
+}
+
 void trace_to_file(const nlohmann::json& in, const nlohmann::json& o) {
+  require_input(in);
   const trace::TraceFilter filter = filter_of(o);
-  const int width = in.value("width", 512), height = in.value("height", 512);
   if (in.contains("scene")) {
     const std::string path = in["scene"].get<std::string>();
     const Scene scene = load_scene(path, o);
     trace::write_scene_trace(kTraceFile, scene, fill_options(o, is_obj_file(path)), filter);
   } else if (in.contains("triangle")) {
-    trace::TriangleInput t;
-    if (!in["triangle"].is_array() || in["triangle"].size() != 3)
-      throw std::invalid_argument("input.triangle: three vertices [x, y]");
-    const std::vector<Color> c = colours(in, 3);
-    for (int i = 0; i < 3; ++i) {
-      t.vertices[i] = point(in["triangle"][i], "input.triangle");
-      t.colors[i] = c[i];
-    }
-    t.width = width;
-    t.height = height;
-    trace::write_triangle_trace(kTraceFile, t, fill_options(o, false), filter);
-  } else if (in.contains("polygon")) {
-    trace::GeneralPolygonInput p;
-    std::size_t n = 0;
-    for (const auto& contour : in["polygon"]) {
-      p.contours.emplace_back();
-      for (const auto& v : contour) p.contours.back().push_back(point(v, "input.polygon"));
-      n += p.contours.back().size();
-    }
-    p.colors = colours(in, n);
-    p.width = width;
-    p.height = height;
-    trace::write_polygon_trace(kTraceFile, p, fill_options(o, false), filter);
+    trace::write_triangle_trace(kTraceFile, triangle_input(in), fill_options(o, false), filter);
   } else {
-    throw std::invalid_argument("input: give scene (a file), triangle or polygon");
+    trace::write_polygon_trace(kTraceFile, polygon_input(in), fill_options(o, false), filter);
   }
+}
+
+// The trace kept in memory by the last st_trace with options.keep, for st_frames without a file:
+// the explorer traces and composes on every mouse move, and writing the trace's JSON Lines to a
+// file for the composer to parse back was a third of that (docs/performance.md).
+std::optional<trace::Trace>& kept_trace() {
+  static std::optional<trace::Trace> t;
+  return t;
+}
+
+// The same events as trace_to_file writes, recorded in memory and kept; their JSON Lines text
+// (each line as the file writer writes it: event_to_json(e).dump()); the fill's image, RGBA, in
+// the result's bytes.
+std::string trace_in_memory(const nlohmann::json& in, const nlohmann::json& o) {
+  require_input(in);
+  const trace::TraceFilter filter = filter_of(o);
+  kept_trace().reset();
+  RgbImage image;
+  if (in.contains("scene")) {
+    const std::string path = in["scene"].get<std::string>();
+    kept_trace() = trace::record_scene(load_scene(path, o), fill_options(o, is_obj_file(path)), filter, &image);
+  } else if (in.contains("triangle")) {
+    kept_trace() = trace::record_triangle(triangle_input(in), fill_options(o, false), filter, &image);
+  } else {
+    kept_trace() = trace::record_polygon(polygon_input(in), fill_options(o, false), filter, &image);
+  }
+  // The image the traced fill drew, for a page to show (a polygon has no render of its own).
+  put_rgba(image, result().bytes);
+  std::string text;
+  for (const trace::Event& e : kept_trace()->events()) text += trace::event_to_json(e).dump() + "\n";
+  return text;
+}
+
+// A frame's display list as viz::to_json writes it, except its pixel blocks when `raw`: their RGBA
+// bytes appended to `bytes`, the op's last element the offset of its block there instead of a PNG
+// data URI. The page puts the bytes on its canvas at once (putImageData); the PNG and its base64
+// were most of a frame's time in the module and in the browser (docs/performance.md).
+std::string frame_json(const viz::Frame& frame, bool raw, std::vector<std::uint8_t>& bytes) {
+  if (!raw) return viz::to_json(frame);
+  std::string out = "{\"w\":" + std::to_string(frame.size().width) + ",\"h\":" +
+                    std::to_string(frame.size().height) + ",\"bg\":\"" +
+                    viz::frame_text::hex_colour(frame.background()) + "\",\"ops\":[";
+  bool first = true;
+  for (const viz::DrawOp& op : frame.ops()) {
+    out += first ? "" : ",";
+    first = false;
+    const auto* p = std::get_if<viz::PixelsOp>(&op.body);
+    if (!p || p->area.area() == 1) {  // one pixel: to_json writes a rectangle
+      out += viz::to_json(op);
+      continue;
+    }
+    // ["P", clip, mark, x, y, w, h, offset]: the same op with the block by reference; clip and
+    // mark as to_json writes them (its text up to the body's coordinates).
+    const std::string whole = viz::to_json(viz::DrawOp{viz::RectOp{p->area, {}, 1}, op.clip, op.mark});
+    out += "[\"P\"" + whole.substr(4, whole.rfind(",\"#") - 4) + "," + std::to_string(bytes.size()) + "]";
+    std::size_t at = bytes.size();
+    bytes.resize(at + p->bgr->size() * 4);
+    for (const auto& c : *p->bgr) {
+      bytes[at++] = c[2];
+      bytes[at++] = c[1];
+      bytes[at++] = c[0];
+      bytes[at++] = 255;
+    }
+  }
+  return out + "]}";
 }
 
 std::string read_file(const char* path) {
@@ -105,22 +184,33 @@ extern "C" {
 
 // The trace `scantrace trace` writes for `input_json` ({"scene": path} | {"triangle": [[x, y] ×3],
 // "colors"?, "width"?, "height"?} | {"polygon": [[[x, y], …], …], "colors"?, …}) under the
-// options (fill options, "level", "triangles", "max_events"): JSON Lines in the result's text.
+// options (fill options, "level", "triangles", "max_events"; "keep": record in memory and keep the
+// trace for st_frames): JSON Lines in the result's text.
 EMSCRIPTEN_KEEPALIVE int st_trace(const char* input_json, const char* options_json) {
   return web::run([&] {
     const nlohmann::json in = web::parse_options(input_json);
-    web::trace_to_file(in, web::parse_options(options_json));
+    const nlohmann::json o = web::parse_options(options_json);
+    if (o.value("keep", false)) {
+      std::string text = web::trace_in_memory(in, o);
+      web::result().text = std::move(text);
+      return;
+    }
+    web::trace_to_file(in, o);
     web::result().text = web::read_file(web::kTraceFile);
   });
 }
 
-// The display lists of the trace file at `path`, steps [first, first + count) (all by default):
+// The display lists of the trace file at `path` (empty: the trace kept by st_trace's "keep"), steps [first, first + count) (all by default):
 // {"steps": [{"kind", "triangle", "first_row", "last_row"}, …], "frames": [frame JSON, …]}
 // at options.width × options.height (1280 × 720), planned as `replay` plans them.
 EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
   return web::run([&] {
     const nlohmann::json o = web::parse_options(options_json);
-    trace::Trace t = trace::Trace::load(path);
+    // An empty path: the trace the last st_trace with options.keep kept.
+    if (!*path && !web::kept_trace()) throw std::invalid_argument("frames: no trace kept (trace with keep: true first)");
+    std::optional<trace::Trace> loaded;
+    if (*path) loaded = trace::Trace::load(path);
+    const trace::Trace& t = *path ? *loaded : *web::kept_trace();
     viz::StepOptions steps;
     steps.rows_per_step = o.value("rows_per_step", 0);
     steps.mode = viz::parse_replay_mode(o.value("mode", std::string("auto")));
@@ -150,7 +240,9 @@ EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
       out += (i ? "," : "") + step.dump();
     }
     out += "],\"frames\":[";
-    for (std::size_t i = first; i < last; ++i) out += (i > first ? "," : "") + viz::to_json(s.frame(i));
+    const bool raw = o.value("blocks", std::string("png")) == "rgba";
+    for (std::size_t i = first; i < last; ++i)
+      out += (i > first ? "," : "") + web::frame_json(s.frame(i), raw, web::result().bytes);
     out += "]}";
     web::result().text = std::move(out);
   });

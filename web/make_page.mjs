@@ -27,9 +27,17 @@ const common = [
   unmodule(read(path.join(dir, 'scantrace_wasm.mjs'))),
   unmodule(read(path.join(here, 'scantrace.mjs'))),
   `async function gunzipBase64(text) {
-  const bytes = Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
+  // A plain loop: Uint8Array.from(atob(text), callback) calls a function per byte.
+  const chars = atob(text);
+  const bytes = new Uint8Array(chars.length);
+  for (let i = 0; i < chars.length; ++i) bytes[i] = chars.charCodeAt(i);
   const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
   return new Uint8Array(await new Response(stream).arrayBuffer());
+}
+// Where the opening time goes (docs/performance.md; web/bench/explorer_drag.mjs reads them):
+// milliseconds from navigation start, kept on the body.
+function openMark(name) {
+  document.body.dataset[name + 'Ms'] = performance.now().toFixed(0);
 }
 function showFatal(e) {
   const el = document.getElementById('error');
@@ -43,7 +51,11 @@ if (kind === 'explorer') {
     ...common,
     unmodule(read(path.join(here, 'explorer', 'state.js'))),
     unmodule(read(path.join(here, 'explorer', 'explorer.js'))),
-    `gunzipBase64('${wasm}').then((wasmBinary) => load({ wasmBinary })).then(start).catch(showFatal);`,
+    `openMark('script');
+gunzipBase64('${wasm}')
+  .then((wasmBinary) => { openMark('inflated'); return load({ wasmBinary }); })
+  .then((st) => { openMark('loaded'); return start(st); })
+  .catch(showFatal);`,
   ];
 } else if (kind === 'player') {
   script = [
@@ -58,7 +70,9 @@ if (kind === 'explorer') {
   console.error('usage: node make_page.mjs explorer|player BUILD_WEB_DIR OUT.html');
   process.exit(2);
 }
-const page = read(path.join(here, kind, `${kind}.html`)).replace('/*SCANTRACE_SCRIPT*/', () => script.join('\n'));
+// The head both pages share (doctype, charset, viewport), then the page's own template.
+const template = read(path.join(here, 'page_head.html')) + read(path.join(here, kind, `${kind}.html`)).replace(/^<!--.*-->\n/, '');
+const page = template.replace('/*SCANTRACE_SCRIPT*/', () => script.join('\n'));
 // Written whole under another name, then renamed: never half a page.
 fs.writeFileSync(out + '.tmp', page);
 fs.renameSync(out + '.tmp', out);

@@ -19,6 +19,8 @@ export interface TraceOptions extends FillOptions {
   level?: 'triangle' | 'scanline' | 'pixel';
   triangles?: number[];
   max_events?: number;
+  /** Record the trace in memory and keep it for frames(null, …) (the same events and text). */
+  keep?: boolean;
 }
 
 export type TraceInput =
@@ -64,6 +66,10 @@ export interface FrameOptions {
   count?: number;
   rows_per_step?: number;
   source?: string;
+  /** 'rgba': each pixel block ("P" op) ends with {width, height, data} (RGBA bytes), which
+   * drawScantraceFrame puts on the canvas at once; 'png' (default): a PNG data URI, loaded
+   * asynchronously. */
+  blocks?: 'png' | 'rgba';
 }
 
 export interface DecodedImage {
@@ -87,7 +93,8 @@ export class Scantrace {
   render(scene: SceneInput, options?: FillOptions): Rendered;
   traceText(input: TraceInput, options?: TraceOptions): string;
   trace(input: TraceInput, options?: TraceOptions): TraceEvent[];
-  frames(trace: string | TraceEvent[], options?: FrameOptions): { steps: FrameStep[]; frames: CanvasFrame[] };
+  /** trace null: the trace kept by the last traceText/trace call with keep: true. */
+  frames(trace: string | TraceEvent[] | null, options?: FrameOptions): { steps: FrameStep[]; frames: CanvasFrame[] };
   /** `scantrace why SCENE X Y --json`'s document (trace/why_schema.json). */
   why(scene: SceneInput, x: number, y: number, options?: FillOptions): Record<string, unknown>;
   /** drawScantraceFrame's JavaScript source (viz/frame_json.hpp). */
@@ -96,6 +103,8 @@ export class Scantrace {
   demoScene(): string;
   /** The picture of the last diff's differences (grade/diff_picture.hpp), or null. */
   lastDiffPicture: { width: number; height: number; rgba: Uint8ClampedArray } | null;
+  /** After traceText/trace with keep: true of a triangle or polygon: the image its traced fill drew. */
+  lastTraceImage: { width: number; height: number; rgba: Uint8ClampedArray } | null;
   /** `scantrace diff SCENE IMAGE --json`'s report. */
   diff(scene: SceneInput, image: DecodedImage, options?: DiffOptions): Record<string, unknown>;
 }

@@ -114,10 +114,18 @@ export class Scantrace {
 
   // The JSON Lines `scantrace trace` writes, as text. input: {scene} | {triangle, colors?,
   // width?, height?} | {polygon, colors?, width?, height?}.
+  // With options.keep, lastTraceImage is the image the traced fill drew, {width, height, rgba}.
   traceText(input, options = {}) {
     const spec = { ...input };
     if ('scene' in spec) spec.scene = this._sceneFile(spec.scene);
-    return this._call('trace', [JSON.stringify(spec), JSON.stringify(options)]).text();
+    const r = this._call('trace', [JSON.stringify(spec), JSON.stringify(options)]);
+    if (options.keep) {
+      const rgba = new Uint8ClampedArray(r.bytes().buffer);
+      const width = spec.width || (spec.scene ? 0 : 512);
+      const height = rgba.length / 4 / (width || 1);
+      this.lastTraceImage = width ? { width, height, rgba } : null;
+    }
+    return r.text();
   }
 
   // The same trace as event objects, one per line (header first, footer last).
@@ -129,11 +137,30 @@ export class Scantrace {
   }
 
   // Display lists of a trace's steps for drawScantraceFrame: {steps, frames}. trace: JSON Lines
-  // text or event objects. options: width, height (1280 × 720), first, count, rows_per_step.
+  // text or event objects, or null: the trace the last traceText/trace call with `keep: true`
+  // recorded in memory (no text parsed again: what the explorer does on every mouse move). options: width, height (1280 × 720), first, count, rows_per_step;
+  // blocks: 'rgba' gives the pixel blocks as {width, height, data} (RGBA bytes), drawn at once,
+  // instead of PNG data URIs (the default, what `replay`'s pages and the SVG backend write).
   frames(trace, options = {}) {
-    const text = typeof trace === 'string' ? trace : trace.map((e) => JSON.stringify(e)).join('\n') + '\n';
-    this.m.FS.writeFile('/in/trace.jsonl', text);
-    return JSON.parse(this._call('frames', ['trace.jsonl', JSON.stringify(options)]).text());
+    let file = '';
+    if (trace !== null) {
+      const text = typeof trace === 'string' ? trace : trace.map((e) => JSON.stringify(e)).join('\n') + '\n';
+      this.m.FS.writeFile('/in/trace.jsonl', text);
+      file = 'trace.jsonl';
+    }
+    const r = this._call('frames', [file, JSON.stringify(options)]);
+    const out = JSON.parse(r.text());
+    if (options.blocks === 'rgba') {
+      // Each pixel block's op ends with the offset of its RGBA bytes in the result's bytes.
+      const bytes = new Uint8ClampedArray(r.bytes().buffer);
+      for (const f of out.frames)
+        for (const op of f.ops)
+          if (op[0] === 'P') {
+            const [w, h, at] = [op[5], op[6], op[7]];
+            op[7] = { width: w, height: h, data: bytes.subarray(at, at + w * h * 4) };
+          }
+    }
+    return out;
   }
 
   // `scantrace why SCENE X Y --json`'s document.

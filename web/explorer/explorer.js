@@ -14,6 +14,7 @@ export async function start(st) {
   let events = [], traceText = '', plan = [], fill = null, diffPicture = null;
   let view = { zoom: 1, x: 0, y: 0 }; // canvas pixel (0, 0) at screen (x, y), `zoom` px a pixel
   let drag = null, marked = null;
+  const dragTimes = [];
 
   const grid = $('grid'), gctx = grid.getContext('2d');
   const frame = $('frame'), fctx = frame.getContext('2d');
@@ -25,8 +26,12 @@ export async function start(st) {
   }
 
   function fillOptions() {
-    return { shading: s.shading, fill_rule: s.fill_rule, subpixel_bits: s.subpixel_bits, method: s.method };
+    const o = { shading: s.shading, fill_rule: s.fill_rule, subpixel_bits: s.subpixel_bits, method: s.method };
+    return s.mode === 'polygon' ? { ...o, winding: s.winding } : o;
   }
+
+  // The vertices the grid shows and drags: the triangle's, the polygon's, none for a scene.
+  const vertices = () => (s.mode === 'triangle' ? s.triangle : s.mode === 'polygon' ? s.polygon : []);
 
   function triangleScene() {
     return {
@@ -35,46 +40,65 @@ export async function start(st) {
     };
   }
 
-  // Re-runs the module on the state: the fill, the trace and its steps (the current frame drawn).
-  function recompute({ frame = true } = {}) {
+  // Re-runs the module on the state: the fill, the trace, its steps and the current step's frame,
+  // all drawn before this returns (a drag calls it on every mouse move: docs/performance.md).
+  function recompute() {
     const t0 = performance.now();
     showError(null);
     try {
       sceneObj = s.mode === 'triangle' ? triangleScene() : null;
-      const input = s.mode === 'triangle' ? triangleScene() : scene;
-      fill = st.render(input, fillOptions());
-      fillCanvas.width = fill.width;
-      fillCanvas.height = fill.height;
-      fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
+      // A scene's fill is its render; a triangle's or polygon's is the image its traced fill drew
+      // (the same pixels as the render of the one-face scene, the node test holds it to that; one
+      // fill a mouse move instead of two).
+      if (s.mode === 'scene') fill = st.render(scene, fillOptions());
       const traced = s.mode === 'triangle'
         ? { triangle: s.triangle, colors: s.colors, width: s.size[0], height: s.size[1] }
-        : { scene };
-      traceText = st.traceText(traced, { ...fillOptions(), level: s.mode === 'triangle' ? 'scanline' : 'triangle' });
+        : s.mode === 'polygon' ? { polygon: [s.polygon], width: s.size[0], height: s.size[1] } : { scene };
+      // Kept in the module for the frames of its steps (composeStep).
+      traceText = st.traceText(traced, { ...fillOptions(), level: s.mode === 'scene' ? 'triangle' : 'scanline', keep: true });
+      const traceMs = performance.now() - t0;
+      if (s.mode !== 'scene') fill = { ...st.lastTraceImage, ms: traceMs };
+      if (fillCanvas.width !== fill.width || fillCanvas.height !== fill.height) {
+        fillCanvas.width = fill.width;
+        fillCanvas.height = fill.height;
+      }
+      fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
       events = traceText.split('\n').filter((l) => l).map((l) => JSON.parse(l));
-      // The plan of steps (a frame sequence of its own: a tenth of a second), only when asked
-      // for a frame; a drag keeps the plan of the triangle it started from.
-      if (frame || !plan.length) plan = st.frames(traceText, { count: 0 }).steps;
-      s.step = Math.min(s.step, Math.max(0, plan.length - 1));
-      $('fill-ms').textContent = `${fill.ms.toFixed(2)} ms`;
+      composeStep();
+      $('fill-ms').textContent = s.mode === 'scene' ? `render ${fill.ms.toFixed(2)} ms` : `fill and trace ${fill.ms.toFixed(1)} ms`;
     } catch (e) {
       showError(e);
     }
-    redraw({ frame });
-    // The module's work and the synchronous drawing of one change (the frame's pixel blocks
-    // decode after): what a drag costs a frame of the display (docs/performance.md).
-    document.body.dataset[frame ? 'recomputeMs' : 'dragMs'] = (performance.now() - t0).toFixed(1);
+    redraw();
+    document.body.dataset.recomputeMs = (performance.now() - t0).toFixed(1);
   }
 
-  function redraw({ frame = true } = {}) {
+  // The plan of steps and the current step's frame from one call (one plan), the frame's pixel
+  // blocks as bytes: nothing waits for an image to load.
+  let shownFrame = null;
+  function composeStep() {
+    const source = s.mode === 'scene' ? scene.name : `the explorer\u2019s ${s.mode}`;
+    let r = st.frames(null, { first: s.step, count: 1, source, blocks: 'rgba' });
+    plan = r.steps;
+    if (s.step >= plan.length && plan.length) {
+      s.step = plan.length - 1;
+      r = st.frames(null, { first: s.step, count: 1, source, blocks: 'rgba' });
+    }
+    shownFrame = r.frames[0] || null;
+  }
+
+  function redraw() {
     drawGrid();
-    if (frame) drawStep();
+    drawStep();
     showTables();
-    history.replaceState(null, '', toHash(s));
+    // The address follows the state, but not on every mouse move of a drag (a replaceState cost
+    // 5 ms of the move's time): the release writes it.
+    if (!(drag && drag.vertex !== undefined)) history.replaceState(null, '', toHash(s));
   }
 
   function fitView() {
-    const w = s.mode === 'triangle' ? s.size[0] : fill ? fill.width : 512;
-    const h = s.mode === 'triangle' ? s.size[1] : fill ? fill.height : 512;
+    const w = s.mode !== 'scene' ? s.size[0] : fill ? fill.width : 512;
+    const h = s.mode !== 'scene' ? s.size[1] : fill ? fill.height : 512;
     view.zoom = Math.max(0.25, Math.min(grid.width / w, grid.height / h));
     view.x = (grid.width - w * view.zoom) / 2;
     view.y = (grid.height - h * view.zoom) / 2;
@@ -129,20 +153,21 @@ export async function start(st) {
       gctx.lineTo(view.x + fillCanvas.width * z, sy);
       gctx.stroke();
     }
-    if (s.mode === 'triangle') {
+    if (s.mode !== 'scene') {
       gctx.strokeStyle = '#000';
       gctx.lineWidth = 1.5;
       gctx.beginPath();
-      s.triangle.forEach((v, i) => {
+      vertices().forEach((v, i) => {
         const [px, py] = toScreen(v);
         if (i === 0) gctx.moveTo(px, py);
         else gctx.lineTo(px, py);
       });
       gctx.closePath();
       gctx.stroke();
-      s.triangle.forEach((v, i) => {
+      vertices().forEach((v, i) => {
         const [px, py] = toScreen(v);
-        gctx.fillStyle = toHex(s.colors[i]);
+        // A polygon's vertices take the command's default colours: red, green, blue, repeated.
+        gctx.fillStyle = s.mode === 'triangle' ? toHex(s.colors[i]) : ['#ff0000', '#00ff00', '#0000ff'][i % 3];
         gctx.strokeStyle = '#000';
         gctx.beginPath();
         gctx.arc(px, py, 7, 0, 2 * Math.PI);
@@ -158,16 +183,16 @@ export async function start(st) {
     }
   }
 
-  async function drawStep() {
+  function drawStep() {
     const n = plan.length;
     $('step-no').textContent = n ? `step ${s.step + 1} / ${n}` : 'no steps';
-    if (!n) return;
-    const wanted = s.step;
-    const f = st.frames(traceText, { first: wanted, count: 1, source: s.mode === 'triangle' ? 'the explorer\u2019s triangle' : scene.name }).frames[0];
-    frame.width = f.w;
-    frame.height = f.h;
-    await drawFrame(fctx, f);
-    frame.dataset.step = String(wanted);
+    if (!n || !shownFrame) return;
+    if (frame.width !== shownFrame.w || frame.height !== shownFrame.h) {
+      frame.width = shownFrame.w;
+      frame.height = shownFrame.h;
+    }
+    drawFrame(fctx, shownFrame);
+    frame.dataset.step = String(s.step);
   }
 
   function showTables() {
@@ -192,11 +217,20 @@ export async function start(st) {
 
   function setStep(k) {
     s.step = Math.max(0, Math.min(plan.length - 1, k));
+    try {
+      composeStep();
+    } catch (e) {
+      showError(e);
+    }
     redraw();
   }
 
   function why(x, y) {
     marked = [x, y];
+    if (s.mode === 'polygon') {
+      $('why').textContent = '(why answers for a triangle or a scene: the pixel\u2019s spans are in the trace)';
+      return redraw();
+    }
     try {
       const story = st.why(s.mode === 'triangle' ? sceneObj : scene, x, y, fillOptions());
       $('why').textContent = JSON.stringify(story, null, 1);
@@ -219,8 +253,17 @@ export async function start(st) {
 
   grid.addEventListener('mousedown', (e) => {
     const [px, py] = pointer(e);
-    if (s.mode === 'triangle') {
-      const i = s.triangle.findIndex((v) => Math.hypot(toScreen(v)[0] - px, toScreen(v)[1] - py) <= 9);
+    if (s.mode !== 'scene') {
+      const i = vertices().findIndex((v) => Math.hypot(toScreen(v)[0] - px, toScreen(v)[1] - py) <= 9);
+      if (s.mode === 'polygon' && e.altKey && i >= 0 && s.polygon.length > 3) {
+        s.polygon.splice(i, 1);  // alt-click: the vertex removed
+        return recompute();
+      }
+      if (s.mode === 'polygon' && e.shiftKey && i < 0) {
+        const [x, y] = toCanvas(px, py);
+        s.polygon.push([snap(x), snap(y)]);  // shift-click: a vertex added after the last
+        return recompute();
+      }
       if (i >= 0) {
         drag = { vertex: i };
         return;
@@ -233,10 +276,13 @@ export async function start(st) {
     const [px, py] = pointer(e);
     if (drag.vertex !== undefined) {
       const [x, y] = toCanvas(px, py);
-      s.triangle[drag.vertex] = [snap(x), snap(y)];
-      // While dragging: the fill, the trace and the tables follow the mouse; the composed frame
-      // of the step (the slowest part, a few hundred ms) waits for the release.
-      recompute({ frame: false });
+      vertices()[drag.vertex] = [snap(x), snap(y)];
+      // While dragging, everything follows the mouse: the fill, the trace, the tables and the
+      // composed frame of the current step. The handler's time, kept for the bench
+      // (web/bench/explorer_drag.mjs) and the test's report.
+      const t0 = performance.now();
+      recompute();
+      dragTimes.push(performance.now() - t0);
     } else {
       const [x0, y0, vx, vy] = drag.pan;
       if (Math.hypot(px - x0, py - y0) > 3) drag.moved = true;
@@ -246,7 +292,7 @@ export async function start(st) {
     }
   });
   window.addEventListener('mouseup', (e) => {
-    if (drag && drag.vertex !== undefined) recompute();
+    if (drag && drag.vertex !== undefined) history.replaceState(null, '', toHash(s));
     if (drag && drag.pan && !drag.moved) {
       const [x, y] = toCanvas(...pointer(e)).map(Math.floor);
       if (fill && x >= 0 && y >= 0 && x < fill.width && y < fill.height) why(x, y);
@@ -293,6 +339,7 @@ export async function start(st) {
   bindOption('fill-rule', 'fill_rule');
   bindOption('method', 'method');
   bindOption('bits', 'subpixel_bits', Number);
+  bindOption('winding', 'winding');
   [0, 1, 2].forEach((i) => {
     const el = $(`color${i}`);
     el.value = toHex(s.colors[i]);
@@ -303,6 +350,12 @@ export async function start(st) {
   });
   $('triangle-mode').addEventListener('click', () => {
     s.mode = 'triangle';
+    diffPicture = null;
+    fitView();
+    recompute();
+  });
+  $('polygon-mode').addEventListener('click', () => {
+    s.mode = 'polygon';
     diffPicture = null;
     fitView();
     recompute();
@@ -370,7 +423,7 @@ export async function start(st) {
     state: () => structuredClone(s),
     vertexOnScreen: (i) => {
       const r = grid.getBoundingClientRect();
-      const [px, py] = toScreen(s.triangle[i]);
+      const [px, py] = toScreen(vertices()[i]);
       return [r.left + px * (r.width / grid.width), r.top + py * (r.height / grid.height)];
     },
     pixelOnScreen: (x, y) => {
@@ -379,7 +432,12 @@ export async function start(st) {
       return [r.left + px * (r.width / grid.width), r.top + py * (r.height / grid.height)];
     },
     traceText: () => traceText,
+    // Milliseconds of each mouse move of a vertex drag so far (the handler: module and drawing).
+    dragTimes: () => dragTimes.slice(),
     scene: () => (s.mode === 'triangle' ? JSON.stringify(triangleScene()) : null),
+    // The module (the JavaScript API) and the frame shown, for the console and the test.
+    module: () => st,
+    framePixels: () => Array.from(fctx.getImageData(0, 0, frame.width, frame.height).data),
     fillPixels: () => Array.from(fillCanvas.getContext('2d').getImageData(0, 0, fillCanvas.width, fillCanvas.height).data),
   };
   // Milliseconds from navigation to a working page (the test prints it; docs/performance.md).

@@ -3,6 +3,9 @@
 export const defaults = {
   mode: 'triangle',
   triangle: [[20, 20], [250, 80], [300, 400]],
+  // Polygon mode: one closed contour (a star: it crosses itself, so the winding rule shows).
+  polygon: [[256, 40], [380, 440], [60, 190], [450, 190], [130, 440]],
+  winding: 'even-odd',
   colors: [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
   size: [512, 512],
   shading: 'gouraud',
@@ -19,7 +22,10 @@ export const fromHex = (h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 1
 export function toHash(s) {
   const p = new URLSearchParams();
   if (s.mode === 'triangle') p.set('triangle', s.triangle.map((v) => v.join(',')).join(';'));
-  else p.set('scene', s.sceneName || 'demo');
+  else if (s.mode === 'polygon') {
+    p.set('polygon', s.polygon.map((v) => v.join(',')).join(';'));
+    p.set('winding', s.winding);
+  } else p.set('scene', s.sceneName || 'demo');
   p.set('colors', s.colors.map((c) => hex(c).slice(1)).join(';'));
   p.set('size', s.size.join('x'));
   for (const k of ['shading', 'fill_rule', 'subpixel_bits', 'method', 'step']) p.set(k, String(s[k]));
@@ -35,6 +41,14 @@ export function fromHash(hash) {
     const v = p.get('triangle').split(';').map((xy) => xy.split(',').map(num));
     if (v.length === 3 && v.every((xy) => xy.length === 2 && xy.every(Number.isFinite))) s.triangle = v;
   }
+  if (p.has('polygon')) {
+    const v = p.get('polygon').split(';').map((xy) => xy.split(',').map(num));
+    if (v.length >= 3 && v.length <= 64 && v.every((xy) => xy.length === 2 && xy.every(Number.isFinite))) {
+      s.polygon = v;
+      s.mode = 'polygon';
+    }
+  }
+  if (['even-odd', 'non-zero'].includes(p.get('winding'))) s.winding = p.get('winding');
   if (p.has('scene')) s.mode = 'scene';
   if (p.has('colors')) {
     const c = p.get('colors').split(';');

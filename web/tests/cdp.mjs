@@ -57,7 +57,13 @@ export async function launch() {
       }
       // Chromium's helper processes may still write into the profile after the browser exits
       // (a clean clone's CI run failed on ENOTEMPTY): retry the removal a while.
-      fs.rmSync(profile, { recursive: true, force: true, maxRetries: 20, retryDelay: 100 });
+      // Still failing after that (seen at a load of 8 on 2 cores): a leftover temporary profile
+      // is said, not a failure of the checks that ran.
+      try {
+        fs.rmSync(profile, { recursive: true, force: true, maxRetries: 20, retryDelay: 100 });
+      } catch (e) {
+        console.log(`note: the Chromium profile ${profile} was not removed (${e.code})`);
+      }
     },
   };
 }

@@ -63,7 +63,8 @@ try {
     await mouse('mousePressed', from);
     for (let i = 1; i <= 5; ++i) await mouse('mouseMoved', [from[0] + (to[0] - from[0]) * i / 5, from[1] + (to[1] - from[1]) * i / 5]);
     await mouse('mouseReleased', to);
-    console.log(`a drag's move took ${await b.evaluate('document.body.dataset.dragMs')} ms (fill, trace, tables), its release ${await b.evaluate('document.body.dataset.recomputeMs')} ms (and the plan and the frame)`);
+    const moves = await b.evaluate('explorer.dragTimes()');
+    console.log(`a drag's moves took ${moves.map((t) => t.toFixed(1)).join(', ')} ms (fill, trace, plan, the step's frame drawn; web/bench/explorer_drag.mjs takes medians)`);
     const tri = (await b.evaluate('explorer.state()')).triangle;
     assert.notDeepStrictEqual(tri[2], [300, 400]);
     // Snapped to the 2^-8 grid.
@@ -91,6 +92,94 @@ try {
     await key('PageUp', 'PageUp');
     assert.equal(await stepShown(), n - 11);
     await until('the frame of the step drawn', async () => (await b.evaluate("document.getElementById('frame').dataset.step")) === String(n - 11));
+  });
+
+  await check("the step's frame drawn from RGBA blocks is the frame drawn from PNG blocks", async () => {
+    // The page draws the frame's pixel blocks from bytes (putImageData, the clip applied by hand);
+    // drawScantraceFrame with the PNG data URIs (drawImage under the canvas's clip) must give the
+    // same pixels.
+    const same = await b.evaluate(`(async () => {
+      const st = explorer.module();
+      const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
+      const s = explorer.state();
+      const f = st.frames(explorer.traceText(), { first: s.step, count: 1, source: 'the explorer\u2019s triangle' }).frames[0];
+      const c = document.createElement('canvas');
+      c.width = f.w;
+      c.height = f.h;
+      const ctx = c.getContext('2d');
+      await draw(ctx, f);
+      const want = ctx.getImageData(0, 0, f.w, f.h).data;
+      const got = explorer.framePixels();
+      let differ = 0;
+      for (let i = 0; i < want.length; ++i) if (want[i] !== got[i]) ++differ;
+      return [got.length === want.length, differ, f.ops.filter((op) => op[0] === 'P').length];
+    })()`);
+    assert.equal(same[0], true, 'frame sizes differ');
+    assert.ok(same[2] > 0, 'the frame has no pixel block');
+    assert.equal(same[1], 0, `${same[1]} channel values differ`);
+  });
+
+  await check('a clipped RGBA block is drawn as its clipped PNG block, also on a scaled context', async () => {
+    // No block of a triangle's replay has a clip; made here: a 9x7 block at (-2, -1) of the clip
+    // [5, 4, 5, 3] (so clipped on every side), as bytes and as a PNG data URI (the test's encoder).
+    const [w, h] = [9, 7];
+    const rgba = new Uint8Array(w * h * 4);
+    for (let i = 0; i < w * h; ++i) rgba.set([(i * 37) & 255, (i * 91) & 255, (i * 13 + 50) & 255, 255], i * 4);
+    const uri = 'data:image/png;base64,' + encodePng({ width: w, height: h, rgba }).toString('base64');
+    const differ = await b.evaluate(`(async () => {
+      const draw = new Function(explorer.module().canvasScript() + '; return drawScantraceFrame;')();
+      const data = new Uint8ClampedArray(${JSON.stringify(Array.from(rgba))});
+      // At scale 1 (putImageData) and scale 2 (a page drawing at device pixels: drawImage).
+      const pixels = async (block, scale) => {
+        const c = document.createElement('canvas');
+        c.width = 20 * scale;
+        c.height = 12 * scale;
+        const ctx = c.getContext('2d');
+        ctx.setTransform(scale, 0, 0, scale, 0, 0);
+        await draw(ctx, { w: 20, h: 12, bg: '#808080', ops: [['P', [5, 4, 5, 3], null, -2, -1, ${w}, ${h}, block]] });
+        return ctx.getImageData(0, 0, c.width, c.height).data;
+      };
+      let n = 0;
+      for (const scale of [1, 2]) {
+        const [a, b] = [await pixels({ width: ${w}, height: ${h}, data }, scale), await pixels(${JSON.stringify(uri)}, scale)];
+        for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
+      }
+      return n;
+    })()`);
+    assert.equal(differ, 0, `${differ} channel values differ`);
+  });
+
+  await check('a polygon: its trace, a dragged vertex and the winding rule are the native trace --polygon', async () => {
+    // A self-crossing pentagon (a star): under non-zero its centre is inside, under even-odd not.
+    const star = [[256, 40], [380, 440], [60, 190], [450, 190], [130, 440]];
+    const arg = (p) => p.map((v) => v.join(',')).join(' ');
+    await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}#polygon=${star.map((v) => v.join(',')).join(';')}&winding=non-zero&shading=flat&step=5` });
+    await until('the polygon page', () => b.evaluate("!!document.body && document.body.dataset.ready === '1' && explorer.state().mode === 'polygon'"));
+    native(['trace', '--polygon', arg(star), '--winding', 'non-zero', '--shading', 'flat', '-o', 'star.jsonl']);
+    assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'star.jsonl'), 'utf8')));
+    // The centre (256, 250) is filled under non-zero: not the background's white.
+    const centre = await b.evaluate('explorer.fillPixels().slice((250 * 512 + 256) * 4, (250 * 512 + 256) * 4 + 3)');
+    assert.notDeepStrictEqual(centre, [255, 255, 255]);
+
+    const from = await b.evaluate('explorer.vertexOnScreen(1)');
+    const to = [from[0] + 40.4, from[1] - 61.3];
+    await mouse('mousePressed', from);
+    for (let i = 1; i <= 4; ++i) await mouse('mouseMoved', [from[0] + (to[0] - from[0]) * i / 4, from[1] + (to[1] - from[1]) * i / 4]);
+    await mouse('mouseReleased', to);
+    const moved = (await b.evaluate('explorer.state()')).polygon;
+    assert.notDeepStrictEqual(moved[1], star[1]);
+    assert.deepStrictEqual([moved[0], ...moved.slice(2)], [star[0], ...star.slice(2)]);
+    native(['trace', '--polygon', arg(moved), '--winding', 'non-zero', '--shading', 'flat', '-o', 'star_moved.jsonl']);
+    assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'star_moved.jsonl'), 'utf8')));
+    assert.ok((await b.evaluate('location.hash')).includes(`polygon=${moved.map((v) => v.join(',')).join(';')}`));
+
+    await b.evaluate("(() => { const w = document.getElementById('winding'); w.value = 'even-odd'; w.dispatchEvent(new Event('change')); })()");
+    native(['trace', '--polygon', arg(moved), '--winding', 'even-odd', '--shading', 'flat', '-o', 'star_even_odd.jsonl']);
+    assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'star_even_odd.jsonl'), 'utf8')));
+    const centre2 = await b.evaluate('explorer.fillPixels().slice((250 * 512 + 256) * 4, (250 * 512 + 256) * 4 + 3)');
+    assert.deepStrictEqual(centre2, [255, 255, 255]);
+    // Back to the triangle the next checks expect.
+    await b.evaluate("document.getElementById('triangle-mode').click()");
   });
 
   const scene = path.join(work, 'explorer_triangle.json');

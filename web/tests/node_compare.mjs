@@ -125,6 +125,40 @@ check('trace polygon', () => {
   const colors = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1], [1, 0, 1], [0.5, 0.5, 0.5]];
   assert.deepStrictEqual(st.trace({ polygon: contours, colors }, { winding: 'non-zero' }), readJsonl(out));
 });
+// The explorer's path: a trace kept in memory (keep: true) has the native trace's text, and its
+// frames (frames(null, …), pixel blocks as RGBA bytes) are the frames of the trace's text with
+// their PNG blocks decoded here: the same plan, the same ops, the same pixels.
+check('kept trace and its frames with RGBA blocks', () => {
+  const out = path.join(work, 'kept.jsonl');
+  native(['trace', '--triangle', '20,20 250,80 299.5,371.25', '--shading', 'flat', '-o', out]);
+  const text = st.traceText({ triangle: [[20, 20], [250, 80], [299.5, 371.25]] }, { shading: 'flat', keep: true });
+  assert.deepStrictEqual(readJsonl(out), text.split('\n').filter((l) => l).map((l) => JSON.parse(l)));
+  // The image the kept trace's fill drew is `scantrace render`'s of the one-face scene.
+  const one = path.join(work, 'kept_triangle.json');
+  fs.writeFileSync(one, JSON.stringify({ width: 512, height: 512, background: [1, 1, 1], vertices: [[20, 20], [250, 80], [299.5, 371.25]],
+    vcolors: [[1, 0, 0], [0, 1, 0], [0, 0, 1]], faces: [[0, 1, 2]], depth: [0, 0, 0] }));
+  native(['render', one, '--shading', 'flat', '-o', path.join(work, 'kept_triangle.png')]);
+  const want = decodePng(fs.readFileSync(path.join(work, 'kept_triangle.png')));
+  assert.deepStrictEqual([st.lastTraceImage.width, st.lastTraceImage.height], [want.width, want.height]);
+  assert.ok(Buffer.from(st.lastTraceImage.rgba).equals(Buffer.from(want.rgba)), 'the kept trace\'s image differs from the render');
+  for (const step of [0, 12, 30]) {
+    const raw = st.frames(null, { first: step, count: 1, blocks: 'rgba', source: 'kept.jsonl' });
+    const png = st.frames(fs.readFileSync(out, 'utf8'), { first: step, count: 1, source: 'kept.jsonl' });
+    assert.deepStrictEqual(raw.steps, png.steps);
+    const [a, b] = [raw.frames[0], png.frames[0]];
+    assert.equal(a.ops.length, b.ops.length);
+    let blocks = 0;
+    a.ops.forEach((op, i) => {
+      if (op[0] !== 'P') return assert.deepStrictEqual(op, b.ops[i]);
+      assert.deepStrictEqual(op.slice(0, 7), b.ops[i].slice(0, 7));
+      const decoded = decodePng(Buffer.from(b.ops[i][7].replace(/^data:image\/png;base64,/, ''), 'base64'));
+      assert.deepStrictEqual([op[7].width, op[7].height], [decoded.width, decoded.height]);
+      assert.ok(Buffer.from(op[7].data).equals(Buffer.from(decoded.rgba)), `step ${step}: block ${i}'s pixels differ`);
+      ++blocks;
+    });
+    assert.ok(blocks > 0, `step ${step} has no pixel block`);
+  }
+});
 // The course scene's first 300 faces (its whole trace is 49 MB, a minute to decode twice here).
 for (const [name, file] of scenes.filter(([n]) => n !== 'many_faces'))
   check(`trace scene ${name}`, () => {

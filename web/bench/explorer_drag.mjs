@@ -1,0 +1,68 @@
+// The explorer's speed in headless Chromium (docs/performance.md, "In the browser"): how long it
+// takes to open (navigation start to the first complete frame, by the page's clock: the module
+// compiled and instantiated, the triangle filled and traced, the current step's frame drawn), and
+// what a mouse move of a vertex drag costs (the page's handler around the module's fill, trace,
+// plan and frame and their drawing; and the DevTools round trip of the synthesized move, which
+// returns once the renderer has handled the event). Medians; nothing is asserted.
+//
+//   node --experimental-websocket web/bench/explorer_drag.mjs EXPLORER.html [OPENS] [MOVES] [OTHER.html]
+// With OTHER.html (another build's explorer, e.g. main's), the opens alternate between the two
+// pages, each in a fresh browser, and both medians are printed.
+import path from 'node:path';
+
+import { launch, until } from '../tests/cdp.mjs';
+
+const [explorer, opensArg, movesArg, other] = process.argv.slice(2);
+const opens = Number(opensArg || 7), moves = Number(movesArg || 200);
+const median = (v) => [...v].sort((a, b) => a - b)[v.length >> 1];
+const quartiles = (v) => { const s = [...v].sort((a, b) => a - b); return [s[s.length >> 2], s[(3 * s.length) >> 2]]; };
+
+// Opens in fresh browsers (nothing compiled or cached from an earlier load), pages alternated.
+async function openTimes(pages, n) {
+  const times = pages.map(() => []), parts = pages.map(() => []);
+  for (let i = 0; i < n; ++i)
+    for (const [k, page] of pages.entries()) {
+      const fresh = await launch();
+      try {
+        await fresh.page('Page.enable');
+        await fresh.page('Page.navigate', { url: `file://${path.resolve(page)}#step=12` });
+        await until('the page to start', () => fresh.evaluate("!!document.body && document.body.dataset.ready === '1'"), 60000);
+        times[k].push(Number(await fresh.evaluate('document.body.dataset.readyMs')));
+        parts[k].push(await fresh.evaluate("['script', 'inflated', 'loaded', 'ready'].map((k) => document.body.dataset[k + 'Ms']).join('/')"));
+      } finally {
+        await fresh.close();
+      }
+    }
+  pages.forEach((page, k) => {
+    console.log(`open ${page} in a fresh browser (navigation start to the first complete frame, ${n} loads): median ${median(times[k])} ms, all [${times[k].join(', ')}]`);
+    console.log(`  script started / wasm inflated / module instantiated / first frame drawn, ms: ${parts[k].join(', ')}`);
+  });
+}
+await openTimes(other ? [explorer, other] : [explorer], opens);
+
+const b = await launch();
+try {
+  for (const d of ['Runtime', 'Page']) await b.page(`${d}.enable`);
+  await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}#step=12` });
+  await until('the page to start', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"), 60000);
+
+  // Vertex 2 of the course triangle dragged back and forth along a diagonal, step 13 shown.
+  const from = await b.evaluate('explorer.vertexOnScreen(2)');
+  const mouse = (type, [x, y]) => b.page('Input.dispatchMouseEvent', { type, x, y, button: 'left', buttons: type === 'mouseReleased' ? 0 : 1, clickCount: 1 });
+  const trip = [];
+  await mouse('mousePressed', from);
+  let at = from;
+  for (let i = 1; i <= moves; ++i) {
+    const k = ((i % 40) < 20 ? i % 20 : 20 - (i % 20)) * 2.7;
+    at = [from[0] - k, from[1] - 0.6 * k];
+    const t0 = performance.now();
+    await mouse('mouseMoved', at);
+    trip.push(performance.now() - t0);
+  }
+  await mouse('mouseReleased', at);
+  const handler = await b.evaluate('explorer.dragTimes()');
+  const [q1, q3] = quartiles(handler);
+  console.log(`drag of vertex 2, step 13 shown (${handler.length} moves): handler median ${median(handler).toFixed(1)} ms (quartiles ${q1.toFixed(1)}, ${q3.toFixed(1)}); DevTools round trip of a move median ${median(trip).toFixed(1)} ms`);
+} finally {
+  await b.close();
+}

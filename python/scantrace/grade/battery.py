@@ -11,7 +11,7 @@ import numpy as np
 import scantrace
 
 from . import diagnose, fill_models, hidden
-from .probes import COLOURS, GOURAUD, PROBES
+from .probes import COLOURS, GOURAUD, PAIR_REGIONS, PAIRS, PROBES
 
 
 @dataclasses.dataclass
@@ -117,6 +117,10 @@ class Battery:
             self._probe_call("f_shading", probe)
         for probe in GOURAUD:
             self._probe_call("g_shading", probe)
+        names = self._scene_inputs(PAIRS)
+        self._call("pairs_render_f", "render_img",
+                   [{"npy": names[k]} for k in ("faces", "vertices", "vcolors", "depth")] + ["f"],
+                   timeout=self.session.limits.call_seconds * 6)
         self.hidden = hidden.scenes(self.hidden_seed, self.rubric.hidden_scenes) \
             if self.hidden_seed is not None else []
         for k, scene in enumerate(self.hidden):
@@ -130,6 +134,7 @@ class Battery:
         self._vector_interp()
         self._probes_flat()
         self._probes_gouraud()
+        self._probes_pairs()
         for k, scene in enumerate(self.hidden):
             for shading in ("f", "g"):
                 self._scene_test(f"hidden{k + 1}_render_{shading}", scene, shading,
@@ -279,6 +284,37 @@ class Battery:
         self._add(name, "probes_gouraud", ok / len(GOURAUD),
                   [f"{ok} of {len(GOURAUD)} probes filled and coloured right."] + lines,
                   verdict=verdict)
+
+    def _probes_pairs(self):
+        """render_img on pairs of faces (probes.PAIRS): a shared edge, tied depths, distinct
+        depths; each pair's region compared with the reference, the order causes diagnosed on
+        the pixels each order changes (as on the hidden scenes), with a picture."""
+        name = "Probes: pairs of faces (render_img: a shared edge, tied and distinct depths)"
+        if "render_img" not in self.functions:
+            return self._missing(name, "probes_pairs", "render_img")
+        r = self.results["pairs_render_f"]
+        if r.status != "ok":
+            return self._add(name, "probes_pairs", 0.0, [self._failed_call(r)], verdict=r.status)
+        img, error = canvas(r.value, (512, 512, 3))
+        if img is None:
+            return self._add(name, "probes_pairs", 0.0, [f"`render_img` {error}."])
+        reference = scantrace.render_img(PAIRS["faces"], PAIRS["vertices"], PAIRS["vcolors"],
+                                         PAIRS["depth"], "f")
+        fixed, causes = diagnose.diagnose_image(img, reference, _uncovered(PAIRS, "f", reference),
+                                                _painter_alternatives(PAIRS, "f"))
+        self._add_causes(causes, "probe scene `pairs` (render_img, flat): ")
+        ok, lines = 0, []
+        for pair, what, faces, region in PAIR_REGIONS:
+            wrong = np.abs(fixed[region] - reference[region]).max(axis=2) > 1.5 / 255
+            if not wrong.any():
+                ok += 1
+                continue
+            rows = np.flatnonzero(wrong.any(axis=1))
+            lines.append(f"- pair `{pair}` ({what}, faces {faces[0]} and {faces[1]}): "
+                         f"{int(wrong.sum())} pixels differ, first on row "
+                         f"{int(rows[0]) + (region[0].start or 0)}")
+        self._add(name, "probes_pairs", ok / len(PAIR_REGIONS),
+                  [f"{ok} of {len(PAIR_REGIONS)} pairs drawn exactly."] + lines)
 
     def _scene_test(self, call_id, scene, shading, name, key, visibility, painter):
         func = "render_img" if painter else ("f_shading" if shading == "f" else "g_shading")

@@ -68,7 +68,7 @@ def test_the_zip_holds_gradescopes_two_scripts_executable_and_the_options(tmp_pa
 
 def test_run_autograder_grades_the_submission_into_results_json(tmp_path, sandbox_ok):
     # The transposed student: everything right once img[x][y] is undone, so its score is the
-    # rubric's maximum (tests of the run: vector_interp, both probe sets, 2 hidden scenes x 2
+    # rubric's maximum (tests of the run: vector_interp, the three probe sets, 2 hidden scenes x 2
     # shadings) less the rubric's deduction for `transposed`, here a custom 7 points.
     custom = tmp_path / "r.toml"
     custom.write_text("[causes]\ntransposed = 7\n")
@@ -81,7 +81,7 @@ def test_run_autograder_grades_the_submission_into_results_json(tmp_path, sandbo
     points = rubric.load(custom)
     hidden = points.hidden_scenes * 2 * points.points("hidden_scene")
     maximum = sum(points.points(k) for k in ("vector_interp", "vector_interp_degenerate",
-                                             "probes_flat", "probes_gouraud")) + hidden
+                                             "probes_flat", "probes_gouraud", "probes_pairs")) + hidden
     assert results["extra_data"]["max_score"] == maximum
     assert results["score"] == maximum - 7
     assert [c["id"] for c in results["extra_data"]["causes"]] == ["transposed"]

@@ -206,9 +206,17 @@ def diagnose_gouraud(results, colours, g_shading):
                   picture_pixels=picture, legend=IMAGE_LEGEND)]
 
 
+def channel_error(a, b):
+    """Per pixel, the largest channel difference |a − b| of two H x W x 3 images. (A numpy
+    reduction over the 3 channels is several times slower than two maxima of slices: it was most
+    of the grader's own time on 512² scenes.)"""
+    d = np.abs(a - b)
+    return np.maximum(np.maximum(d[..., 0], d[..., 1]), d[..., 2])
+
+
 def image_mismatch(a, b):
     """The fraction of pixels whose colour differs by more than 1.5/255 in some channel."""
-    return float((np.abs(a - b).max(axis=2) > 1.5 / 255).mean())
+    return float((channel_error(a, b) > 1.5 / 255).mean())
 
 
 def diagnose_image(student, reference, uncovered, alternatives):
@@ -224,7 +232,7 @@ def diagnose_image(student, reference, uncovered, alternatives):
         fixed = np.ascontiguousarray(fix(student))
         m = image_mismatch(fixed, reference)
         if m < base * 0.5:
-            differ = np.abs(student - reference).max(axis=2) > 1.5 / 255
+            differ = channel_error(student, reference) > 1.5 / 255
             causes.append(Cause(cause_id, 1 - m / base,
                                 f"{base:.1%} of the pixels differ; {m:.1%} after undoing it",
                                 picture_pixels=image_picture(student, reference, differ),
@@ -233,7 +241,7 @@ def diagnose_image(student, reference, uncovered, alternatives):
     if uncovered.any() and base > 0:
         bg = np.median(student[uncovered], axis=0)
         if np.abs(bg - 1.0).max() > 2 / 255:
-            same = uncovered & (np.abs(student - bg).max(axis=2) <= 1.5 / 255)
+            same = uncovered & (channel_error(student, bg) <= 1.5 / 255)
             share = same.sum() / uncovered.sum()
             if share >= CONFIDENCE:
                 picture = image_picture(student, reference, same)
@@ -246,12 +254,12 @@ def diagnose_image(student, reference, uncovered, alternatives):
                 base = image_mismatch(student, reference)
     for cause_id, alt in alternatives.items():
         # Only the pixels this order changes decide (a wrong fill elsewhere does not blur it).
-        deciding = np.abs(alt - reference).max(axis=2) > 1.5 / 255
+        deciding = channel_error(alt, reference) > 1.5 / 255
         if base == 0 or not deciding.any():
             continue
         close = 1.5 / 255
-        as_alt = int((np.abs(student - alt).max(axis=2)[deciding] <= close).sum())
-        as_ref = int((np.abs(student - reference).max(axis=2)[deciding] <= close).sum())
+        as_alt = int((channel_error(student, alt)[deciding] <= close).sum())
+        as_ref = int((channel_error(student, reference)[deciding] <= close).sum())
         if as_alt >= 0.5 * deciding.sum() and as_alt > 2 * as_ref:
             causes.append(Cause(cause_id, as_alt / (as_alt + as_ref),
                                 f"of the {int(deciding.sum())} pixels this order changes, yours "

@@ -84,6 +84,7 @@ def _pairs_scene():
 
 
 PAIRS = _pairs_scene()
+PAIRS_CORNER = 48     # every pair lies in the canvas's top-left 48 x 48 pixels
 # Each pair: its name, what it separates, its faces, and the canvas region it lies in (rows,
 # columns) where the image is compared.
 PAIR_REGIONS = (

@@ -38,6 +38,16 @@ bool runs_here(int argc, char** argv) {
   return false;
 }
 
+// Whether this command line is `diff` (after the main app's own flags).
+bool runs_diff(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "-q" || arg == "--quiet") continue;
+    return arg == "diff";
+  }
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,14 +58,19 @@ int main(int argc, char** argv) {
   }
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::filesystem::path tools =
-      (ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path()) / "scantrace-tools";
+  const std::filesystem::path dir =
+      ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path();
+  const std::filesystem::path tools = dir / "scantrace-tools";
   if (!std::filesystem::exists(tools, ec)) {
     constexpr AddCommand here[]{add_demo_command, add_render_command};
     constexpr const char* left_out[]{"trace", "replay", "explain", "check", "step", "stress",
                                      "bench", "why",   "diff",    "explore", "grade"};
     return run_app(argc, argv, here, left_out);
   }
+  // `diff` runs in scantrace-diff, which loads no video or window library (cli/diff_main.cpp).
+  if (const std::filesystem::path diff = dir / "scantrace-diff";
+      runs_diff(argc, argv) && std::filesystem::exists(diff, ec))
+    execv(diff.c_str(), argv);
   execv(tools.c_str(), argv);
   std::fprintf(stderr, "scantrace: error: cannot run %s: %s\n", tools.c_str(),
                std::strerror(errno));

@@ -52,9 +52,13 @@ endforeach()
 install(FILES ${PROJECT_SOURCE_DIR}/trace/trace_schema.json
         DESTINATION ${CMAKE_INSTALL_DATADIR}/scantrace COMPONENT development)
 
-# `scantrace` hands every command but render to `scantrace-tools`, which it finds beside itself.
+# `scantrace` hands every command but render to `scantrace-tools` (`diff` to `scantrace-diff`),
+# which it finds beside itself.
 install(TARGETS scantrace scantrace_tools RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         COMPONENT runtime)
+if(TARGET scantrace_diff)
+  install(TARGETS scantrace_diff RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+endif()
 
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/scantrace-config.cmake.in
                               ${PROJECT_BINARY_DIR}/scantrace-config.cmake

@@ -180,7 +180,11 @@ class DiffRun {
     }
   }
 
-  // Stage 3: which face does the image show at each differing pixel?
+  // Stage 3: which face does the image show at each differing pixel? Of the faces whose colour
+  // matches: one with an area before a zero-area one (a face the fill draws wrote the pixel more
+  // likely than one the reference never draws: a zero-area face lying on a neighbour's outline
+  // with the neighbour's mean colour was named `degenerate_drawn` for the neighbour's extra
+  // pixels), then one covering the pixel (closed rule), then the closest colour.
   void match_shown_faces() {
     const Rgb32f background = Rgb32f::from(scene_.background);
     for (std::size_t i : differing_) {
@@ -188,15 +192,18 @@ class DiffRun {
       const Rgb32f got = image_(x, y);
       int best = kNoFace;
       double best_err = match_tol_;
-      bool best_covers = false;
+      bool best_covers = false, best_area = false;
       for (int f : grid_.at(x, y)) {
         const FaceGeometry& g = faces_[f];
         if (!g.within(x, y, 1.5)) continue;
         const double err = max_diff(g.color_at(x, y, options_.shading), got);
         if (err > match_tol_) continue;
+        const bool area = !g.degenerate();
         const bool covers = f != ids_.ids[i] && g.covers(x, y, FillRule::closed);
-        if ((covers && !best_covers) || (covers == best_covers && err < best_err - 1e-7))
-          best = f, best_err = err, best_covers = covers;
+        const bool better = best != kNoFace && area != best_area ? area
+                            : covers != best_covers                ? covers
+                                                                   : err < best_err - 1e-7;
+        if (better) best = f, best_err = err, best_covers = covers, best_area = area;
       }
       const double bg_err = max_diff(got, background);
       if (bg_err <= tol_ && (best == kNoFace || bg_err <= best_err)) best = kBackground;
@@ -611,8 +618,15 @@ class DiffRun {
     std::stable_sort(report_.faces.begin(), report_.faces.end(),
                      [](const FaceDamage& a, const FaceDamage& b) { return a.pixels > b.pixels; });
     if (report_.faces.size() > 5) report_.faces.resize(5);
+    // The faces listed are those whose pixels the table counts as `missing_face`: a face hidden
+    // everywhere that the painter's order explains is `order`, not missing (the list and the
+    // table disagreed).
+    std::vector<char> listed(n_faces_, 0);
+    for (std::size_t k = 0; k < differing_.size(); ++k)
+      if (cats_[k] == "missing_face" && ids_.ids[differing_[k]] >= 0)
+        listed[static_cast<std::size_t>(ids_.ids[differing_[k]])] = 1;
     for (std::size_t f = 0; f < n_faces_; ++f)
-      if (missing_[f]) {
+      if (listed[f]) {
         const auto pixels = ref_pixels_[f];
         report_.missing_faces.push_back(
             {static_cast<int>(f), pixels, faces_[static_cast<int>(f)].shape(static_cast<int>(pixels))});
@@ -631,7 +645,10 @@ class DiffRun {
         e.got = image_(x, y).color();
         e.reference_face = ids_.ids[i];
         e.image_face = seen_[i];
-        e.why = why(scene_, options_, x, y).summary();
+        // The faces in question, traced even where their bounding box ends a pixel short of the
+        // centre (a span one pixel too wide reaches past it): their row's span and where x falls
+        // is the line that matters (it was left out for faces that do not write the pixel).
+        e.why = why(scene_, options_, x, y, 1.5).summary({e.reference_face, e.image_face});
         report_.examples.push_back(std::move(e));
       }
   }

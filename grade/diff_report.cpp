@@ -17,6 +17,22 @@ double percent(std::int64_t n, std::int64_t of) {
   return of > 0 ? 100.0 * n / of : 0.0;
 }
 
+// The per-pixel categories, compactly: runs [start, length, code] of equal categories along the
+// canvas's rows (pixel p = y * width + x), code indexing `legend`; agreeing pixels are in no run.
+nlohmann::json category_runs(const std::vector<std::uint8_t>& map) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (std::size_t p = 0; p < map.size();) {
+    const std::uint8_t c = map[p];
+    std::size_t end = p + 1;
+    while (end < map.size() && map[end] == c) ++end;
+    if (c != 0) runs.push_back({p, end - p, c - 1});
+    p = end;
+  }
+  nlohmann::json legend = nlohmann::json::array();
+  for (const char* c : kCategories) legend.push_back(c);
+  return {{"encoding", "runs"}, {"legend", legend}, {"runs", runs}};
+}
+
 }  // namespace
 
 nlohmann::json DiffReport::to_json() const {
@@ -56,7 +72,8 @@ nlohmann::json DiffReport::to_json() const {
           {"missing_faces", missing_json},
           {"colour", {{"diagnosis", colour_diagnosis}, {"max_error", max_colour_error}}},
           {"notes", notes},
-          {"examples", examples_json}};
+          {"examples", examples_json},
+          {"category_map", category_runs(category_map)}};
 }
 
 std::string DiffReport::to_markdown() const {

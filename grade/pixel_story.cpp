@@ -101,20 +101,24 @@ const char* to_string(Outcome o) {
   return "?";
 }
 
-PixelStory why(const Scene& scene, const FillOptions& options, int x, int y) {
-  if (x < 0 || y < 0 || x >= scene.width || y >= scene.height)
-    throw std::out_of_range(
-        fmt::format("pixel ({}, {}) is outside the {}x{} canvas", x, y, scene.width, scene.height));
-  std::vector<int> faces;
-  const Scene around = scene_around(scene, x, y, snap_margin(options), &faces);
+namespace {
+
+// Step 1: row y of the faces around (x, y), traced as the whole scene draws them. Of each face's
+// pixels only the one asked about: the work and the memory are linear in the faces around the
+// pixel, not in their spans' pixels (docs/robustness.md).
+trace::Trace trace_row_around(const Scene& scene, const FillOptions& options, int x, int y,
+                              double extra_margin, std::vector<int>& faces) {
+  const Scene around = scene_around(scene, x, y, snap_margin(options) + extra_margin, &faces);
   trace::TraceFilter filter;
   filter.level = TraceLevel::pixel;
   filter.rows = trace::RowRange{y, y};
-  // Row y of each face, and of its pixels only the one asked about: the work and the memory are
-  // linear in the faces around the pixel, not in their spans' pixels (docs/robustness.md).
   filter.columns = trace::RowRange{x, x};
-  const trace::Trace t = trace::record_scene(around, options, filter);
+  return trace::record_scene(around, options, filter);
+}
 
+// Step 2: the story's header: the pixel, the canvas and the options; the background until a face
+// writes the pixel.
+PixelStory empty_story(const Scene& scene, const FillOptions& options, int x, int y) {
   PixelStory story;
   story.x = x, story.y = y;
   story.width = scene.width, story.height = scene.height;
@@ -123,90 +127,126 @@ PixelStory why(const Scene& scene, const FillOptions& options, int x, int y) {
   story.visibility = to_string(options.visibility);
   story.background = scene.background;
   story.final_color = scene.background;
+  return story;
+}
 
-  std::size_t done = 0;
-  for (int local : t.triangles()) {
-    if ((++done & 1023) == 0) check_interrupt();
-    FaceStep s;
-    s.face = faces[local];
-    const FaceGeometry geo(scene, s.face, options.subpixel_bits);
-    for (int k = 0; k < 3; ++k) {
-      s.vertices.push_back(scene.vertices[scene.faces[s.face][k]]);
-      s.colors.push_back(scene.vcolors[scene.faces[s.face][k]]);
-      s.depth += scene.depth[scene.faces[s.face][k]];
-    }
-    s.depth /= 3;
-    int e = -1;
-    const OnOutline on = geo.on_outline(x, y, &e);
-    if (on != OnOutline::no)
-      s.outline = on == OnOutline::edge ? "edge" : "vertex", s.outline_edge = e;
-    if (const auto skipped = t.skipped(local)) {
-      s.outcome = Outcome::skipped;
-      s.skip_reason = skipped->reason;
-      story.faces.push_back(std::move(s));
-      continue;
-    }
-    const auto& table = t.edge_table(local);
-    s.first_row = INT64_MAX, s.last_row = INT64_MIN;
-    for (const auto& edge : table.edges)
-      if (edge.first_row <= edge.last_row)
-        s.first_row = std::min(s.first_row, edge.first_row),
-        s.last_row = std::max(s.last_row, edge.last_row);
-    if (s.first_row > s.last_row) s.first_row = 0, s.last_row = -1;
-    if (!t.has_scanline(local, y)) {
-      s.outcome = Outcome::row_outside;
-      story.faces.push_back(std::move(s));
-      continue;
-    }
-    const trace::Scanline& row = t.scanline(local, y);
-    s.active_points = row.active_points;
-    s.span = row.span;
-    s.span_colors = row.span_colors;
-    if (!row.span || x < row.span->x_begin) {
-      s.outcome = Outcome::left_of_span;
-      if (row.span && x >= row.span->x_end) s.outcome = Outcome::right_of_span;
-    } else if (x >= row.span->x_end) {
-      s.outcome = Outcome::right_of_span;
-    } else {
-      for (const trace::Pixel* p : t.pixels(local))
-        if (p->x == x && p->y == y) {
-          s.color = p->color, s.t = p->t, s.depth_test = p->depth_test;
-          s.outcome =
-              p->depth_test && !p->depth_test->passed ? Outcome::depth_rejected : Outcome::written;
-        }
-      if (s.outcome == Outcome::written) story.final_color = *s.color, story.final_face = s.face;
-    }
-    story.faces.push_back(std::move(s));
+// Step 3a: the face as the scene gives it: vertices, colours, mean depth, and whether the centre
+// lies exactly on its outline.
+FaceStep describe_face(const Scene& scene, const FillOptions& options, int face, int x, int y) {
+  FaceStep s;
+  s.face = face;
+  for (int k = 0; k < 3; ++k) {
+    s.vertices.push_back(scene.vertices[scene.faces[face][k]]);
+    s.colors.push_back(scene.vcolors[scene.faces[face][k]]);
+    s.depth += scene.depth[scene.faces[face][k]];
   }
+  s.depth /= 3;
+  int e = -1;
+  const OnOutline on = FaceGeometry(scene, face, options.subpixel_bits).on_outline(x, y, &e);
+  if (on != OnOutline::no) s.outline = on == OnOutline::edge ? "edge" : "vertex", s.outline_edge = e;
+  return s;
+}
 
-  // A centre exactly on an outline: who owns it, and who does not. The faces named beside each
-  // are the first four on the outline (three of them other than it), found once: comparing every
-  // pair was quadratic in the faces around the pixel.
+// Step 3b: the face's scanlines, from its edge table (none: 0..-1).
+void find_scanlines(const trace::EdgeTableEvent& table, FaceStep& s) {
+  s.first_row = INT64_MAX, s.last_row = INT64_MIN;
+  for (const auto& edge : table.edges)
+    if (edge.first_row <= edge.last_row)
+      s.first_row = std::min(s.first_row, edge.first_row),
+      s.last_row = std::max(s.last_row, edge.last_row);
+  if (s.first_row > s.last_row) s.first_row = 0, s.last_row = -1;
+}
+
+// Step 3c: row y's active points and span, and where x falls: left or right of the span, or
+// inside it (written, or rejected by the depth test).
+void place_on_row(const trace::Trace& t, int local, int x, int y, FaceStep& s) {
+  const trace::Scanline& row = t.scanline(local, y);
+  s.active_points = row.active_points;
+  s.span = row.span;
+  s.span_colors = row.span_colors;
+  if (!row.span || x < row.span->x_begin) {
+    s.outcome = row.span && x >= row.span->x_end ? Outcome::right_of_span : Outcome::left_of_span;
+    return;
+  }
+  if (x >= row.span->x_end) {
+    s.outcome = Outcome::right_of_span;
+    return;
+  }
+  for (const trace::Pixel* p : t.pixels(local))
+    if (p->x == x && p->y == y) {
+      s.color = p->color, s.t = p->t, s.depth_test = p->depth_test;
+      s.outcome =
+          p->depth_test && !p->depth_test->passed ? Outcome::depth_rejected : Outcome::written;
+    }
+}
+
+// Step 3: what the fill did about the pixel in one face.
+FaceStep face_step(const Scene& scene, const FillOptions& options, const trace::Trace& t,
+                   int local, int face, int x, int y) {
+  FaceStep s = describe_face(scene, options, face, x, y);
+  if (const auto skipped = t.skipped(local)) {
+    s.outcome = Outcome::skipped;
+    s.skip_reason = skipped->reason;
+    return s;
+  }
+  find_scanlines(t.edge_table(local), s);
+  if (!t.has_scanline(local, y)) {
+    s.outcome = Outcome::row_outside;
+    return s;
+  }
+  place_on_row(t, local, x, y, s);
+  return s;
+}
+
+// Step 4: a centre exactly on an outline: who owns it, and who does not. The faces named beside
+// each are the first four on the outline (three of them other than it), found once: comparing
+// every pair was quadratic in the faces around the pixel.
+void add_outline_notes(const FillOptions& options, PixelStory& story) {
   std::vector<const FaceStep*> on_outline;
   for (const FaceStep& o : story.faces)
     if (!o.outline.empty() && o.outcome != Outcome::skipped && on_outline.size() < 4)
       on_outline.push_back(&o);
+  const auto gets = [](const FaceStep& f) {
+    return f.outcome == Outcome::written || f.outcome == Outcome::depth_rejected;
+  };
   for (const FaceStep& s : story.faces) {
     if (s.outline.empty() || s.outcome == Outcome::skipped) continue;
-    const bool gets = s.outcome == Outcome::written || s.outcome == Outcome::depth_rejected;
     std::string others;
     int listed = 0;
     for (const FaceStep* op : on_outline)
-      if (const FaceStep& o = *op; o.face != s.face && ++listed <= 3) {
-        const bool o_gets = o.outcome == Outcome::written || o.outcome == Outcome::depth_rejected;
+      if (const FaceStep& o = *op; o.face != s.face && ++listed <= 3)
         others += fmt::format("{}face {} on the other side {} it", others.empty() ? "" : "; ",
-                              o.face, o_gets ? "gets" : "does not get");
-      }
+                              o.face, gets(o) ? "gets" : "does not get");
     std::string rule =
         options.fill_rule == FillRule::closed
             ? "the closed rule gives every face a centre on its outline (shared edges are painted "
               "twice)"
-        : gets ? "the top-left rule gives it to this face (a top or left edge of it)"
-               : "the top-left rule does not give it to this face (a right or bottom edge of it)";
+        : gets(s) ? "the top-left rule gives it to this face (a top or left edge of it)"
+                  : "the top-left rule does not give it to this face (a right or bottom edge of it)";
     story.notes.push_back(fmt::format("the centre lies exactly on {} {} of face {}: {}{}",
                                       s.outline, s.outline_edge, s.face, rule,
                                       others.empty() ? "" : "; " + others));
   }
+}
+
+}  // namespace
+
+PixelStory why(const Scene& scene, const FillOptions& options, int x, int y,
+               double extra_margin) {
+  if (x < 0 || y < 0 || x >= scene.width || y >= scene.height)
+    throw std::out_of_range(
+        fmt::format("pixel ({}, {}) is outside the {}x{} canvas", x, y, scene.width, scene.height));
+  std::vector<int> faces;
+  const trace::Trace t = trace_row_around(scene, options, x, y, extra_margin, faces);
+  PixelStory story = empty_story(scene, options, x, y);
+  std::size_t done = 0;
+  for (int local : t.triangles()) {
+    if ((++done & 1023) == 0) check_interrupt();
+    FaceStep s = face_step(scene, options, t, local, faces[local], x, y);
+    if (s.outcome == Outcome::written) story.final_color = *s.color, story.final_face = s.face;
+    story.faces.push_back(std::move(s));
+  }
+  add_outline_notes(options, story);
   return story;
 }
 
@@ -225,14 +265,15 @@ std::string PixelStory::to_text() const {
   return out;
 }
 
-std::string PixelStory::summary() const {
+std::string PixelStory::summary(const std::vector<int>& also) const {
   std::string out = fmt::format("Pixel ({}, {}): ", x, y);
   int n = 0;
   for (const auto& f : faces)
     if (f.outcome != Outcome::skipped) ++n;
   if (faces.empty()) out += "no face's bounding box holds its centre. ";
   for (const auto& f : faces)
-    if (f.outcome == Outcome::written || f.outcome == Outcome::depth_rejected)
+    if (f.outcome == Outcome::written || f.outcome == Outcome::depth_rejected ||
+        std::find(also.begin(), also.end(), f.face) != also.end())
       out += face_sentence(f, x, y, shading == "gouraud") + ". ";
   out += fmt::format("{} face(s) around it. ", n);
   // One paragraph: the first two boundary notes at most.

@@ -64,14 +64,18 @@ struct PixelStory {
   nlohmann::json to_json() const;
   // The whole story, several lines.
   std::string to_text() const;
-  // One paragraph (the diff report's examples).
-  std::string summary() const;
+  // One paragraph (the diff report's examples): the faces that wrote the pixel, and those of
+  // `also` (whichever way the fill placed the pixel: its row's span and where x falls).
+  std::string summary(const std::vector<int>& also = {}) const;
 };
 
 // Throws std::out_of_range when (x, y) is not on the canvas. The scene must be valid. The work
 // and the memory are linear in the faces around the pixel (one row and one pixel event of each);
 // a long run stops on SIGINT/SIGTERM (io/interrupt.hpp).
-PixelStory why(const Scene& scene, const FillOptions& options, int x, int y);
+// `extra_margin` widens the faces' bounding boxes (by default only by the snapping margin): the
+// diff's examples also trace faces that end a pixel short of (x, y).
+PixelStory why(const Scene& scene, const FillOptions& options, int x, int y,
+               double extra_margin = 0);
 
 // What one face around the pixel costs why() at most: its five events (the begin event's
 // vertices, the edge table, row y's active points and span), its FaceStep and its sentence,

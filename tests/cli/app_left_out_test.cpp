@@ -1,4 +1,4 @@
-// The demo's build of scantrace-tools (SCANTRACE_ALL_COMMANDS off, cli/main.cpp) leaves out the
+// The demo's build (SCANTRACE_TOOLS off: `scantrace` alone, cli/main_render.cpp) leaves out the
 // subcommands the demo does not run: naming one is a usage error that says how to build it, not
 // "unknown subcommand". Run in-process through run_app with such a list, as that build's main()
 // does (the suite itself is the full build).

@@ -115,6 +115,7 @@ const std::set<std::string> kNotNumbers = {
     "--cull",    "--depth",      "--mode",    "--level",     "--winding",  "--explain",
     "--save-dir", "--reproducers", "--family", "--format",   "SCENE",      "IMAGE",      "TRACE",
     "--module",  // grade (the Python grader's argparse help: its numbers are INT and FLOAT)
+    "--gradescope-zip", "--source",  // grade: the autograder zip and the clone put in it
 };
 
 // What each subcommand is given besides the option under test: its positionals, valid.

@@ -1,5 +1,6 @@
 // `scantrace why` and `scantrace diff` as a user runs them: exit statuses, outputs under -o, and
 // bad inputs (one line on stderr, exit 1, nothing half-written).
+#include <cstdio>
 #include <cstring>
 #include <limits>
 
@@ -190,4 +191,21 @@ TEST_CASE("diff: what the image decoder prints goes into scantrace's one warning
   CHECK(lines(r.err) == 1);
   CHECK(r.err == "scantrace: warning: crc.png: the png decoder said: libpng warning: tEXt: CRC "
                  "error\n");
+}
+
+TEST_CASE("diff: the process loads no video or window library", "[grade][cli]") {
+  // `scantrace diff` runs in scantrace-diff (cli/diff_main.cpp): the dynamic loader's own list of
+  // the files it opens, over the exec from `scantrace`, holds OpenCV's codecs but not its video
+  // I/O or HighGUI (260 libraries and 0.3-0.5 s of start-up with them, docs/grading.md).
+  const std::string command = std::string("LD_DEBUG=files '") + SCANTRACE_BINARY +
+                              "' diff --help 2>&1 >/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::string out;
+  char buffer[4096];
+  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+  CHECK(pclose(pipe) == 0);
+  CHECK(out.find("libopencv_imgcodecs") != std::string::npos);  // the list is the loader's
+  CHECK(out.find("libopencv_videoio") == std::string::npos);
+  CHECK(out.find("libopencv_highgui") == std::string::npos);
 }

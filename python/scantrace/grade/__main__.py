@@ -19,6 +19,10 @@ One SUBMISSION writes DIR/results.json (Gradescope's format), DIR/report.md and 
 several write DIR/NAME/... for each and DIR/class.csv, DIR/class.html. A SUBMISSION is a
 directory of .py files, one .py file or a .zip.
 
+--gradescope-zip OUT.zip (no SUBMISSION) writes a Gradescope autograder instead: setup.sh,
+run_autograder, the project's source and the grading options given with it (--hidden-seed,
+--rubric, --scene, --module, the limits), for Gradescope's Ubuntu 24.04 image.
+
 Exit status: 0 every submission graded (whatever its score), 1 a submission could not be graded
 at all (or the sandbox cannot run here), 2 usage."""
 
@@ -34,7 +38,7 @@ def _finite(text):
 def _parser():
     p = argparse.ArgumentParser(prog="scantrace grade", description=DESCRIPTION,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("submissions", nargs="+", metavar="SUBMISSION")
+    p.add_argument("submissions", nargs="*", metavar="SUBMISSION")
     p.add_argument("-o", "--output", default="grade-out", metavar="DIR",
                    help="where the reports go (default: grade-out)")
     p.add_argument("--jobs", type=int, default=1, metavar="INT",
@@ -55,11 +59,38 @@ def _parser():
     p.add_argument("--memory-mb", type=int, default=2048, metavar="INT",
                    help="address-space limit of the student's process (default 2048)")
     p.add_argument("--quiet", action="store_true", help="no progress on stderr")
+    p.add_argument("--gradescope-zip", metavar="OUT.zip",
+                   help="write a Gradescope autograder (setup.sh, run_autograder, the source and "
+                        "these options) instead of grading")
+    p.add_argument("--source", metavar="DIR",
+                   help="with --gradescope-zip: the scantrace clone to put in it (default: the "
+                        "one this package was built from)")
     return p
+
+
+def _gradescope_zip(args):
+    """The autograder zip; its scene is checked here, where the instructor can fix it."""
+    from . import gradescope
+    try:
+        if args.scene:
+            import scantrace
+            course_arrays(scantrace.load_scene(args.scene))
+        count = gradescope.write_zip(args.gradescope_zip, args)
+    except (ValueError, OSError) as e:
+        print(f"scantrace grade: {e}", file=sys.stderr)
+        return 1
+    if not args.quiet:
+        print(f"{args.gradescope_zip}: Gradescope autograder (setup.sh, run_autograder, "
+              f"{count} source files); upload it with the Ubuntu 24.04 base image")
+    return 0
 
 
 def main(argv=None):
     args = _parser().parse_args(argv)
+    if bool(args.gradescope_zip) == bool(args.submissions):
+        _parser().error("give SUBMISSION... to grade, or --gradescope-zip OUT.zip alone")
+    if args.source and not args.gradescope_zip:
+        _parser().error("--source goes with --gradescope-zip")
     if args.jobs < 1:
         _parser().error("--jobs: expected a number >= 1")
     if args.memory_mb < 64:
@@ -69,6 +100,8 @@ def main(argv=None):
     except rubric_module.RubricError as e:
         print(f"scantrace grade: {e}", file=sys.stderr)
         return 1
+    if args.gradescope_zip:
+        return _gradescope_zip(args)
     if not args.no_sandbox:
         problem = sandbox_problem()
         if problem:

@@ -11,7 +11,7 @@ import numpy as np
 import scantrace
 
 from . import diagnose, fill_models, hidden
-from .probes import COLOURS, GOURAUD, PROBES
+from .probes import COLOURS, GOURAUD, PAIR_REGIONS, PAIRS, PAIRS_CORNER, PROBES
 
 
 @dataclasses.dataclass
@@ -117,6 +117,10 @@ class Battery:
             self._probe_call("f_shading", probe)
         for probe in GOURAUD:
             self._probe_call("g_shading", probe)
+        names = self._scene_inputs(PAIRS)
+        # Six faces: the plain call limit (a scene's is 6 times that).
+        self._call("pairs_render_f", "render_img",
+                   [{"npy": names[k]} for k in ("faces", "vertices", "vcolors", "depth")] + ["f"])
         self.hidden = hidden.scenes(self.hidden_seed, self.rubric.hidden_scenes) \
             if self.hidden_seed is not None else []
         for k, scene in enumerate(self.hidden):
@@ -130,6 +134,7 @@ class Battery:
         self._vector_interp()
         self._probes_flat()
         self._probes_gouraud()
+        self._probes_pairs()
         for k, scene in enumerate(self.hidden):
             for shading in ("f", "g"):
                 self._scene_test(f"hidden{k + 1}_render_{shading}", scene, shading,
@@ -280,6 +285,43 @@ class Battery:
                   [f"{ok} of {len(GOURAUD)} probes filled and coloured right."] + lines,
                   verdict=verdict)
 
+    def _probes_pairs(self):
+        """render_img on pairs of faces (probes.PAIRS): a shared edge, tied depths, distinct
+        depths; each pair's region compared with the reference, the order causes diagnosed on
+        the pixels each order changes (as on the hidden scenes), with a picture."""
+        name = "Probes: pairs of faces (render_img: a shared edge, tied and distinct depths)"
+        if "render_img" not in self.functions:
+            return self._missing(name, "probes_pairs", "render_img")
+        r = self.results["pairs_render_f"]
+        if r.status != "ok":
+            return self._add(name, "probes_pairs", 0.0, [self._failed_call(r)], verdict=r.status)
+        img, error = canvas(r.value, (512, 512, 3))
+        if img is None:
+            return self._add(name, "probes_pairs", 0.0, [f"`render_img` {error}."])
+        reference = scantrace.render_img(PAIRS["faces"], PAIRS["vertices"], PAIRS["vcolors"],
+                                         PAIRS["depth"], "f")
+        # The pairs lie in the canvas's top-left corner: compared there only (a square, so a
+        # transposed canvas is still the corner transposed), a tenth of the grader's time.
+        corner = (slice(0, PAIRS_CORNER), slice(0, PAIRS_CORNER))
+        alternatives = {k: v[corner] for k, v in _painter_alternatives(PAIRS, "f").items()}
+        fixed, causes = diagnose.diagnose_image(
+            np.ascontiguousarray(img[corner]), reference[corner],
+            _uncovered(PAIRS, "f", reference)[corner], alternatives)
+        reference = reference[corner]
+        self._add_causes(causes, "probe scene `pairs` (render_img, flat): ")
+        ok, lines = 0, []
+        for pair, what, faces, region in PAIR_REGIONS:
+            wrong = diagnose.channel_error(fixed[region], reference[region]) > 1.5 / 255
+            if not wrong.any():
+                ok += 1
+                continue
+            rows = np.flatnonzero(wrong.any(axis=1))
+            lines.append(f"- pair `{pair}` ({what}, faces {faces[0]} and {faces[1]}): "
+                         f"{int(wrong.sum())} pixels differ, first on row "
+                         f"{int(rows[0]) + (region[0].start or 0)}")
+        self._add(name, "probes_pairs", ok / len(PAIR_REGIONS),
+                  [f"{ok} of {len(PAIR_REGIONS)} pairs drawn exactly."] + lines)
+
     def _scene_test(self, call_id, scene, shading, name, key, visibility, painter):
         func = "render_img" if painter else ("f_shading" if shading == "f" else "g_shading")
         if func not in self.functions:
@@ -324,7 +366,8 @@ def _mean_depth(scene):
 def _uncovered(scene, shading, white):
     black = scantrace.render(scene["vertices"], scene["faces"], scene["vcolors"], scene["depth"],
                              shading=shading, background=(0.0, 0.0, 0.0))
-    return (white == 1.0).all(axis=2) & (black == 0.0).all(axis=2)
+    w, b = white == 1.0, black == 0.0
+    return w[..., 0] & w[..., 1] & w[..., 2] & b[..., 0] & b[..., 1] & b[..., 2]
 
 
 def _painter_alternatives(scene, shading):

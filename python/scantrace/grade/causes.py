@@ -41,6 +41,12 @@ CATALOGUE = {
         "x is accumulated as x += dx/dy in floating point; on rows where the edge crosses a "
         "pixel centre exactly, the sum is a hair off and ceil() moves the span end by one pixel.",
         "compute x from the edge's start on every row: x0 + (y − y0)·(x1 − x0)/(y1 − y0)"),
+    "horizontal_edge_skipped": (
+        "Triangles with a horizontal edge are not drawn at all (a guard against dy = 0 in the "
+        "slope returns from the whole face), though a horizontal edge only means the edge is "
+        "never active.",
+        "skip only the horizontal edge, not the face: leave it out of the edge list (`if a[1] == "
+        "b[1]: continue`) and fill the rows with the other two"),
     "degenerate_drawn": (
         "Zero-area (collinear) faces are drawn; no pixel centre is inside them, so they must "
         "fill nothing.",
@@ -89,6 +95,7 @@ class Cause:
     detail: str = ""
     picture: str | None = None          # file name of the evidence picture, beside the report
     picture_pixels: object = None       # the picture itself, written by the report
+    legend: str = "grey: both; red: expected only; blue: yours only"   # what the picture shows
 
     @property
     def sentence(self):

@@ -179,6 +179,15 @@ def float_drift(tri, shape):
     return mask
 
 
+def horizontal_edge_skipped(tri, shape):
+    """A face with a horizontal edge is not drawn at all (a guard against dy = 0 in the slope
+    returning early, or a `ZeroDivisionError` caught around the whole face)."""
+    ex = _exact(tri)
+    if any(a[1] == b[1] for a, b in ((ex[0], ex[1]), (ex[1], ex[2]), (ex[2], ex[0]))):
+        return np.zeros(shape, dtype=bool)
+    return correct(tri, shape)
+
+
 def degenerate(tri):
     return _is_degenerate(_exact(tri))
 
@@ -198,6 +207,7 @@ MODELS = {
     ("bottom_row_dropped", ""): bottom_row_dropped,
     ("edge_lag", ""): edge_lag,
     ("float_drift", ""): float_drift,
+    ("horizontal_edge_skipped", ""): horizontal_edge_skipped,
 }
 
 

@@ -53,3 +53,45 @@ GOURAUD = tuple(
     Probe(f"gouraud_{''.join(map(str, order))}", f"a triangle with its vertices in order {order}",
           tuple(((2, 3), (19, 9), (8, 21))[k] for k in order))
     for order in ORDERS) + (PROBES[1], PROBES[3], PROBES[7])
+
+
+def _pairs_scene():
+    """Pairs of faces for render_img (whose canvas is the course's 512 x 512; the faces lie in its
+    top-left corner), each pair separating one rule:
+      shared edge: faces 0 and 1 share the diagonal (14, 2)-(2, 14), which passes through pixel
+        centres; face 0 is nearer, so it is drawn last, and a closed rule lets it take the
+        diagonal's pixels, which the top-left rule gives to face 1 (its left edge);
+      tied depths: faces 2 and 3 overlap with equal mean depths: drawn in face order (a stable
+        sort), face 3 ends on top;
+      distinct depths: faces 4 (farther) and 5 overlap: face 5 ends on top."""
+    vertices = np.array([[2, 2], [14, 2], [2, 14], [14, 14],           # the shared edge
+                         [20, 2], [36, 4], [22, 18], [26, 6], [40, 10], [30, 22],
+                         [2, 20], [18, 22], [6, 36], [8, 24], [22, 28], [12, 40]],
+                        dtype=np.int64)
+    faces = np.array([[0, 1, 2], [1, 3, 2], [4, 5, 6], [7, 8, 9], [10, 11, 12],
+                      [13, 14, 15]], dtype=np.int64)
+    face_depth = (4.0, 8.0, 6.0, 6.0, 9.0, 3.0)
+    face_colour = ((0.9, 0.2, 0.1), (0.1, 0.6, 0.9), (0.8, 0.7, 0.1), (0.3, 0.1, 0.7),
+                   (0.2, 0.8, 0.3), (0.9, 0.4, 0.7))
+    depth = np.zeros(len(vertices))
+    vcolors = np.zeros((len(vertices), 3))
+    for f, face in enumerate(faces):
+        for v in face:
+            if f != 1 or v == 3:       # the shared vertices keep face 0's depth and colour
+                depth[v], vcolors[v] = face_depth[f], face_colour[f]
+    # The shared edge's vertices give face 1 a mean depth of (4 + 4 + 8) / 3 > 4: still farther.
+    return {"faces": faces, "vertices": vertices, "vcolors": vcolors, "depth": depth}
+
+
+PAIRS = _pairs_scene()
+PAIRS_CORNER = 48     # every pair lies in the canvas's top-left 48 x 48 pixels
+# Each pair: its name, what it separates, its faces, and the canvas region it lies in (rows,
+# columns) where the image is compared.
+PAIR_REGIONS = (
+    ("shared_edge", "two faces sharing an edge through pixel centres", (0, 1),
+     (slice(0, 17), slice(0, 17))),
+    ("tied_depths", "two overlapping faces of equal mean depth (drawn in face order)", (2, 3),
+     (slice(0, 25), slice(18, 43))),
+    ("distinct_depths", "two overlapping faces, the farther drawn first", (4, 5),
+     (slice(18, 43), slice(0, 25))),
+)

@@ -52,7 +52,7 @@ def _cause_md(c):
     lines = [f"### `{c.id}`", "", c.sentence, "", f"**Fix:** {c.fix}", "",
              f"**Evidence:** {c.evidence}"]
     if c.picture:
-        lines += ["", f"![{c.id}: grey both, red expected only, blue yours only]({c.picture})"]
+        lines += ["", f"![{c.id}: {c.legend}]({c.picture})"]
     return lines
 
 
@@ -94,7 +94,7 @@ def html_report(graded, directory):
         if c.picture:
             data = base64.b64encode((directory / c.picture).read_bytes()).decode()
             picture = (f"<img alt='{c.id}' src='data:image/png;base64,{data}'>"
-                       "<p class='legend'>grey: both; red: expected only; blue: yours only</p>")
+                       f"<p class='legend'>{html.escape(c.legend)}</p>")
         causes += (f"<section><h3><code>{c.id}</code></h3><p>{_inline(c.sentence)}</p>"
                    f"<p><b>Fix:</b> {_inline(c.fix)}</p><p><b>Evidence:</b> "
                    f"{_inline(c.evidence)}</p>{picture}</section>")

@@ -173,6 +173,11 @@ WRONG = {
     "edge_lag": [_line("CROSSING", "xs.append(a[0] + (max(y - 1, a[1]) - a[1]) * (b[0] - a[0])"
                                    " / (b[1] - a[1]))")],
     "float_drift": [_fill_function(ACCUMULATED_FILL)],
+    # "Division by zero" on a horizontal edge, avoided by skipping the whole face.
+    "horizontal_edge_skipped": [lambda s: _replace(
+        s, "    if _area2(vertices) == 0:\n        return img  # DEGENERATE\n",
+        "    if _area2(vertices) == 0 or len(set(vertices[:, 1].tolist())) < 3:\n"
+        "        return img  # DEGENERATE\n")],
     "degenerate_drawn": [_line("DEGENERATE", "return _fill_line(img, vertices, colour_at)"),
                          lambda s: s.replace("def _fill(", textwrap.dedent('''\
                              def _fill_line(img, vertices, colour_at):

@@ -19,6 +19,9 @@ def test_wrong_submission_is_named(tmp_path, sandbox_ok, cause):
     assert [c.id for c in graded.causes] == [cause]
     assert graded.causes[0].confidence >= CONFIDENCE
     assert graded.score < graded.max_score
+    # Each cause cites its probe with a picture (vector_interp's case is text only: no image).
+    picture = tmp_path / "student-out" / "causes" / f"{cause}.png"
+    assert picture.exists() == (cause != "vector_interp_degenerate")
     deduction = rubric.load().deduction(cause)
     if deduction:
         # Undone, the image is right: only the cause's points are lost.

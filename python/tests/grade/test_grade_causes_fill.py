@@ -16,7 +16,7 @@ from conftest import CORRECT, grade_source, wrong_source
 
 FILL_CAUSES = ["span_end_rounding", "right_end_excluded", "closed_rule", "span_too_wide",
                "top_row_dropped", "bottom_row_dropped", "edge_lag", "float_drift",
-               "degenerate_drawn"]
+               "degenerate_drawn", "horizontal_edge_skipped"]
 
 
 def test_the_correct_model_is_the_cpp_fill():
@@ -40,7 +40,7 @@ def test_every_two_fill_models_differ_on_some_probe():
 def test_correct_submission_full_marks_no_cause(tmp_path, sandbox_ok):
     graded = grade_source(tmp_path, CORRECT)
     assert graded.causes == []
-    assert graded.score == graded.max_score == 90   # default rubric: 5+5+20+20+4*10
+    assert graded.score == graded.max_score == 100   # default rubric: 5+5+20+20+10+4*10
     assert all(t.status == "passed" for t in graded.tests)
     # The demo at the bottom (a hard-coded path, a window) was skipped, and said so.
     assert any("hw1.py:" in n and "demo" in n for n in graded.notes)

@@ -1,0 +1,113 @@
+"""`scantrace grade --gradescope-zip OUT.zip`: the zip's run_autograder, run in a directory laid
+out as Gradescope's /autograder (source, submission, results), grades a known submission into a
+results.json that the schema accepts, with the score the rubric gives that submission."""
+
+import json
+import os
+import pathlib
+import subprocess
+import sys
+import zipfile
+
+import jsonschema
+import pytest
+
+from scantrace.grade import __main__ as cli
+from scantrace.grade import gradescope, rubric
+
+from conftest import wrong_source
+
+SCHEMA = json.loads((pathlib.Path(cli.__file__).with_name("gradescope_results.schema.json"))
+                    .read_text())
+PACKAGE = str(pathlib.Path(cli.__file__).resolve().parents[2])  # the folder holding scantrace/
+
+
+def _zip(tmp_path, *options):
+    out = tmp_path / "autograder.zip"
+    r = subprocess.run([sys.executable, "-m", "scantrace.grade", "--gradescope-zip", str(out),
+                        "--quiet", *options], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    return out
+
+
+def _layout(tmp_path, zip_path, source):
+    root = tmp_path / "autograder"
+    gradescope.extract(zip_path, root / "source")
+    (root / "submission").mkdir(parents=True)
+    (root / "submission" / "hw1.py").write_text(source)
+    (root / "results").mkdir()
+    return root
+
+
+def _run_autograder(root, package=PACKAGE):
+    env = dict(os.environ, SCANTRACE_AUTOGRADER_ROOT=str(root), SCANTRACE_PYTHONPATH=package)
+    env.pop("PYTHONPATH", None)  # as on Gradescope: the package is found through the script only
+    return subprocess.run(["bash", str(root / "source" / "run_autograder")], env=env,
+                          capture_output=True, text=True, timeout=240)
+
+
+def test_the_zip_holds_gradescopes_two_scripts_executable_and_the_options(tmp_path):
+    custom = tmp_path / "r.toml"
+    custom.write_text("[causes]\ntransposed = 7\n")
+    out = _zip(tmp_path, "--hidden-seed", "5", "--rubric", custom, "--memory-mb", "1024")
+    with zipfile.ZipFile(out) as z:
+        modes = {i.filename: i.external_attr >> 16 & 0o777 for i in z.infolist()}
+        assert modes["setup.sh"] == modes["run_autograder"] == 0o755
+        assert z.read("rubric.toml") == custom.read_bytes()
+        args = z.read("grade_args").decode().split("\n")
+        assert args[:4] == ["--hidden-seed", "5", "--rubric", "rubric.toml"]
+        assert "1024" in args and "--no-sandbox" not in args
+        assert "scantrace/CMakeLists.txt" in modes
+        assert "scantrace/python/scantrace/grade/harness.py" in modes
+        assert not any(n.startswith("scantrace/build/") for n in modes)
+        setup = z.read("setup.sh").decode()
+    assert "bubblewrap" in setup and "--target _scantrace" in setup
+    r = subprocess.run(["bash", "-n", "-c", setup])
+    assert r.returncode == 0
+
+
+def test_run_autograder_grades_the_submission_into_results_json(tmp_path, sandbox_ok):
+    # The transposed student: everything right once img[x][y] is undone, so its score is the
+    # rubric's maximum (tests of the run: vector_interp, the three probe sets, 2 hidden scenes x 2
+    # shadings) less the rubric's deduction for `transposed`, here a custom 7 points.
+    custom = tmp_path / "r.toml"
+    custom.write_text("[causes]\ntransposed = 7\n")
+    out = _zip(tmp_path, "--hidden-seed", "5", "--rubric", custom, "--call-seconds", "4")
+    root = _layout(tmp_path, out, wrong_source("transposed"))
+    r = _run_autograder(root)
+    assert r.returncode == 0, r.stderr
+    results = json.loads((root / "results" / "results.json").read_text())
+    jsonschema.validate(results, SCHEMA)
+    points = rubric.load(custom)
+    hidden = points.hidden_scenes * 2 * points.points("hidden_scene")
+    maximum = sum(points.points(k) for k in ("vector_interp", "vector_interp_degenerate",
+                                             "probes_flat", "probes_gouraud", "probes_pairs")) + hidden
+    assert results["extra_data"]["max_score"] == maximum
+    assert results["score"] == maximum - 7
+    assert [c["id"] for c in results["extra_data"]["causes"]] == ["transposed"]
+
+
+def test_run_autograder_writes_results_json_when_the_grader_cannot_start(tmp_path):
+    out = _zip(tmp_path)
+    root = _layout(tmp_path, out, "def f_shading(img, v, c):\n    return img\n")
+    r = _run_autograder(root, package=str(tmp_path / "no-package-here"))
+    assert r.returncode == 0
+    results = json.loads((root / "results" / "results.json").read_text())
+    jsonschema.validate(results, SCHEMA)
+    assert results["score"] == 0
+    assert "No module named scantrace" in results["output"]
+
+
+def test_zip_errors_are_one_line_and_usage_is_exit_2(tmp_path):
+    r = subprocess.run([sys.executable, "-m", "scantrace.grade", "--gradescope-zip",
+                        str(tmp_path / "nowhere" / "a.zip")], capture_output=True, text=True)
+    assert r.returncode == 1 and "nowhere" in r.stderr and "does not exist" in r.stderr
+    assert not (tmp_path / "nowhere").exists()
+    r = subprocess.run([sys.executable, "-m", "scantrace.grade", "sub.py", "--gradescope-zip",
+                        str(tmp_path / "a.zip")], capture_output=True, text=True)
+    assert r.returncode == 2 and "--gradescope-zip" in r.stderr
+    r = subprocess.run([sys.executable, "-m", "scantrace.grade", "--gradescope-zip",
+                        str(tmp_path / "a.zip"), "--source", str(tmp_path)],
+                       capture_output=True, text=True)
+    assert r.returncode == 1 and "no scantrace source tree" in r.stderr
+    assert not (tmp_path / "a.zip").exists()

@@ -41,7 +41,10 @@ class WideShade {
       : rg_(_mm_loadh_pd(_mm_load_sd(&c.r), &c.g)),
         step_rg_(_mm_loadh_pd(_mm_load_sd(&step.r), &step.g)),
 #else
-      : r_(c.r), g_(c.g), step_r_(step.r), step_g_(step.g),
+      : r_(c.r),
+        g_(c.g),
+        step_r_(step.r),
+        step_g_(step.g),
 #endif
         b_(c.b),
         step_b_(step.b) {

@@ -272,41 +272,47 @@ Scene load_scene_file(const std::string& path, Shading obj_shading) {
   return load_scene(path);
 }
 
-void bind_course(py::module_& m) {
-  m.def(
-      "vector_interp",
-      [](py::handle p1, py::handle p2, py::handle V1, py::handle V2, double coord,
-         int dim) -> py::object {
-        const DoubleArray a = float_array(p1, "p1", {2}), b = float_array(p2, "p2", {2});
-        const py::array s1 = py::module_::import("numpy").attr("asarray")(V1);
-        std::vector<Dim> shape;
-        for (py::ssize_t i = 0; i < s1.ndim(); ++i) shape.push_back(Dim(s1.shape(i)));
-        const DoubleArray v1 = float_array(V1, "V1", shape), v2 = float_array(V2, "V2", shape);
-        if (!std::isfinite(coord)) throw_value_error("coord: NaN and infinity are not allowed");
-        if (dim != 1 && dim != 2)
-          throw_value_error("dim: expected 1 (along x) or 2 (along y), got " + std::to_string(dim));
-        // The C++ function interpolates colours, three components at a time, each independently;
-        // a value of any shape is interpolated in groups of three (the last padded with zeros).
-        const Vec2 q1{a.data()[0], a.data()[1]}, q2{b.data()[0], b.data()[1]};
-        py::array_t<double> out(shape.empty()
-                                    ? std::vector<py::ssize_t>{}
-                                    : std::vector<py::ssize_t>(s1.shape(), s1.shape() + s1.ndim()));
-        const py::ssize_t n = v1.size();
-        for (py::ssize_t i = 0; i < n; i += 3) {
-          double x1[3] = {0, 0, 0}, x2[3] = {0, 0, 0};
-          for (py::ssize_t k = 0; k < 3 && i + k < n; ++k) {
-            x1[k] = v1.data()[i + k];
-            x2[k] = v2.data()[i + k];
-          }
-          const Color c =
-              vector_interp(q1, q2, {x1[0], x1[1], x1[2]}, {x2[0], x2[1], x2[2]}, coord, dim);
-          const double r[3] = {c.r, c.g, c.b};
-          for (py::ssize_t k = 0; k < 3 && i + k < n; ++k) out.mutable_data()[i + k] = r[k];
-        }
-        if (out.ndim() == 0) return py::float_(out.data()[0]);
-        return out;
-      },
-      py::arg("p1"), py::arg("p2"), py::arg("V1"), py::arg("V2"), py::arg("coord"), py::arg("dim"));
+namespace {
+
+// The course's vector_interp on values of any shape (the C++ function interpolates colours).
+py::object vector_interp_values(py::handle p1, py::handle p2, py::handle V1, py::handle V2,
+                                double coord, int dim) {
+  const DoubleArray a = float_array(p1, "p1", {2}), b = float_array(p2, "p2", {2});
+  const py::array s1 = py::module_::import("numpy").attr("asarray")(V1);
+  std::vector<Dim> shape;
+  for (py::ssize_t i = 0; i < s1.ndim(); ++i) shape.push_back(Dim(s1.shape(i)));
+  const DoubleArray v1 = float_array(V1, "V1", shape), v2 = float_array(V2, "V2", shape);
+  if (!std::isfinite(coord)) throw_value_error("coord: NaN and infinity are not allowed");
+  if (dim != 1 && dim != 2)
+    throw_value_error("dim: expected 1 (along x) or 2 (along y), got " + std::to_string(dim));
+  // The C++ function interpolates colours, three components at a time, each independently;
+  // a value of any shape is interpolated in groups of three (the last padded with zeros).
+  const Vec2 q1{a.data()[0], a.data()[1]}, q2{b.data()[0], b.data()[1]};
+  py::array_t<double> out(shape.empty()
+                              ? std::vector<py::ssize_t>{}
+                              : std::vector<py::ssize_t>(s1.shape(), s1.shape() + s1.ndim()));
+  const py::ssize_t n = v1.size();
+  for (py::ssize_t i = 0; i < n; i += 3) {
+    double x1[3] = {0, 0, 0}, x2[3] = {0, 0, 0};
+    for (py::ssize_t k = 0; k < 3 && i + k < n; ++k) {
+      x1[k] = v1.data()[i + k];
+      x2[k] = v2.data()[i + k];
+    }
+    const Color c = vector_interp(q1, q2, {x1[0], x1[1], x1[2]}, {x2[0], x2[1], x2[2]}, coord, dim);
+    const double r[3] = {c.r, c.g, c.b};
+    for (py::ssize_t k = 0; k < 3 && i + k < n; ++k) out.mutable_data()[i + k] = r[k];
+  }
+  if (out.ndim() == 0) return py::float_(out.data()[0]);
+  return out;
+}
+
+}  // namespace
+
+// The course's four functions: vector_interp, f_shading, g_shading, and render (render_img's
+// core).
+void bind_course_functions(py::module_& m) {
+  m.def("vector_interp", &vector_interp_values, py::arg("p1"), py::arg("p2"), py::arg("V1"),
+        py::arg("V2"), py::arg("coord"), py::arg("dim"));
   m.def(
       "f_shading",
       [](py::object img, py::handle v, py::handle c) { return shade(img, v, c, Shading::flat); },
@@ -328,6 +334,10 @@ void bind_course(py::module_& m) {
       py::arg("vertices"), py::arg("faces"), py::arg("vcolors"), py::arg("depth"), py::kw_only(),
       py::arg("shading"), py::arg("fill_rule"), py::arg("size"), py::arg("background"),
       py::arg("dtype"));
+}
+
+// Scenes and images in and out: the demo scene, scene files, PNG files.
+void bind_scene_io(py::module_& m) {
   m.def("demo_scene", [] { return scene_dict(demo_scene()); });
   m.def(
       "load_scene",
@@ -343,8 +353,11 @@ void bind_course(py::module_& m) {
         png::write(image, path);
       },
       py::arg("img"), py::arg("path"));
-  // The library's own render of a scene file, for the tests and the benchmark: the C++ float
-  // canvas (Image<Rgb32f>) the Python renders are compared with, and its time.
+}
+
+// The library's own render of a scene file, for the tests and the benchmark: the C++ float
+// canvas (Image<Rgb32f>) the Python renders are compared with, and its time.
+void bind_cpp_reference(py::module_& m) {
   m.def("_cpp_render_file", [](const std::string& path, const std::string& shading) {
     const Scene scene = load_scene_file(path, Shading::gouraud);
     FillOptions opt;
@@ -368,6 +381,12 @@ void bind_course(py::module_& m) {
     }
     return times;
   });
+}
+
+void bind_course(py::module_& m) {
+  bind_course_functions(m);
+  bind_scene_io(m);
+  bind_cpp_reference(m);
 }
 
 }  // namespace scantrace::python

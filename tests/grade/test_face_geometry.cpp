@@ -52,7 +52,7 @@ Scene one_triangle(Vec2 a, Vec2 b, Vec2 c) {
 
 }  // namespace
 
-TEST_CASE("distance_to_outline and within give hypot's answers, at the threshold too") {
+TEST_CASE("distance_to_outline and within give the answers of hypot at the threshold too") {
   std::mt19937_64 rng(34);
   std::uniform_real_distribution<double> coord(-20, 80), unit(0, 1);
   int near_threshold = 0, checked = 0;

@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "src/color.hpp"
 #include "reference/exact_reference.hpp"
+#include "src/color.hpp"
 #include "src/fill_options.hpp"
 #include "src/scene.hpp"
 
@@ -44,6 +44,7 @@ class FaceGeometry {
 
  private:
   std::array<double, 3> weights(double x, double y) const;
+  bool beyond_box(double x, double y, double d) const;
 
   int face_ = 0;
   reference::Polygon polygon_;
@@ -52,6 +53,8 @@ class FaceGeometry {
   std::array<Color, 3> colors_{};
   double twice_area_ = 0;
   reference::i64 scale_ = 1;
+  std::array<double, 4> box_{};  // of the snapped vertices: x0, x1, y0, y1 (beyond_box)
+  double box_abs_ = 0;           // |x0| + |x1| + |y0| + |y1|, for beyond_box's rounding slack
 };
 
 }  // namespace scantrace::grade

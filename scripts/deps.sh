@@ -39,8 +39,9 @@ packages+=(qtbase5-dev xvfb xdotool chromium)
 # glyphs (viz/hershey/glyphs.inc) are generated from hershey-fonts-data by viz/hershey/generate.py.
 packages+=(libxml2-utils hershey-fonts-data)
 # The Python package's build (pip install ., python3 -m build) and its benchmark's alternatives
-# (python/bench/bench_alternatives.py: OpenCV's and PIL's polygon fills).
-packages+=(python3-setuptools python3-wheel python3-build python3-venv python3-opencv python3-pil)
+# (python/bench/bench_alternatives.py: OpenCV's, scikit-image's and PIL's polygon fills).
+packages+=(python3-setuptools python3-wheel python3-build python3-venv python3-opencv python3-pil
+           python3-skimage)
 # The Python package's tests: property tests (hypothesis), examples/python/course.ipynb executed
 # (nbclient, ipykernel) and its static HTML export (nbconvert), opened in chromium.
 packages+=(python3-hypothesis python3-nbclient python3-ipykernel python3-nbconvert)

@@ -117,6 +117,43 @@ void run_interruptibly(Work work, bool long_run) {
   if (job->error) std::rethrow_exception(job->error);
 }
 
+// The storage of the last render whose array Python has let go of, kept for the next render of
+// the same pixel type. Why: a fresh image is memory the kernel must zero when the render first
+// touches it (huge pages, image.cpp), 8 MiB for the course's 512 x 512 float64 canvas: perf put
+// 11% of render_img in clear_page_erms. A loop that renders and drops (`img = render_img(...)`
+// in a cell run again, a benchmark, a grader) reuses one buffer instead. One slot per pixel type,
+// images of at most kRecycledBytes only: what stays allocated after the arrays are gone is
+// bounded. The slot is touched only with the GIL held (capsule destructors, render_array before
+// it releases it), the mutex is for clarity should that ever change.
+constexpr std::size_t kRecycledBytes = std::size_t{64} << 20;
+
+template <class P>
+class RecycledImage {
+ public:
+  static std::shared_ptr<Image<P>> take() {
+    const std::lock_guard lock(mutex());
+    auto& s = slot();
+    return s ? std::move(s) : std::make_shared<Image<P>>();
+  }
+  // Called when the last array over `image` is gone: kept if no worker still writes it (an
+  // interrupted render) and it is small enough.
+  static void give_back(std::shared_ptr<Image<P>>&& image) {
+    if (image.use_count() != 1 || image->pixels().size_bytes() > kRecycledBytes) return;
+    const std::lock_guard lock(mutex());
+    slot() = std::move(image);
+  }
+
+ private:
+  static std::shared_ptr<Image<P>>& slot() {
+    static std::shared_ptr<Image<P>> s;
+    return s;
+  }
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+};
+
 // The scene as the command renders it (the library's render(): far to near, or near to far for a
 // scene of high overdraw, into an Image of the array's own pixel type: Rgb64 holds the float
 // canvas's values widened, array_canvas.hpp), and the image handed to numpy without a copy. The
@@ -128,7 +165,7 @@ template <class P>
 py::array render_array(Scene scene, const FillOptions& opt) {
   using T = decltype(P::r);
   static_assert(sizeof(P) == 3 * sizeof(T));
-  auto image = std::make_shared<Image<P>>();
+  std::shared_ptr<Image<P>> image = RecycledImage<P>::take();
   auto shared = std::make_shared<const Scene>(std::move(scene));
   // The choice too runs on the worker: estimating the overdraw of a million large faces takes
   // seconds, which Ctrl-C must be able to interrupt. What takes a worker: 2^16 faces or more, or
@@ -144,7 +181,11 @@ py::array render_array(Scene scene, const FillOptions& opt) {
       },
       long_run);
   auto* owner = new std::shared_ptr<Image<P>>(image);
-  py::capsule free(owner, [](void* p) { delete static_cast<std::shared_ptr<Image<P>>*>(p); });
+  py::capsule free(owner, [](void* p) {
+    auto* held = static_cast<std::shared_ptr<Image<P>>*>(p);
+    RecycledImage<P>::give_back(std::move(*held));
+    delete held;
+  });
   T* data = image->width() ? &image->row(0)->r : nullptr;
   return py::array_t<T>({image->height(), image->width(), 3}, data, free);
 }
@@ -231,41 +272,47 @@ Scene load_scene_file(const std::string& path, Shading obj_shading) {
   return load_scene(path);
 }
 
-void bind_course(py::module_& m) {
-  m.def(
-      "vector_interp",
-      [](py::handle p1, py::handle p2, py::handle V1, py::handle V2, double coord,
-         int dim) -> py::object {
-        const DoubleArray a = float_array(p1, "p1", {2}), b = float_array(p2, "p2", {2});
-        const py::array s1 = py::module_::import("numpy").attr("asarray")(V1);
-        std::vector<Dim> shape;
-        for (py::ssize_t i = 0; i < s1.ndim(); ++i) shape.push_back(Dim(s1.shape(i)));
-        const DoubleArray v1 = float_array(V1, "V1", shape), v2 = float_array(V2, "V2", shape);
-        if (!std::isfinite(coord)) throw_value_error("coord: NaN and infinity are not allowed");
-        if (dim != 1 && dim != 2)
-          throw_value_error("dim: expected 1 (along x) or 2 (along y), got " + std::to_string(dim));
-        // The C++ function interpolates colours, three components at a time, each independently;
-        // a value of any shape is interpolated in groups of three (the last padded with zeros).
-        const Vec2 q1{a.data()[0], a.data()[1]}, q2{b.data()[0], b.data()[1]};
-        py::array_t<double> out(shape.empty()
-                                    ? std::vector<py::ssize_t>{}
-                                    : std::vector<py::ssize_t>(s1.shape(), s1.shape() + s1.ndim()));
-        const py::ssize_t n = v1.size();
-        for (py::ssize_t i = 0; i < n; i += 3) {
-          double x1[3] = {0, 0, 0}, x2[3] = {0, 0, 0};
-          for (py::ssize_t k = 0; k < 3 && i + k < n; ++k) {
-            x1[k] = v1.data()[i + k];
-            x2[k] = v2.data()[i + k];
-          }
-          const Color c =
-              vector_interp(q1, q2, {x1[0], x1[1], x1[2]}, {x2[0], x2[1], x2[2]}, coord, dim);
-          const double r[3] = {c.r, c.g, c.b};
-          for (py::ssize_t k = 0; k < 3 && i + k < n; ++k) out.mutable_data()[i + k] = r[k];
-        }
-        if (out.ndim() == 0) return py::float_(out.data()[0]);
-        return out;
-      },
-      py::arg("p1"), py::arg("p2"), py::arg("V1"), py::arg("V2"), py::arg("coord"), py::arg("dim"));
+namespace {
+
+// The course's vector_interp on values of any shape (the C++ function interpolates colours).
+py::object vector_interp_values(py::handle p1, py::handle p2, py::handle V1, py::handle V2,
+                                double coord, int dim) {
+  const DoubleArray a = float_array(p1, "p1", {2}), b = float_array(p2, "p2", {2});
+  const py::array s1 = py::module_::import("numpy").attr("asarray")(V1);
+  std::vector<Dim> shape;
+  for (py::ssize_t i = 0; i < s1.ndim(); ++i) shape.push_back(Dim(s1.shape(i)));
+  const DoubleArray v1 = float_array(V1, "V1", shape), v2 = float_array(V2, "V2", shape);
+  if (!std::isfinite(coord)) throw_value_error("coord: NaN and infinity are not allowed");
+  if (dim != 1 && dim != 2)
+    throw_value_error("dim: expected 1 (along x) or 2 (along y), got " + std::to_string(dim));
+  // The C++ function interpolates colours, three components at a time, each independently;
+  // a value of any shape is interpolated in groups of three (the last padded with zeros).
+  const Vec2 q1{a.data()[0], a.data()[1]}, q2{b.data()[0], b.data()[1]};
+  py::array_t<double> out(shape.empty()
+                              ? std::vector<py::ssize_t>{}
+                              : std::vector<py::ssize_t>(s1.shape(), s1.shape() + s1.ndim()));
+  const py::ssize_t n = v1.size();
+  for (py::ssize_t i = 0; i < n; i += 3) {
+    double x1[3] = {0, 0, 0}, x2[3] = {0, 0, 0};
+    for (py::ssize_t k = 0; k < 3 && i + k < n; ++k) {
+      x1[k] = v1.data()[i + k];
+      x2[k] = v2.data()[i + k];
+    }
+    const Color c = vector_interp(q1, q2, {x1[0], x1[1], x1[2]}, {x2[0], x2[1], x2[2]}, coord, dim);
+    const double r[3] = {c.r, c.g, c.b};
+    for (py::ssize_t k = 0; k < 3 && i + k < n; ++k) out.mutable_data()[i + k] = r[k];
+  }
+  if (out.ndim() == 0) return py::float_(out.data()[0]);
+  return out;
+}
+
+}  // namespace
+
+// The course's four functions: vector_interp, f_shading, g_shading, and render (render_img's
+// core).
+void bind_course_functions(py::module_& m) {
+  m.def("vector_interp", &vector_interp_values, py::arg("p1"), py::arg("p2"), py::arg("V1"),
+        py::arg("V2"), py::arg("coord"), py::arg("dim"));
   m.def(
       "f_shading",
       [](py::object img, py::handle v, py::handle c) { return shade(img, v, c, Shading::flat); },
@@ -287,6 +334,10 @@ void bind_course(py::module_& m) {
       py::arg("vertices"), py::arg("faces"), py::arg("vcolors"), py::arg("depth"), py::kw_only(),
       py::arg("shading"), py::arg("fill_rule"), py::arg("size"), py::arg("background"),
       py::arg("dtype"));
+}
+
+// Scenes and images in and out: the demo scene, scene files, PNG files.
+void bind_scene_io(py::module_& m) {
   m.def("demo_scene", [] { return scene_dict(demo_scene()); });
   m.def(
       "load_scene",
@@ -302,8 +353,11 @@ void bind_course(py::module_& m) {
         png::write(image, path);
       },
       py::arg("img"), py::arg("path"));
-  // The library's own render of a scene file, for the tests and the benchmark: the C++ float
-  // canvas (Image<Rgb32f>) the Python renders are compared with, and its time.
+}
+
+// The library's own render of a scene file, for the tests and the benchmark: the C++ float
+// canvas (Image<Rgb32f>) the Python renders are compared with, and its time.
+void bind_cpp_reference(py::module_& m) {
   m.def("_cpp_render_file", [](const std::string& path, const std::string& shading) {
     const Scene scene = load_scene_file(path, Shading::gouraud);
     FillOptions opt;
@@ -327,6 +381,12 @@ void bind_course(py::module_& m) {
     }
     return times;
   });
+}
+
+void bind_course(py::module_& m) {
+  bind_course_functions(m);
+  bind_scene_io(m);
+  bind_cpp_reference(m);
 }
 
 }  // namespace scantrace::python

@@ -124,7 +124,11 @@ std::string trace_repr(const PyTrace& t) {
          (t.image ? ", with its image" : "") + ">";
 }
 
-void bind_events(py::module_& m) {
+// The events of a trace as Python classes, read-only, each with a repr that says what it holds;
+// one function per part of the trace format v1 (docs/design.md).
+
+// The trace's first line and a triangle's first event.
+void bind_header_and_triangle(py::module_& m) {
   py::class_<Header>(m, "Header", "The first line of a trace: canvas and fill settings.")
       .def_readonly("format", &Header::format)
       .def_readonly("version", &Header::version)
@@ -151,6 +155,10 @@ void bind_events(py::module_& m) {
       .def_readonly("colors", &TriangleBegin::colors)
       .def_readonly("depth", &TriangleBegin::depth)
       .def_readonly("flat_color", &TriangleBegin::flat_color);
+}
+
+// A triangle's edge table: its entries and its horizontal edges.
+void bind_edge_table(py::module_& m) {
   py::class_<EdgeEntry>(m, "EdgeEntry", "One non-horizontal edge of the edge table.")
       .def_readonly("edge", &EdgeEntry::edge)
       .def_readonly("from_", &EdgeEntry::from)
@@ -186,6 +194,10 @@ void bind_events(py::module_& m) {
         return "EdgeTable(triangle=" + std::to_string(e.triangle) + ", edges=" + rep(e.edges) +
                ", horizontal=" + rep(e.horizontal) + ")";
       });
+}
+
+// One row of a triangle: the edges crossing it, the active points, the span and its colours.
+void bind_scanline(py::module_& m) {
   py::class_<scantrace::trace::EdgeCrossing>(
       m, "EdgeCrossing", "Where an active edge crosses a row: its edge and exact intersection x.")
       .def_readonly("edge", &scantrace::trace::EdgeCrossing::edge)
@@ -236,6 +248,10 @@ void bind_events(py::module_& m) {
                ", entered=" + rep(l.entered) + ", retired=" + rep(l.retired) +
                (l.span_colors ? ", span_colors=" + rep(*l.span_colors) : std::string()) + ")";
       });
+}
+
+// Pixel events, a triangle's end or skip, the footer.
+void bind_pixel_and_end(py::module_& m) {
   py::class_<Pixel>(m, "Pixel", "A pixel event (level 'pixel').")
       .def_readonly("triangle", &Pixel::triangle)
       .def_readonly("x", &Pixel::x)
@@ -252,6 +268,10 @@ void bind_events(py::module_& m) {
   py::class_<Footer>(m, "Footer", "The last line of a complete trace.")
       .def_readonly("events", &Footer::events)
       .def_readonly("truncated", &Footer::truncated);
+}
+
+// The answer of Trace.pixel_history: the writes of one pixel, in drawing order.
+void bind_pixel_history(py::module_& m) {
   py::class_<PixelWrite>(m, "PixelWrite", "One write of a pixel: the triangle and the colour.")
       .def_readonly("triangle", &PixelWrite::triangle)
       .def_readonly("color", &PixelWrite::color)
@@ -279,6 +299,14 @@ void bind_events(py::module_& m) {
                (h.writes.size() == 1 ? "" : "s") + ", final=" + rep(h.final()) +
                ", writes=" + rep(h.writes) + ")";
       });
+}
+
+void bind_events(py::module_& m) {
+  bind_header_and_triangle(m);
+  bind_edge_table(m);
+  bind_scanline(m);
+  bind_pixel_and_end(m);
+  bind_pixel_history(m);
 }
 
 void bind_trace_class(py::module_& m) {

@@ -90,3 +90,33 @@ def test_a_scene_of_high_overdraw_renders_as_its_nearest_face_alone(tmp_path, dt
     assert img.dtype == dtype and img.shape == (512, 512, 3) and img.flags["C_CONTIGUOUS"]
     assert np.array_equal(img, expected)
     del img  # the array owns the image: nothing is left behind
+
+
+@pytest.mark.parametrize("seed", [41, 42])
+def test_partly_hidden_gouraud_spans_equal_the_cpp_float_canvas(tmp_path, seed):
+    """Hundreds of large overlapping triangles: rendered near to far (high overdraw), most
+    Gouraud spans are partly covered by nearer faces and written in their visible runs, each pixel
+    with the colour of the whole span at that pixel (the float64 canvas's own span writer,
+    array_canvas.hpp). Value for value the C++ float canvas, read from the same file."""
+    v, f, c, d = random_scene(seed, n_vertices=300, n_faces=600)
+    path = write_scene_json(tmp_path / "scene.json", v, f, c, d)
+    cpp = _scantrace._cpp_render_file(str(path), "g").astype(np.float64)
+    img = scantrace.render_img(f, v, c, d, "g")
+    assert np.array_equal(img, cpp)
+    assert len(np.unique(img.reshape(-1, 3), axis=0)) > 10000  # shaded, not flat
+
+
+def test_a_later_render_never_writes_a_live_array():
+    """A dropped render's storage is reused by the next render (course.cpp's RecycledImage): an
+    array still alive, or a view of one whose array was dropped, keeps its pixels."""
+    v, f, c, d = random_scene(51)
+    first = scantrace.render_img(f, v, c, d, "g")
+    kept = first.copy()
+    view = scantrace.render_img(f, v, c, d, "f")[100:200]
+    kept_view = view.copy()
+    for shading in ("f", "g", "f"):
+        other = scantrace.render(v[::-1].copy(), f, c, d, shading=shading)
+        assert not np.shares_memory(other, first) and not np.shares_memory(other, view)
+        del other
+    assert np.array_equal(first, kept) and np.array_equal(view, kept_view)
+

@@ -90,7 +90,7 @@ void trace_demo_triangle(const std::filesystem::path& image_file,
                trace_file.string(), footer.events);
 }
 
-void run_demo(const DemoArgs& args) {
+void run_demo(const DemoArgs& args, ExplainDemo explain) {
   const std::filesystem::path dir = args.dir;
   make_output_directory(dir);
   const Scene scene = demo_scene();
@@ -98,7 +98,7 @@ void run_demo(const DemoArgs& args) {
   render_scene(scene, Shading::gouraud, dir / "demo_gouraud.png");
   render_model(dir / "demo_model.png");
   trace_demo_triangle(dir / "triangle_gouraud.png", dir / "triangle.jsonl");
-  explain_demo_triangle(dir / "triangle.jsonl", dir / "triangle.mp4", dir / "triangle.html");
+  explain(dir / "triangle.jsonl", dir / "triangle.mp4", dir / "triangle.html");
   const std::filesystem::path scene_file = dir / "demo_scene.json";
   save_scene(scene, scene_file);
   spdlog::info(
@@ -109,7 +109,7 @@ void run_demo(const DemoArgs& args) {
 
 }  // namespace
 
-Command add_demo_command(CLI::App& app) {
+Command add_demo_command(CLI::App& app, ExplainDemo explain) {
   auto args = std::make_shared<DemoArgs>();
   CLI::App* cmd = app.add_subcommand("demo",
                                      "The embedded default, no input needed: renders the\n"
@@ -130,7 +130,7 @@ Command add_demo_command(CLI::App& app) {
       "The demo's own build (scripts/build.sh --demo, without OpenCV) writes the\n"
       "page with SVG frames and no video; the full build adds the video, and its\n"
       "page holds the trace and the WebAssembly player when the web build is there.");
-  return {cmd, [args] { run_demo(*args); }};
+  return {cmd, [args, explain] { run_demo(*args, explain); }};
 }
 
 }  // namespace scantrace::cli

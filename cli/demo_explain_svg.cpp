@@ -12,7 +12,7 @@
 
 namespace scantrace::cli {
 
-void explain_demo_triangle(const std::filesystem::path& trace_file,
+void explain_demo_with_svg(const std::filesystem::path& trace_file,
                            const std::filesystem::path& video, const std::filesystem::path& page) {
   const trace::Trace t = trace::Trace::load(trace_file);
   // The frame size and step plan of `scantrace replay`'s defaults (viz/replay.hpp), so that the
@@ -24,8 +24,8 @@ void explain_demo_triangle(const std::filesystem::path& trace_file,
   viz::HtmlPlayerOptions options;
   options.source = trace_file.string();
   const Stopwatch clock;
-  const viz::HtmlPlayerResult r = viz::write_svg_step_page(
-      frames, 0, frames.steps().size() - 1, page, options, progress.get());
+  const viz::HtmlPlayerResult r =
+      viz::write_svg_step_page(frames, 0, frames.steps().size() - 1, page, options, progress.get());
   spdlog::info(
       "wrote {}: the steps of that trace as a self-contained page ({} steps, SVG frames, {:.1f} "
       "MB, made in {:.1f} s): open it in a browser and step with the arrow keys",

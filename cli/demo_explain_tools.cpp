@@ -14,8 +14,9 @@ namespace scantrace::cli {
 
 // The video and the page are made from the trace file just written, so they explain exactly what
 // the file holds; it is read once for both.
-void explain_demo_triangle(const std::filesystem::path& trace_file,
-                           const std::filesystem::path& video, const std::filesystem::path& page) {
+void explain_demo_with_video(const std::filesystem::path& trace_file,
+                             const std::filesystem::path& video,
+                             const std::filesystem::path& page) {
   const trace::Trace t = trace::Trace::load(trace_file);
   viz::ReplayOptions options;
   options.source = trace_file.string();

@@ -23,36 +23,33 @@
 
 namespace {
 
-// Whether this command line is `render` (or --version), after the main app's own flags, of a
-// scene that is not a MATLAB .mat file (scantrace-tools reads those: cli/scene_input.cpp).
-bool runs_here(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    if (arg == "-q" || arg == "--quiet") continue;
-    if (arg == "--version") return true;
-    if (arg != "render") return false;
-    for (int j = i + 1; j < argc; ++j)
-      if (scantrace::is_mat_file(argv[j])) return false;
-    return true;
-  }
-  return false;
+// The index in argv of the subcommand word (or of --version): the first argument after the main
+// app's own flags; argc when there is none.
+int subcommand_index(int argc, char** argv) {
+  int i = 1;
+  while (i < argc && (std::string_view(argv[i]) == "-q" || std::string_view(argv[i]) == "--quiet"))
+    ++i;
+  return i;
 }
 
-// Whether this command line is `diff` (after the main app's own flags).
-bool runs_diff(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    if (arg == "-q" || arg == "--quiet") continue;
-    return arg == "diff";
-  }
-  return false;
+// Whether this command line is `render` (or --version) of a scene that is not a MATLAB .mat file
+// (scantrace-tools reads those: cli/scene_input.cpp).
+bool runs_here(int argc, char** argv, int word) {
+  if (word == argc) return false;
+  const std::string_view arg = argv[word];
+  if (arg == "--version") return true;
+  if (arg != "render") return false;
+  for (int j = word + 1; j < argc; ++j)
+    if (scantrace::is_mat_file(argv[j])) return false;
+  return true;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace scantrace::cli;
-  if (runs_here(argc, argv)) {
+  const int word = subcommand_index(argc, argv);
+  if (runs_here(argc, argv, word)) {
     constexpr AddCommand render[]{add_render_command};
     return run_app(argc, argv, render);
   }
@@ -62,14 +59,14 @@ int main(int argc, char** argv) {
       ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path();
   const std::filesystem::path tools = dir / "scantrace-tools";
   if (!std::filesystem::exists(tools, ec)) {
-    constexpr AddCommand here[]{add_demo_command, add_render_command};
-    constexpr const char* left_out[]{"trace", "replay", "explain", "check", "step", "stress",
-                                     "bench", "why",   "diff",    "explore", "grade"};
-    return run_app(argc, argv, here, left_out);
+    constexpr AddCommand here[]{
+        [](CLI::App& app) { return add_demo_command(app, explain_demo_with_svg); },
+        add_render_command};
+    return run_app(argc, argv, here, kToolsOnlyCommands);
   }
   // `diff` runs in scantrace-diff, which loads no video or window library (cli/diff_main.cpp).
   if (const std::filesystem::path diff = dir / "scantrace-diff";
-      runs_diff(argc, argv) && std::filesystem::exists(diff, ec))
+      word < argc && std::string_view(argv[word]) == "diff" && std::filesystem::exists(diff, ec))
     execv(diff.c_str(), argv);
   execv(tools.c_str(), argv);
   std::fprintf(stderr, "scantrace: error: cannot run %s: %s\n", tools.c_str(),

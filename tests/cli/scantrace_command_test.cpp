@@ -1,12 +1,14 @@
 // The scantrace binary, run through the shell as a user would: exit status, messages, outputs.
 #include <cmath>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include <catch2/catch.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "cli/commands.hpp"
 #include "cli_test_support.hpp"
 #include "page_test_support.hpp"
 #include "demo/demo_scene.hpp"
@@ -114,6 +116,27 @@ TEST_CASE("scantrace renders without OpenCV and hands the other commands on", "[
   const cv::Mat png = read_bgr(dir / "alone.png");
   REQUIRE_FALSE(png.empty());
   CHECK(png.at<cv::Vec3b>(100, 100) == bgr_of({1.0 / 3, 1.0 / 3, 1.0 / 3}));
+}
+
+// The demo's build names the commands it leaves out from a list of its own (kToolsOnlyCommands,
+// cli/commands.hpp), kept apart from the full build's registrations (cli/main.cpp): read the
+// full build's --help independently and compare, so that a command added to one and not the
+// other is caught.
+TEST_CASE("the demo's build names exactly the commands the full build adds", "[command]") {
+  TempDir dir;
+  const auto help = run_scantrace(dir.path(), {"--help"});
+  REQUIRE(help.exit_code == 0);
+  // CLI11's subcommand list: after "Subcommands:", each name at two spaces' indent.
+  const auto list = help.out.find("Subcommands:");
+  REQUIRE(list != std::string::npos);
+  std::set<std::string> full;
+  std::istringstream lines(help.out.substr(list));
+  for (std::string line; std::getline(lines, line);)
+    if (line.size() > 2 && line.compare(0, 2, "  ") == 0 && line[2] != ' ')
+      full.insert(line.substr(2, line.find(' ', 2) - 2));
+  std::set<std::string> demo_build{"demo", "render"};
+  for (const char* name : scantrace::cli::kToolsOnlyCommands) demo_build.insert(name);
+  CHECK(full == demo_build);
 }
 
 TEST_CASE("usage errors exit 2", "[command]") {

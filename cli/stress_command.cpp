@@ -61,7 +61,7 @@ std::string command_line(const StressArgs& a, std::uint64_t seed) {
   return s;
 }
 
-void run_stress_command(const StressArgs& args) {
+stress::RunOptions run_options(const StressArgs& args) {
   stress::RunOptions options;
   options.seed = args.seed ? *args.seed : fresh_seed();
   options.seconds = args.seconds;
@@ -75,6 +75,16 @@ void run_stress_command(const StressArgs& args) {
       options.families.push_back(f);
     }
   }
+  // Ctrl-C ends the run after the case in hand; the table of what was checked is printed.
+  options.stop = [] { return interrupt_signal() != 0; };
+  options.progress = [](const stress::Progress& p) {
+    spdlog::info("stress: {:.0f}/{:.0f} s, {} cases, {} failing exact cases", p.elapsed, p.budget,
+                 p.cases, p.default_failures);
+  };
+  return options;
+}
+
+std::vector<std::unique_ptr<stress::Rasterizer>> make_rasterizers(const StressArgs& args) {
   std::vector<std::unique_ptr<stress::Rasterizer>> owned;
   for (const std::string& name : args.methods.empty() ? kMethodNames : args.methods) {
     Method m;
@@ -83,26 +93,12 @@ void run_stress_command(const StressArgs& args) {
     else
       owned.push_back(stress::make_opencv_rasterizer());
   }
-  std::vector<stress::Rasterizer*> rasterizers;
-  bool default_checked = false;
-  for (const auto& r : owned) {
-    rasterizers.push_back(r.get());
-    default_checked |= r->name() == options.default_method;
-  }
+  return owned;
+}
 
-  spdlog::info("stress: seed {} (replay with --seed {}), {} s", options.seed, options.seed,
-               options.seconds);
-  // Ctrl-C ends the run after the case in hand; the table of what was checked is printed.
-  options.stop = [] { return interrupt_signal() != 0; };
-  options.progress = [](const stress::Progress& p) {
-    spdlog::info("stress: {:.0f}/{:.0f} s, {} cases, {} failing exact cases", p.elapsed, p.budget,
-                 p.cases, p.default_failures);
-  };
-  const stress::RunResult result = stress::run_stress(options, rasterizers);
-
-  long long cases = 0;
-  for (const stress::CellStats& c : result.cells)
-    if (c.method == result.cells.front().method) cases += c.cases;
+// The report on stdout: the command line to replay, the table, the failing cases.
+void print_report(const StressArgs& args, const stress::RunOptions& options,
+                  const stress::RunResult& result, long long cases) {
   std::printf("# scantrace stress\n\n");
   std::printf(
       "`%s` — seed %llu, %.1f s, %lld cases; every triangle filled in all 6 vertex "
@@ -121,19 +117,24 @@ void run_stress_command(const StressArgs& args) {
       std::printf("    %s\n", line.c_str());
     }
   if (any) std::printf("\n");
-  if (result.stopped) {
-    // Interrupted: what was checked is above; the verdict is only about those cases, and the
-    // status is the shell's for the signal (130, 143), not a pass.
-    const int signal = interrupt_signal();
-    std::printf("Interrupted by %s after %.1f s: the table holds the %lld cases checked so far.\n",
-                signal == SIGTERM ? "SIGTERM" : "SIGINT", result.seconds, cases);
-    std::fflush(stdout);
-    spdlog::warn("warning: stress: interrupted by {} after {:.1f} s; {} cases checked{}",
-                 signal == SIGTERM ? "SIGTERM" : "SIGINT", result.seconds, cases,
-                 result.default_failed ? ", exact FAILED some (reproducers on stdout)" : "");
-    throw ExitStatus{128 + signal};
-  }
+}
 
+// Interrupted: what was checked is printed; the verdict is only about those cases, and the
+// status is the shell's for the signal (130, 143), not a pass.
+[[noreturn]] void end_interrupted(const stress::RunResult& result, long long cases) {
+  const int signal = interrupt_signal();
+  std::printf("Interrupted by %s after %.1f s: the table holds the %lld cases checked so far.\n",
+              signal == SIGTERM ? "SIGTERM" : "SIGINT", result.seconds, cases);
+  std::fflush(stdout);
+  spdlog::warn("warning: stress: interrupted by {} after {:.1f} s; {} cases checked{}",
+               signal == SIGTERM ? "SIGTERM" : "SIGINT", result.seconds, cases,
+               result.default_failed ? ", exact FAILED some (reproducers on stdout)" : "");
+  throw ExitStatus{128 + signal};
+}
+
+// The last line: the default method's verdict; a failure is the command's (exit 1).
+void print_verdict(const stress::RunOptions& options, const stress::RunResult& result,
+                   bool default_checked) {
   if (!default_checked) {
     std::printf("exact: not run (--method without exact).\n");
     return;
@@ -151,6 +152,28 @@ void run_stress_command(const StressArgs& args) {
   throw std::runtime_error("stress: the exact method failed " +
                            std::to_string(result.default_failing_cases) +
                            " cases; see the FAIL lines on stdout");
+}
+
+void run_stress_command(const StressArgs& args) {
+  const stress::RunOptions options = run_options(args);
+  const std::vector<std::unique_ptr<stress::Rasterizer>> owned = make_rasterizers(args);
+  std::vector<stress::Rasterizer*> rasterizers;
+  bool default_checked = false;
+  for (const auto& r : owned) {
+    rasterizers.push_back(r.get());
+    default_checked |= r->name() == options.default_method;
+  }
+
+  spdlog::info("stress: seed {} (replay with --seed {}), {} s", options.seed, options.seed,
+               options.seconds);
+  const stress::RunResult result = stress::run_stress(options, rasterizers);
+
+  long long cases = 0;
+  for (const stress::CellStats& c : result.cells)
+    if (c.method == result.cells.front().method) cases += c.cases;
+  print_report(args, options, result, cases);
+  if (result.stopped) end_interrupted(result, cases);
+  print_verdict(options, result, default_checked);
 }
 
 }  // namespace

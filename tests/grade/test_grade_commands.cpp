@@ -215,7 +215,7 @@ std::pair<std::string, int> loaded_files(const std::filesystem::path& dir, const
 
 }  // namespace
 
-TEST_CASE("diff: a PNG or .npy loads no OpenCV; a BMP goes on to scantrace-tools, graded alike",
+TEST_CASE("diff: a PNG loads no OpenCV; a BMP goes on to scantrace-tools, graded alike",
           "[grade][cli]") {
   // `scantrace diff` runs in scantrace-diff (cli/diff_main.cpp), which links no OpenCV: 260
   // libraries and 0.3-0.5 s of start-up with its video and window parts, ~140 and 0.1-0.25 s with

@@ -31,15 +31,15 @@ void decode_with_opencv(std::string_view, SubmittedImage& out) {
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   const std::filesystem::path tools = self.parent_path() / "scantrace-tools";
+  std::string why = "cannot be found";
   if (!ec && cli::kept_argv != nullptr && std::filesystem::exists(tools, ec)) {
     std::fflush(nullptr);
     execv(tools.c_str(), cli::kept_argv);
+    why = std::string("cannot be run (") + std::strerror(errno) + ")";
   }
   throw InputError(out.name, "",
-                   "a " + out.format + " image needs scantrace-tools (OpenCV's decoders), which " +
-                       (ec || cli::kept_argv == nullptr ? std::string("cannot be found")
-                                                        : "cannot run: " + std::string(std::strerror(errno))) +
-                       " beside " + self.string() + "; PNG and .npy images need none");
+                   "a " + out.format + " image is decoded by scantrace-tools (OpenCV), which " +
+                       why + " beside " + self.string() + "; PNG and .npy images need none");
 }
 
 }  // namespace scantrace::grade

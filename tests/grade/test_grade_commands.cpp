@@ -215,7 +215,7 @@ std::pair<std::string, int> loaded_files(const std::filesystem::path& dir, const
 
 }  // namespace
 
-TEST_CASE("diff: a PNG loads no OpenCV; a BMP goes on to scantrace-tools, graded alike",
+TEST_CASE("diff: a PNG loads no OpenCV, a BMP goes on to scantrace-tools and is graded alike",
           "[grade][cli]") {
   // `scantrace diff` runs in scantrace-diff (cli/diff_main.cpp), which links no OpenCV: 260
   // libraries and 0.3-0.5 s of start-up with its video and window parts, ~140 and 0.1-0.25 s with
@@ -258,4 +258,32 @@ TEST_CASE("diff: a PNG loads no OpenCV; a BMP goes on to scantrace-tools, graded
   CHECK(from_png["differing_pixels"] == from_bmp["differing_pixels"]);
   CHECK(from_png["differing_pixels"] ==
         count_differing(render_wrong(s, Shading::gouraud, Mistake::none), bad));
+}
+
+TEST_CASE("diff: a BMP with no scantrace-tools beside scantrace-diff is one line, exit 1",
+          "[grade][cli]") {
+  // scantrace-diff alone (an install that lost scantrace-tools): it cannot decode a BMP itself,
+  // and says so naming the file, instead of exec'ing nothing or crashing.
+  TempDir dir;
+  const Scene s = generated_scene();
+  scantrace::save_scene(s, dir / "scene.json");
+  cv::Mat bgr(s.height, s.width, CV_8UC3, cv::Scalar(255, 255, 255));
+  REQUIRE(cv::imwrite((dir / "white.bmp").string(), bgr));
+  const std::filesystem::path alone = dir / "bin" / "scantrace-diff";
+  std::filesystem::create_directories(alone.parent_path());
+  std::filesystem::copy_file(std::filesystem::path(SCANTRACE_BINARY).parent_path() /
+                                 "scantrace-diff",
+                             alone);
+  std::string command = "cd ";
+  command += scantrace::test::shell_quote(dir.path().string());
+  command += " && ";
+  command += scantrace::test::shell_quote(alone.string());
+  command += " diff scene.json white.bmp >out.txt 2>err.txt";
+  const int status = std::system(command.c_str());
+  const std::string err = scantrace::test::read_text(dir / "err.txt");
+  INFO(err);
+  CHECK((WIFEXITED(status) ? WEXITSTATUS(status) : -1) == 1);
+  CHECK(lines(err) == 1);
+  CHECK_THAT(err, Catch::Contains("white.bmp") && Catch::Contains("scantrace-tools") &&
+                      Catch::Contains("cannot be found"));
 }

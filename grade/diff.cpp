@@ -433,12 +433,12 @@ class DiffRun {
       return "missing_face";
     }
     if (I >= 0 && R >= 0 && faces_[I].covers(x, y, rule_)) return classify_covered(k, I, R, x, y);
-    if (I >= 0 && faces_[I].distance_to_outline(x, y) <= 1.0) {
+    if (I >= 0 && faces_[I].outline_within(x, y, 1.0)) {
       ++report_.near_boundary_extra;
       tag_extra(faces_[I], x, y);
       return "near_boundary";
     }
-    if (I == kBackground && R >= 0 && faces_[R].distance_to_outline(x, y) <= 1.0) {
+    if (I == kBackground && R >= 0 && faces_[R].outline_within(x, y, 1.0)) {
       ++report_.near_boundary_missing;
       tag_missing(faces_[R], x, y);
       return "near_boundary";
@@ -453,7 +453,7 @@ class DiffRun {
   // outline (R's last row over the face below, say), both readings fit; the rest of the image
   // decides (settle_ambiguous_pixels).
   std::string classify_covered(std::size_t k, int I, int R, int x, int y) {
-    const bool near_outline = faces_[R].distance_to_outline(x, y) <= 1.0;
+    const bool near_outline = faces_[R].outline_within(x, y, 1.0);
     if (near_outline && pair_share(I, R) < 1.0) {
       ++report_.near_boundary_missing;
       tag_missing(faces_[R], x, y);

@@ -90,18 +90,21 @@ double FaceGeometry::distance_to_outline(double x, double y) const {
   return d;
 }
 
-bool FaceGeometry::within(double x, double y, double d) const {
-  if (!beyond_box(x, y, d)) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < 3; ++i) {
-      const Vec2 e = segment_offset(p_[i], p_[(i + 1) % 3], x, y);
-      nearest = std::min(nearest, e.x * e.x + e.y * e.y);
-    }
-    const double d2 = d * d;
-    if (d >= 0 && nearest < d2 * (1 - kSquareMargin)) return true;  // distance_to_outline <= d
-    if (!(d >= 0 && nearest > d2 * (1 + kSquareMargin)) && distance_to_outline(x, y) <= d)
-      return true;
+bool FaceGeometry::outline_within(double x, double y, double d) const {
+  if (beyond_box(x, y, d)) return false;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const Vec2 e = segment_offset(p_[i], p_[(i + 1) % 3], x, y);
+    nearest = std::min(nearest, e.x * e.x + e.y * e.y);
   }
+  const double d2 = d * d;
+  if (d >= 0 && nearest < d2 * (1 - kSquareMargin)) return true;
+  if (d >= 0 && nearest > d2 * (1 + kSquareMargin)) return false;
+  return distance_to_outline(x, y) <= d;  // the squares cannot tell (or d is negative or NaN)
+}
+
+bool FaceGeometry::within(double x, double y, double d) const {
+  if (outline_within(x, y, d)) return true;
   if (twice_area_ == 0) return false;
   // weights(x, y) all >= 0, the same expressions, stopping at the first negative one.
   const auto& p = p_;

@@ -30,6 +30,9 @@ class FaceGeometry {
   OnOutline on_outline(int x, int y, int* edge = nullptr) const;
   // Euclidean distance from the centre (x, y) to the face's outline (0 on it), in pixels.
   double distance_to_outline(double x, double y) const;
+  // distance_to_outline(x, y) <= d, decided on squared lengths where they settle it (most
+  // centres: diff asks it of every differing pixel), so the same answer without hypot's cost.
+  bool outline_within(double x, double y, double d) const;
   // Whether the centre is inside the closed face or within `d` pixels of it.
   bool within(double x, double y, double d) const;
   // The face's colour at the centre (x, y): flat = mean of the vertex colours; Gouraud = the

@@ -2,11 +2,11 @@
 
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
 #include <spdlog/spdlog.h>
 
-#include "grade/captured_stderr.hpp"
 #include "grade/jpeg_header.hpp"
+#include "grade/opencv_decode.hpp"
+#include "grade/png_decoder.hpp"
 #include "io/input_error.hpp"
 #include "io/json_input.hpp"
 #include "io/memory_budget.hpp"
@@ -143,30 +143,12 @@ SubmittedImage decode_image(std::string_view bytes, const std::string& name) {
   // Decoded bytes plus the float copy.
   check_pixels(w, h, 3 + sizeof(Rgb32f), name, out.format + " header");
   if (out.format == "png") check_png_chunks(bytes, name);
-  const std::vector<unsigned char> buffer(bytes.begin(), bytes.end());
-  cv::Mat m;
-  // What libpng, libjpeg or OpenCV print goes into this one message (captured_stderr.hpp).
-  CapturedStderr messages;
-  try {
-    m = cv::imdecode(buffer, cv::IMREAD_COLOR);
-  } catch (const cv::Exception& e) {
-    const std::string said = messages.text();
-    throw InputError(name, "",
-                     "cannot decode the image: " + std::string(e.what()) +
-                         (said.empty() ? "" : " (the decoder said: " + said + ")"));
-  }
-  const std::string said = messages.text();
-  if (m.empty() || m.type() != CV_8UC3)
-    throw InputError(name, "",
-                     "cannot decode the image (corrupt or unsupported " + out.format + " data)" +
-                         (said.empty() ? std::string() : "; the decoder said: " + said));
-  if (!said.empty())
-    spdlog::warn("warning: {}: the {} decoder said: {}", name, out.format, said);
-  out.pixels = RgbImage(m.cols, m.rows);
-  for (int y = 0; y < m.rows; ++y) {
-    const auto* row = m.ptr<cv::Vec3b>(y);
-    for (int x = 0; x < m.cols; ++x)  // OpenCV holds BGR
-      out.pixels(x, y) = {row[x][2] / 255.0f, row[x][1] / 255.0f, row[x][0] / 255.0f};
+  if (out.format == "png") {  // libpng itself: no OpenCV (grade/png_decoder.hpp)
+    std::string said;
+    out.pixels = decode_png(bytes, name, said);
+    if (!said.empty()) spdlog::warn("warning: {}: the png decoder said: {}", name, said);
+  } else {
+    decode_with_opencv(bytes, out);  // JPEG, BMP
   }
   return out;
 }

@@ -1,7 +1,7 @@
 #pragma once
-// The IMAGE of `scantrace diff`: what someone else's renderer produced. An 8-bit PNG, JPEG or BMP
-// (decoded with OpenCV), or a NumPy .npy array H×W×3 (io/npy_reader.hpp). The size an image file
-// declares in its header is checked against the memory available before anything is decoded, so a
+// The IMAGE of `scantrace diff`: what someone else's renderer produced. An 8-bit PNG (decoded by
+// libpng, grade/png_decoder.hpp), JPEG or BMP (by OpenCV, grade/opencv_decode.hpp), or a NumPy
+// .npy array H×W×3 (io/npy_reader.hpp). The size an image file declares in its header is checked against the memory available before anything is decoded, so a
 // PNG declaring 100000×100000 is refused with one line instead of exhausting the machine.
 #include <cstdint>
 #include <filesystem>

@@ -32,6 +32,8 @@ packages+=(pkg-config libmatio-dev libxcb1-dev libhwy-dev libdeflate-dev libsimd
 # libjpeg's header read (grade/jpeg_header.hpp) and zlib for the .mat layout check
 # (io/mat5_layout.hpp): both come with libopencv-dev and libmatio-dev, named here as used.
 packages+=(libjpeg-dev zlib1g-dev)
+# libpng: `scantrace-diff` decodes a submitted PNG with it, loading no OpenCV (grade/png_decoder.hpp).
+packages+=(libpng-dev)
 # Stepping through replays: Qt's headers for the window's focus fix (cli/highgui_focus.hpp), and
 # for the tests a virtual display, xdotool and headless chromium.
 packages+=(qtbase5-dev xvfb xdotool chromium)

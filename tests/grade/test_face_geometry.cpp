@@ -1,6 +1,7 @@
 // FaceGeometry's distance questions against the plain formula written here: the distance to the
-// outline is the least std::hypot over the three segments, and within(x, y, d) is "that distance
-// is at most d, or the centre is inside". The grader decides with squared lengths where they
+// outline is the least std::hypot over the three segments, outline_within(x, y, d) is "that
+// distance is at most d", and within(x, y, d) is "that distance is at most d, or the centre is
+// inside". The grader decides with squared lengths where they
 // settle the question (face_geometry.cpp); these cases hold it to hypot's answers bit for bit,
 // on random centres and on centres placed at d pixels from an edge to the last few ulps.
 #include <algorithm>
@@ -52,7 +53,7 @@ Scene one_triangle(Vec2 a, Vec2 b, Vec2 c) {
 
 }  // namespace
 
-TEST_CASE("distance_to_outline and within give the answers of hypot at the threshold too") {
+TEST_CASE("distance_to_outline, outline_within and within give the answers of hypot at the threshold too") {
   std::mt19937_64 rng(34);
   std::uniform_real_distribution<double> coord(-20, 80), unit(0, 1);
   int near_threshold = 0, checked = 0;
@@ -78,8 +79,10 @@ TEST_CASE("distance_to_outline and within give the answers of hypot at the thres
       }
       const double expected = plain_distance(g, x, y);
       REQUIRE(g.distance_to_outline(x, y) == expected);
-      for (double d : {0.0, 1.0, 1.5, expected, std::nextafter(expected, 0.0)})
+      for (double d : {0.0, 1.0, 1.5, expected, std::nextafter(expected, 0.0)}) {
         REQUIRE(g.within(x, y, d) == (expected <= d || plain_inside(g, x, y)));
+        REQUIRE(g.outline_within(x, y, d) == (expected <= d));
+      }
       ++checked;
     }
   }

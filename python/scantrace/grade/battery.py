@@ -11,7 +11,8 @@ import numpy as np
 import scantrace
 
 from . import diagnose, fill_models, hidden
-from .probes import COLOURS, GOURAUD, PAIR_REGIONS, PAIRS, PAIRS_CORNER, PROBES
+from .probes import (COLOURS, GOURAUD, PAIR_REGIONS, PAIRS, PAIRS_CORNER, PROBES,
+                     SHARED_EDGE_FACES, SHARED_EDGE_SIZE)
 
 
 @dataclasses.dataclass
@@ -118,6 +119,12 @@ class Battery:
         for probe in GOURAUD:
             self._probe_call("g_shading", probe)
         names = self._scene_inputs(PAIRS)
+        if "f_shading" in self.functions:
+            self.calls.append({"id": "f_shading_shared_edge", "kind": "faces", "func": "f_shading",
+                               "canvas_shape": [*SHARED_EDGE_SIZE, 3],
+                               "vertices": names["vertices"], "faces": names["faces"],
+                               "vcolors": names["vcolors"],
+                               "order": self.session.input(np.array(SHARED_EDGE_FACES))})
         # Six faces: the plain call limit (a scene's is 6 times that).
         self._call("pairs_render_f", "render_img",
                    [{"npy": names[k]} for k in ("faces", "vertices", "vcolors", "depth")] + ["f"])
@@ -241,7 +248,7 @@ class Battery:
         return [(p, np.ascontiguousarray(img.transpose(1, 0, 2))) for p, img in images]
 
     def _probes_flat(self):
-        name = "Probes: flat fill (f_shading on single triangles)"
+        name = "Probes: flat fill (f_shading on single triangles and a shared edge)"
         if "f_shading" not in self.functions:
             return self._missing(name, "probes_flat", "f_shading")
         images, lines, verdict = self._probe_images("f_shading", PROBES)
@@ -257,11 +264,40 @@ class Battery:
                 n = int((got != expected).sum())
                 lines.append(f"- probe `{probe.name}` ({probe.what}): {n} pixels differ"
                              + ("" if colour_ok else ", wrong colour"))
+        shared_ok, shared_line = self._shared_edge_flat()
+        ok += shared_ok
+        lines += shared_line
         self.causes += diagnose.diagnose_fill(
             [(p, diagnose.covered(img)) for p, img in images])
         self.causes += diagnose.diagnose_flat(images, COLOURS)
-        self._add(name, "probes_flat", ok / len(PROBES),
-                  [f"{ok} of {len(PROBES)} probes filled exactly."] + lines, verdict=verdict)
+        self._add(name, "probes_flat", ok / (len(PROBES) + 1),
+                  [f"{ok} of {len(PROBES) + 1} probes filled exactly (the last: two faces "
+                   "sharing an edge)."] + lines, verdict=verdict)
+
+    def _shared_edge_flat(self):
+        """f_shading on the two faces of the pairs' shared edge, one after the other on one
+        canvas: (1, []) when the canvas is the C++ fill's, else (0, [the line saying where])."""
+        r = self.results["f_shading_shared_edge"]
+        what = "probe pair `shared_edge` (f_shading on two faces sharing an edge)"
+        if r.status != "ok":
+            return 0, [f"- {what}: {self._failed_call(r)}"]
+        img, error = canvas(r.value, (*SHARED_EDGE_SIZE, 3))
+        if img is None:
+            return 0, [f"- {what}: {error}"]
+        if any(c.id == "transposed" for c in self.causes):
+            img = np.ascontiguousarray(img.transpose(1, 0, 2))   # undone as on the probes
+        reference = np.ones((*SHARED_EDGE_SIZE, 3))
+        for k in SHARED_EDGE_FACES:
+            face = PAIRS["faces"][k]
+            reference = scantrace.f_shading(reference, PAIRS["vertices"][face],
+                                            PAIRS["vcolors"][face])
+        wrong = diagnose.channel_error(img, reference) > 1.5 / 255
+        if not wrong.any():
+            return 1, []
+        rows = np.flatnonzero(wrong.any(axis=1))
+        return 0, [f"- {what}: {int(wrong.sum())} pixels differ from the expected fill, first "
+                   f"on row {int(rows[0])} (each pixel of the shared edge belongs to one face "
+                   "only: the one whose left edge it is)"]
 
     def _probes_gouraud(self):
         name = "Probes: Gouraud fill (g_shading on single triangles)"

@@ -47,6 +47,11 @@ CATALOGUE = {
         "never active.",
         "skip only the horizontal edge, not the face: leave it out of the edge list (`if a[1] == "
         "b[1]: continue`) and fill the rows with the other two"),
+    "canvas_border_clipped": (
+        "The canvas's {detail} are never written: the bounds check around `img[y, x] = …` is "
+        "off by one, so a face reaching that border loses its pixels there.",
+        "write every pixel with 0 ≤ x < W and 0 ≤ y < H: `if 0 <= x < img.shape[1] and 0 <= y "
+        "< img.shape[0]`"),
     "degenerate_drawn": (
         "Zero-area (collinear) faces are drawn; no pixel centre is inside them, so they must "
         "fill nothing.",

@@ -188,6 +188,19 @@ def horizontal_edge_skipped(tri, shape):
     return correct(tri, shape)
 
 
+def canvas_border_clipped(which):
+    """The correct fill behind a bounds check off by one: the canvas's first column and row
+    ('first': `0 < x`, `0 < y`) or its last ones ('last': `x < W − 1`, `y < H − 1`) never
+    written (only the border probes fill them)."""
+    def model(tri, shape):
+        mask = correct(tri, shape)
+        k = 0 if which == "first" else -1
+        mask[k, :] = False
+        mask[:, k] = False
+        return mask
+    return model
+
+
 def degenerate(tri):
     return _is_degenerate(_exact(tri))
 
@@ -208,6 +221,10 @@ MODELS = {
     ("edge_lag", ""): edge_lag,
     ("float_drift", ""): float_drift,
     ("horizontal_edge_skipped", ""): horizontal_edge_skipped,
+    ("canvas_border_clipped", "first column and row (x = 0, y = 0)"):
+        canvas_border_clipped("first"),
+    ("canvas_border_clipped", "last column and row (x = W − 1, y = H − 1)"):
+        canvas_border_clipped("last"),
 }
 
 

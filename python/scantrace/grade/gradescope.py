@@ -26,10 +26,13 @@ import zipfile
 
 # The Ubuntu packages of the build (scripts/deps.sh's demo list: the libraries CMakeLists.txt
 # finds; OpenCV's headers are needed to configure even though the Python module links none of
-# its video or window parts), the Python module's (pybind11, numpy), and the sandbox's.
+# its video or window parts; libpng and libjpeg, which grade/ finds, come with libopencv-dev but
+# are named as used), the Python module's (pybind11, numpy), and the sandbox's. Each name is
+# checked against Ubuntu 24.04 and 22.04 as docs/grading.md says ("setup.sh's packages").
 UBUNTU_PACKAGES = ("cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libsimdjson-dev "
                    "libopencv-dev libdeflate-dev libcli11-dev libtinyobjloader-dev libmatio-dev "
-                   "libxcb1-dev libhwy-dev pybind11-dev python3-dev python3-numpy bubblewrap")
+                   "libxcb1-dev libhwy-dev libpng-dev libjpeg-dev pybind11-dev python3-dev "
+                   "python3-numpy bubblewrap")
 
 SETUP_SH = r"""#!/usr/bin/env bash
 # Gradescope's autograder setup (made by `scantrace grade --gradescope-zip`, docs/grading.md):

@@ -40,6 +40,22 @@ PROBES = (
     Probe("long_edges", "long edges of slopes 1/3 and 3/10 (far from their start)",
           ((2, 1), (12, 31), (22, 37)), (40, 40)),
     Probe("border", "a vertex on the canvas corner", ((0, 0), (15, 2), (6, 14))),
+    # The canvas's borders in the fill's own terms: a face covering [0, W] x [0, H] fills every
+    # pixel exactly once (columns ceil(0) … ceil(W) − 1), so the left and top borders are x = 0
+    # and y = 0 and the right and bottom ones x = W and y = H. Each probe below has an edge along
+    # one border, so its first or last column or row is filled: a bounds check off by one at
+    # either end (fill_models.canvas_border_clipped) leaves it out, and a span or row loop one
+    # pixel too long on the right or bottom writes past the canvas.
+    Probe("border_left", "a vertical edge on the canvas's left border (x = 0)",
+          ((0, 4), (0, 19), (15, 11))),
+    Probe("border_top", "a horizontal edge on the canvas's top border (y = 0)",
+          ((4, 0), (19, 0), (10, 15))),
+    Probe("border_right", "a vertical edge on the canvas's right border (x = 24, the width)",
+          ((24, 3), (24, 18), (9, 12))),
+    Probe("border_bottom", "a horizontal edge on the canvas's bottom border (y = 24, the height)",
+          ((11, 9), (3, 24), (20, 24))),
+    Probe("border_corner", "a right angle in the canvas's bottom-right corner (24, 24)",
+          ((24, 10), (24, 24), (10, 24))),
     Probe("non_integer", "non-integer vertices", ((2.5, 3.25), (18.75, 9.5), (8.2, 20.6))),
     Probe("halves", "vertices on half pixels", ((3.5, 2.5), (19.5, 10.5), (6.5, 20.5))),
     Probe("zero_area", "a zero-area (collinear) face", ((3, 3), (9, 9), (15, 15))),
@@ -84,6 +100,11 @@ def _pairs_scene():
 
 
 PAIRS = _pairs_scene()
+# The shared edge through f_shading: pairs faces 1 then 0 (the painter's order, face 0 nearer)
+# on one blank canvas of SHARED_EDGE_SIZE, as render_img would draw them but without the
+# student's sort; each pixel of the diagonal belongs to exactly one face (face 1: its left edge).
+SHARED_EDGE_FACES = (1, 0)
+SHARED_EDGE_SIZE = (17, 17)
 PAIRS_CORNER = 48     # every pair lies in the canvas's top-left 48 x 48 pixels
 # Each pair: its name, what it separates, its faces, and the canvas region it lies in (rows,
 # columns) where the image is compared.

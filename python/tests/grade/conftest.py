@@ -199,14 +199,27 @@ WRONG = {
                                       "kind='stable')")],
     "order_unstable_on_ties": [_line("ORDER", "order = np.argsort(depth[faces].mean(axis=1))"
                                               "[::-1]")],
+    # Bounds checks off by one: `0 < x` (the first column and row never written) and
+    # `x < W - 1` (the last ones).
+    "canvas_border_clipped": [lambda s: _replace(
+        s, "if 0 <= x < img.shape[1] and 0 <= y < img.shape[0]:",
+        "if 0 < x < img.shape[1] and 0 < y < img.shape[0]:")],
     "vector_interp_degenerate": [lambda s: _replace(
         s, "    if a == b:  # DEGENERATE_VI\n        return np.asarray(V1, dtype=float)\n", "")],
 }
 
 
+# Second variants of a cause (not in WRONG, whose keys are the cause ids).
+VARIANTS = {
+    "canvas_border_clipped_last": [lambda s: _replace(
+        s, "if 0 <= x < img.shape[1] and 0 <= y < img.shape[0]:",
+        "if 0 <= x < img.shape[1] - 1 and 0 <= y < img.shape[0] - 1:")],
+}
+
+
 def wrong_source(cause):
     source = CORRECT
-    for edit in WRONG[cause]:
+    for edit in WRONG[cause] if cause in WRONG else VARIANTS[cause]:
         source = edit(source)
     return source
 

@@ -15,7 +15,7 @@ import pytest
 from scantrace.grade import __main__ as cli
 from scantrace.grade import gradescope, rubric
 
-from conftest import wrong_source
+from conftest import SOURCE_DIR, wrong_source
 
 SCHEMA = json.loads((pathlib.Path(cli.__file__).with_name("gradescope_results.schema.json"))
                     .read_text())
@@ -111,3 +111,22 @@ def test_zip_errors_are_one_line_and_usage_is_exit_2(tmp_path):
                        capture_output=True, text=True)
     assert r.returncode == 1 and "no scantrace source tree" in r.stderr
     assert not (tmp_path / "a.zip").exists()
+
+
+def test_setup_sh_installs_what_the_debian_build_installs_and_the_docs_list():
+    """setup.sh's Ubuntu packages are names scripts/deps.sh installs on Debian (the build tested
+    here), and docs/grading.md's Ubuntu check covers each of them once."""
+    import re
+
+    deps = (SOURCE_DIR / "scripts" / "deps.sh").read_text()
+    debian = set()
+    for group in re.findall(r"^\s*(?:demo_)?packages\+?=\(([^)]*)\)", deps, re.M | re.S):
+        debian.update(w for w in group.split() if not w.startswith("#"))
+    ubuntu = gradescope.UBUNTU_PACKAGES.split()
+    assert len(ubuntu) == len(set(ubuntu))
+    assert set(ubuntu) <= debian, set(ubuntu) - debian
+    docs = (SOURCE_DIR / "docs" / "grading.md").read_text()
+    section = docs[docs.index("### setup.sh's packages"):]
+    table = section[section.index("| packages |"):section.index("\n\n", section.index("| packages |"))]
+    named = {w for cell in re.findall(r"`([^`]*)`", table) for w in cell.split()}
+    assert set(ubuntu) <= named, set(ubuntu) - named

@@ -114,7 +114,8 @@ export class Scantrace {
 
   // The JSON Lines `scantrace trace` writes, as text. input: {scene} | {triangle, colors?,
   // width?, height?} | {polygon, colors?, width?, height?}.
-  // With options.keep, lastTraceImage is the image the traced fill drew, {width, height, rgba}.
+  // With options.keep, lastTraceImage is the image the traced fill drew, {width, height, rgba};
+  // with keep and text: false, the trace is kept but no text written ('' returned).
   traceText(input, options = {}) {
     const spec = { ...input };
     if ('scene' in spec) spec.scene = this._sceneFile(spec.scene);
@@ -126,6 +127,14 @@ export class Scantrace {
       this.lastTraceImage = width ? { width, height, rgba } : null;
     }
     return r.text();
+  }
+
+  // What a page shows of one step of the trace the last `keep: true` call kept (with `text:
+  // false` too, which writes no JSON Lines: a drag's mouse move): {events: the trace's event
+  // count, edge_table: face `triangle`'s edge_table event, scanline: its scanline event of row
+  // `y`}, each the object its line of the JSON Lines holds, or null.
+  keptStep(triangle, y) {
+    return JSON.parse(this._call('kept_step', [triangle | 0, Number(y)]).text());
   }
 
   // The same trace as event objects, one per line (header first, footer last).

@@ -62,6 +62,19 @@ try {
     const to = [from[0] - 83.3, from[1] - 121.7];
     await mouse('mousePressed', from);
     for (let i = 1; i <= 5; ++i) await mouse('mouseMoved', [from[0] + (to[0] - from[0]) * i / 5, from[1] + (to[1] - from[1]) * i / 5]);
+    // Before the release (the moves keep the trace in the module without its JSON Lines): the
+    // tables show the native trace's edge table and current row of the triangle as it is now.
+    const moving = (await b.evaluate('explorer.state()')).triangle;
+    native(['trace', '--triangle', moving.map((v) => v.join(',')).join(' '), '--shading', 'flat', '-o', 'moving.jsonl']);
+    const movingTrace = jsonl(fs.readFileSync(path.join(work, 'moving.jsonl'), 'utf8'));
+    const edgeTable = await text('edge-table');
+    for (const e of movingTrace.find((ev) => ev.type === 'edge_table').edges)
+      assert.ok(edgeTable.includes(`edge ${e.edge}: (${e.from}) -> (${e.to})  rows ${e.first_row}..${e.last_row}  x@ymin ${e.x_at_y_min}  dx/dy ${e.dx_dy}`), edgeTable);
+    const active = await text('active');
+    const y = Number(active.match(/^y = (-?\d+)/)[1]);
+    const row = movingTrace.find((ev) => ev.type === 'scanline' && ev.y === y);
+    assert.ok(row, `row ${y} is in the native trace`);
+    for (const a of row.active_edges) assert.ok(active.includes(`edge ${a.edge}  x = ${a.x}`), active);
     await mouse('mouseReleased', to);
     const moves = await b.evaluate('explorer.dragTimes()');
     console.log(`a drag's moves took ${moves.map((t) => t.toFixed(1)).join(', ')} ms (fill, trace, plan, the step's frame drawn; web/bench/explorer_drag.mjs takes medians)`);

@@ -92,6 +92,12 @@ export interface DecodedImage {
   name?: string;
 }
 
+/** An image file's name and bytes (a .npy for diff; any for checkImage). */
+export interface ImageFile {
+  name: string;
+  data: Uint8Array;
+}
+
 export interface DiffOptions extends FillOptions {
   tolerance?: number;
   undo?: boolean;
@@ -121,7 +127,10 @@ export class Scantrace {
   /** After traceText/trace with keep: true of a triangle or polygon: the image its traced fill drew. */
   lastTraceImage: { width: number; height: number; rgba: Uint8ClampedArray } | null;
   /** `scantrace diff SCENE IMAGE --json`'s report. */
-  diff(scene: SceneInput, image: DecodedImage, options?: DiffOptions): Record<string, unknown>;
+  diff(scene: SceneInput, image: DecodedImage | ImageFile, options?: DiffOptions): Record<string, unknown>;
+  /** The checks `scantrace diff` makes before decoding (header, size, memory, PNG chunks; a .npy
+   * decoded): the format and size, or ScantraceError with the command's line. */
+  checkImage(file: ImageFile): { format: 'png' | 'bmp' | 'npy'; width: number; height: number };
 }
 
 /** Loads the module: its .wasm read beside scantrace.mjs, or the bytes given. */

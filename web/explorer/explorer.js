@@ -386,22 +386,30 @@ export async function start(st) {
   async function openFile(file) {
     const bytes = new Uint8Array(await file.arrayBuffer());
     if (/\.(json|obj)$/i.test(file.name)) openScene({ name: file.name, data: bytes });
-    else if (/\.png$/i.test(file.name)) await diffImage(file, bytes);
-    else showError(`${file.name}: drop a scene (.json, .obj) or an image rendered for it (.png)`);
+    else if (/\.(png|npy)$/i.test(file.name)) await diffImage(file, bytes);
+    else showError(`${file.name}: drop a scene (.json, .obj) or an image rendered for it (.png, .npy)`);
   }
 
-  // A dropped PNG against the open scene: the browser decodes it, the module compares.
+  // A dropped image against the open scene. The module first checks it as `scantrace diff` does
+  // before decoding (a PNG declaring 100000x100000 pixels, a truncated one, a .npy holding a
+  // pickle: the command's line); a .npy it then decodes itself, a PNG the browser decodes.
   async function diffImage(file, bytes) {
     if (s.mode !== 'scene') return showError(`${file.name}: open the scene it was rendered for first`);
     try {
-      const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
-      const c = document.createElement('canvas');
-      c.width = bitmap.width;
-      c.height = bitmap.height;
-      const ctx = c.getContext('2d');
-      ctx.drawImage(bitmap, 0, 0);
-      const img = ctx.getImageData(0, 0, c.width, c.height);
-      const report = st.diff(scene, { width: c.width, height: c.height, rgba: img.data, name: file.name }, fillOptions());
+      const header = st.checkImage({ name: file.name, data: bytes });
+      let report;
+      if (header.format === 'npy') {
+        report = st.diff(scene, { name: file.name, data: bytes }, fillOptions());
+      } else {
+        const bitmap = await createImageBitmap(new Blob([bytes], { type: `image/${header.format}` }));
+        const c = document.createElement('canvas');
+        c.width = bitmap.width;
+        c.height = bitmap.height;
+        const ctx = c.getContext('2d');
+        ctx.drawImage(bitmap, 0, 0);
+        const img = ctx.getImageData(0, 0, c.width, c.height);
+        report = st.diff(scene, { width: c.width, height: c.height, rgba: img.data, name: file.name }, { ...fillOptions(), format: header.format });
+      }
       diffPicture = st.lastDiffPicture;
       $('diff').textContent = JSON.stringify(report, null, 1);
       showError(null);

@@ -79,7 +79,11 @@ std::string glyph_defs(const GlyphTable& glyphs) {
   if (glyphs.glyphs().empty()) return {};
   std::string out = "<defs>\n";
   for (std::size_t id = 0; id < glyphs.glyphs().size(); ++id) {
-    out += "<path id=\"g" + std::to_string(id) + "\" d=\"";
+    // Appended piece by piece: a literal plus a temporary string is GCC 12's -Wrestrict false
+    // positive (frame_json.cpp).
+    out += "<path id=\"g";
+    out += std::to_string(id);
+    out += "\" d=\"";
     for (const auto& stroke : glyphs.strokes(static_cast<int>(id)))
       for (std::size_t i = 0; i < stroke.size(); ++i) {
         out += i == 0 ? 'M' : 'L';

@@ -20,7 +20,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "grade/image_input.hpp"
+#include "grade/image_header.hpp"
 #include "src/fill_options.hpp"
 #include "src/image.hpp"
 #include "src/scene.hpp"

@@ -1,23 +1,18 @@
 #pragma once
 // The IMAGE of `scantrace diff`: what someone else's renderer produced. An 8-bit PNG (decoded by
 // libpng, grade/png_decoder.hpp), JPEG or BMP (by OpenCV, grade/opencv_decode.hpp), or a NumPy
-// .npy array H×W×3 (io/npy_reader.hpp). The size an image file declares in its header is checked against the memory available before anything is decoded, so a
-// PNG declaring 100000×100000 is refused with one line instead of exhausting the machine.
+// .npy array H×W×3 (io/npy_reader.hpp). The size an image file declares in its header is checked
+// against the memory available before anything is decoded, so a PNG declaring 100000×100000 is
+// refused with one line instead of exhausting the machine. The checks and the .npy decoding, which
+// need no OpenCV nor libpng (the WebAssembly module has them), are in grade/image_header.hpp.
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <string_view>
 
-#include "src/image.hpp"
+#include "grade/image_header.hpp"
 
 namespace scantrace::grade {
-
-struct SubmittedImage {
-  RgbImage pixels;        // RGB as the file holds it: bytes / 255, or the .npy values unscaled
-  std::string format;     // "png", "jpeg", "bmp" or "npy"
-  bool eight_bit = true;  // channel values are multiples of 1/255 (image files, uint8 arrays)
-  std::string name;       // for messages
-};
 
 // The size declared by a PNG (IHDR), BMP (Windows or OS/2 header) or JPEG (its frame header as
 // libjpeg reads it: grade/jpeg_header.hpp); false when `bytes` is none of them or too short to

@@ -5,6 +5,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "viz/frame_text.hpp"
+#include "viz/glyph_table.hpp"
 
 namespace scantrace::viz {
 namespace {
@@ -31,9 +32,17 @@ void put_all(std::string& out, const Parts&... parts) {
   (put(out, parts), ...);
 }
 
+// A polyline's points as JSON numbers, "x,y,x,y,...".
+void put_points(std::string& out, const std::vector<Point2d>& stroke) {
+  for (std::size_t i = 0; i < stroke.size(); ++i)
+    put_all(out, i ? "," : "", number(stroke[i].x), ',', number(stroke[i].y));
+}
+
 struct Writer {
   std::string& out;
   TextForm text_form = TextForm::strokes;
+  GlyphTable* glyphs = nullptr;        // TextForm::glyph_table: the frame's table
+  const BlockWriter* block = nullptr;  // a pixel block's data (empty: the PNG data URI)
   void operator()(const RectOp& r) const {
     put_all(out, "\"R\",", r.rect.x, ',', r.rect.y, ',', r.rect.width, ',', r.rect.height, ",\"",
             hex_colour(r.colour), "\",", r.thickness);
@@ -55,14 +64,25 @@ struct Writer {
               ',', static_cast<int>(t.font), ',', scale, ',', t.origin.x, ',', t.origin.y);
       return;
     }
-    put_all(out, "\"T\",", json_string(t.text), ",\"", hex_colour(t.colour), "\",", t.thickness,
-            ",[");
+    const bool table = text_form == TextForm::glyph_table && glyphs;
+    put_all(out, table ? "\"G\"," : "\"T\",", json_string(t.text), ",\"", hex_colour(t.colour),
+            "\",", t.thickness, ",[");
+    if (table) {  // each glyph by its id in the table, at its origin
+      const double s = hershey_scale(t.scale);
+      bool first = true;
+      for (const PlacedGlyph& g : hershey_layout(t.text, t.font, t.scale, t.origin)) {
+        put_all(out, first ? "" : ",", glyphs->id(g.c, t.font, s), ',', number(g.origin.x), ',',
+                number(g.origin.y));
+        first = false;
+      }
+      out += ']';
+      return;
+    }
     bool first_stroke = true;
     for (const auto& stroke : hershey_strokes(t.text, t.font, t.scale, t.origin)) {
       out += first_stroke ? "[" : ",[";
       first_stroke = false;
-      for (std::size_t i = 0; i < stroke.size(); ++i)
-        put_all(out, i ? "," : "", number(stroke[i].x), ',', number(stroke[i].y));
+      put_points(out, stroke);
       out += ']';
     }
     out += ']';
@@ -73,17 +93,20 @@ struct Writer {
       (*this)(RectOp{p.area, Scalar(c[0], c[1], c[2]), FILLED});
       return;
     }
-    put_all(out, "\"P\",", p.area.x, ',', p.area.y, ',', p.area.width, ',', p.area.height, ",\"",
-            frame_text::png_data_uri(p), '"');
+    put_all(out, "\"P\",", p.area.x, ',', p.area.y, ',', p.area.width, ',', p.area.height, ',');
+    if (block && *block)
+      out += (*block)(p);
+    else
+      put_all(out, '"', frame_text::png_data_uri(p), '"');
   }
 };
 
-}  // namespace
-
-std::string to_json(const DrawOp& op, TextForm text) {
+// One op, its text's glyphs (glyph_table) interned in `glyphs`.
+std::string op_json(const DrawOp& op, TextForm text, GlyphTable* glyphs,
+                    const BlockWriter* block) {
   // The kind first, then clip and mark: written after the body's kind, as the format says.
   std::string b;
-  std::visit(Writer{b, text}, op.body);
+  std::visit(Writer{b, text, glyphs, block}, op.body);
   const std::size_t comma = b.find(',');
   std::string out = "[";
   out.append(b, 0, comma);
@@ -100,16 +123,39 @@ std::string to_json(const DrawOp& op, TextForm text) {
   return out;
 }
 
-std::string to_json(const Frame& frame) {
+}  // namespace
+
+std::string to_json(const DrawOp& op, TextForm text) {
+  return op_json(op, text == TextForm::glyph_table ? TextForm::strokes : text, nullptr, nullptr);
+}
+
+std::string to_json(const Frame& frame, TextForm text, const BlockWriter& block) {
   std::string out;
   put_all(out, "{\"w\":", frame.size().width, ",\"h\":", frame.size().height, ",\"bg\":\"",
           hex_colour(frame.background()), "\",\"ops\":[");
+  GlyphTable glyphs;
   bool first = true;
   for (const DrawOp& op : frame.ops()) {
-    put_all(out, first ? "" : ",\n", to_json(op));
+    put_all(out, first ? "" : ",\n", op_json(op, text, &glyphs, &block));
     first = false;
   }
-  out += "]}\n";
+  out += ']';
+  if (text == TextForm::glyph_table) {
+    out += ",\"glyphs\":[";
+    for (std::size_t id = 0; id < glyphs.glyphs().size(); ++id) {
+      out += id ? ",[" : "[";
+      bool first_stroke = true;
+      for (const auto& stroke : glyphs.strokes(static_cast<int>(id))) {
+        out += first_stroke ? "[" : ",[";
+        first_stroke = false;
+        put_points(out, stroke);
+        out += ']';
+      }
+      out += ']';
+    }
+    out += ']';
+  }
+  out += "}\n";
   return out;
 }
 
@@ -183,6 +229,21 @@ const char* frame_canvas_script() {
         for (const s of strokes) {
           ctx.moveTo(s[0] + 0.5, s[1] + 0.5);
           for (let i = 2; i < s.length; i += 2) ctx.lineTo(s[i] + 0.5, s[i + 1] + 0.5);
+        }
+        ctx.stroke();
+      } else if (kind === 'G') {
+        // Glyphs placed from the frame's table: each stroke point is the glyph's origin plus its
+        // point in the table (what the strokes of a 'T' op hold, summed here).
+        const [, c, t, placed] = a;
+        ctx.strokeStyle = c;
+        ctx.lineWidth = t;
+        ctx.beginPath();
+        for (let g = 0; g < placed.length; g += 3) {
+          const x = placed[g + 1] + 0.5, y = placed[g + 2] + 0.5;
+          for (const s of frame.glyphs[placed[g]]) {
+            ctx.moveTo(x + s[0], y + s[1]);
+            for (let i = 2; i < s.length; i += 2) ctx.lineTo(x + s[i], y + s[i + 1]);
+          }
         }
         ctx.stroke();
       } else if (kind === 'P' && typeof op[7] === 'string') {

@@ -12,25 +12,41 @@
 //   ["L", clip, mark, x1, y1, x2, y2, colour, thickness]   end points in pixels (subpixel)
 //   ["C", clip, mark, cx, cy, radius, colour, thickness]   thickness -1: a disc
 //   ["T", clip, mark, text, colour, thickness, [[x, y, x, y, ...], ...]]   the Hershey strokes
+//   ["G", clip, mark, text, colour, thickness, [id, x, y, id, x, y, ...]]   the same text as its
+//       glyphs placed (TextForm::glyph_table): glyph `id` of the frame's "glyphs" with its origin
+//       at (x, y); a stroke point is that origin plus the glyph's point
 //   ["P", clip, mark, x, y, w, h, "data:image/png;base64,..."]   a block of pixels
 // (drawScantraceFrame also takes the block as {width, height, data}, its RGBA bytes, in place of
 // the data URI: the WebAssembly module's frames with blocks: 'rgba', drawn without loading)
+// With TextForm::glyph_table the frame also holds
+//   "glyphs": [[[dx, dy, dx, dy, ...], ...], ...]   glyph id's strokes relative to its origin
+// each glyph (character, font and scale) written once however often the frame's text repeats it
+// (viz/glyph_table.hpp): a tenth of the strokes' JSON for a step frame.
 // Colours are "#rrggbb". Text comes as its strokes, so the browser needs no font and draws the
 // glyphs the composer measured.
+#include <functional>
 #include <string>
 
 #include "viz/frame.hpp"
 
 namespace scantrace::viz {
 
-std::string to_json(const Frame& frame);
-
-// One OP of the list above. With TextForm::glyphs a text is written without its strokes, as
+// How text is written: its strokes ("T"); its glyphs placed from the frame's glyph table ("G",
+// whole frames only); or, for one op, as
 //   ["t", clip, mark, text, colour, thickness, font, scale, x, y]   (font: OpenCV's number; the
 // scale with 17 digits; origin on the baseline), for a reader that holds the Hershey glyphs and
 // repeats hershey_strokes() (the Jupyter player's deck, python/src/player_deck.hpp: strokes are
 // ~95 % of a frame's JSON).
-enum class TextForm { strokes, glyphs };
+enum class TextForm { strokes, glyphs, glyph_table };
+
+// A pixel block's last element, as JSON (by default the PNG data URI as a string): the
+// WebAssembly module writes the offset of its RGBA bytes instead (web/bindings_trace.cpp).
+using BlockWriter = std::function<std::string(const PixelsOp&)>;
+
+std::string to_json(const Frame& frame, TextForm text = TextForm::strokes,
+                    const BlockWriter& block = {});
+
+// One OP of the list above (text as strokes or "t"; glyph_table needs the whole frame).
 std::string to_json(const DrawOp& op, TextForm text = TextForm::strokes);
 
 // `drawScantraceFrame(ctx, frame)`: draws a parsed to_json() frame on a 2D canvas context of the

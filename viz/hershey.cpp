@@ -49,29 +49,51 @@ Size hershey_text_size(std::string_view text, HersheyFont font, double scale, in
           cv_round_int((kCapLine + kBaseLine) * scale + (thickness + 1) / 2)};
 }
 
-std::vector<std::vector<Point2d>> hershey_strokes(std::string_view text, HersheyFont font,
-                                                  double scale, Point origin) {
-  // OpenCV quantises the scale to 1/65536 and puts the glyphs' y = 9 on the baseline.
-  const double s = std::lrint(scale * 65536) / 65536.0;
+double hershey_scale(double scale) {
+  return std::lrint(scale * 65536) / 65536.0;
+}
+
+std::vector<PlacedGlyph> hershey_layout(std::string_view text, HersheyFont font, double scale,
+                                        Point origin) {
+  // putText puts the glyphs' y = 9 on the baseline and moves each glyph by its left bearing.
+  const double s = hershey_scale(scale);
   double x = origin.x;
   const double y = origin.y - kBaseLine * s;
-  std::vector<std::vector<Point2d>> strokes;
+  std::vector<PlacedGlyph> out;
   for_each_char(text, [&](unsigned char c) {
     const char* g = glyph(font, c);
-    const int left = g[0] - 'R', right = g[1] - 'R';
-    x -= left * s;
-    std::vector<Point2d> stroke;
-    for (const char* p = g + 2; *p && p[1]; p += 2) {
-      if (p[0] == ' ' && p[1] == 'R') {  // pen up
-        if (stroke.size() > 1) strokes.push_back(std::move(stroke));
-        stroke.clear();
-        continue;
-      }
-      stroke.push_back({x + (p[0] - 'R') * s, y + (p[1] - 'R') * s});
-    }
-    if (stroke.size() > 1) strokes.push_back(std::move(stroke));
-    x += right * s;
+    x -= (g[0] - 'R') * s;
+    out.push_back({c, {x, y}});
+    x += (g[1] - 'R') * s;
   });
+  return out;
+}
+
+std::vector<std::vector<Point2d>> hershey_glyph_strokes(unsigned char c, HersheyFont font,
+                                                        double s) {
+  std::vector<std::vector<Point2d>> strokes;
+  std::vector<Point2d> stroke;
+  for (const char* p = glyph(font, c) + 2; *p && p[1]; p += 2) {
+    if (p[0] == ' ' && p[1] == 'R') {  // pen up
+      if (stroke.size() > 1) strokes.push_back(std::move(stroke));
+      stroke.clear();
+      continue;
+    }
+    stroke.push_back({(p[0] - 'R') * s, (p[1] - 'R') * s});
+  }
+  if (stroke.size() > 1) strokes.push_back(std::move(stroke));
+  return strokes;
+}
+
+std::vector<std::vector<Point2d>> hershey_strokes(std::string_view text, HersheyFont font,
+                                                  double scale, Point origin) {
+  const double s = hershey_scale(scale);
+  std::vector<std::vector<Point2d>> strokes;
+  for (const PlacedGlyph& g : hershey_layout(text, font, scale, origin))
+    for (std::vector<Point2d> stroke : hershey_glyph_strokes(g.c, font, s)) {
+      for (Point2d& p : stroke) p = {g.origin.x + p.x, g.origin.y + p.y};
+      strokes.push_back(std::move(stroke));
+    }
   return strokes;
 }
 

@@ -27,4 +27,20 @@ Size hershey_text_size(std::string_view text, HersheyFont font, double scale, in
 std::vector<std::vector<Point2d>> hershey_strokes(std::string_view text, HersheyFont font,
                                                   double scale, Point origin);
 
+// The same strokes in two parts, so that a backend can write each glyph's shape once and place it
+// many times (viz/glyph_table.hpp): where putText puts each character of `text`, and a glyph's
+// strokes relative to that place. hershey_strokes() is their sum, point by point, in the same
+// double arithmetic (origin + relative point), so the parts give its numbers exactly.
+struct PlacedGlyph {
+  unsigned char c;  // the character drawn ('?' for anything not printable ASCII)
+  Point2d origin;   // its strokes' points are origin + hershey_glyph_strokes(c, ...)'s
+};
+// OpenCV's scale as putText uses it: quantised to 1/65536.
+double hershey_scale(double scale);
+std::vector<PlacedGlyph> hershey_layout(std::string_view text, HersheyFont font, double scale,
+                                        Point origin);
+// The polylines of one glyph at the quantised scale `s` (hershey_scale), relative to its origin.
+std::vector<std::vector<Point2d>> hershey_glyph_strokes(unsigned char c, HersheyFont font,
+                                                        double s);
+
 }  // namespace scantrace::viz

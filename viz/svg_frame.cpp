@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "viz/frame_text.hpp"
+#include "viz/glyph_table.hpp"
 
 namespace scantrace::viz {
 namespace {
@@ -21,6 +22,7 @@ std::string at(double v) {
 
 struct Writer {
   std::ostringstream& out;
+  GlyphTable& glyphs;  // the glyphs the text places, written once in <defs>
 
   void operator()(const RectOp& r) const {
     if (r.thickness < 0) {
@@ -49,13 +51,16 @@ struct Writer {
           << "\" stroke-width=\"" << c.thickness << "\"/>\n";
   }
   void operator()(const TextOp& t) const {
-    out << "<path fill=\"none\" stroke=\"" << hex_colour(t.colour) << "\" stroke-width=\""
-        << t.thickness << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\" d=\"";
-    for (const auto& stroke : hershey_strokes(t.text, t.font, t.scale, t.origin)) {
-      for (std::size_t i = 0; i < stroke.size(); ++i)
-        out << (i == 0 ? "M" : "L") << at(stroke[i].x) << " " << at(stroke[i].y);
-    }
-    out << "\"><title>" << frame_text::xml_escape(t.text) << "</title></path>\n";
+    // Each glyph placed with <use> from <defs>: the glyph's path is relative to its origin, the
+    // group's stroke is inherited by every use (a point lands where hershey_strokes puts it).
+    out << "<g fill=\"none\" stroke=\"" << hex_colour(t.colour) << "\" stroke-width=\""
+        << t.thickness << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\"><title>"
+        << frame_text::xml_escape(t.text) << "</title>";
+    const double s = hershey_scale(t.scale);
+    for (const PlacedGlyph& g : hershey_layout(t.text, t.font, t.scale, t.origin))
+      out << "<use xlink:href=\"#g" << glyphs.id(g.c, t.font, s) << "\" x=\"" << at(g.origin.x)
+          << "\" y=\"" << at(g.origin.y) << "\"/>";
+    out << "</g>\n";
   }
   void operator()(const PixelsOp& p) const {
     if (p.area.area() == 1) {  // a grid's centre dot: a rectangle, not an image
@@ -69,9 +74,52 @@ struct Writer {
   }
 };
 
+// <defs> of the glyphs `glyphs` holds: path gN is glyph N's strokes relative to its origin.
+std::string glyph_defs(const GlyphTable& glyphs) {
+  if (glyphs.glyphs().empty()) return {};
+  std::string out = "<defs>\n";
+  for (std::size_t id = 0; id < glyphs.glyphs().size(); ++id) {
+    // Appended piece by piece: a literal plus a temporary string is GCC 12's -Wrestrict false
+    // positive (frame_json.cpp).
+    out += "<path id=\"g";
+    out += std::to_string(id);
+    out += "\" d=\"";
+    for (const auto& stroke : glyphs.strokes(static_cast<int>(id)))
+      for (std::size_t i = 0; i < stroke.size(); ++i) {
+        out += i == 0 ? 'M' : 'L';
+        out += number(stroke[i].x);
+        out += ' ';
+        out += number(stroke[i].y);
+      }
+    out += "\"/>\n";
+  }
+  return out + "</defs>\n";
+}
+
 }  // namespace
 
 std::string to_svg(const Frame& frame) {
+  std::ostringstream body;
+  GlyphTable glyphs;
+  // Consecutive ops confined to one area share a group clipped to it and moved to its corner.
+  std::optional<Rect> open;
+  int clips = 0;
+  for (const DrawOp& op : frame.ops()) {
+    if (op.clip != open) {
+      if (open) body << "</g>\n";
+      open = op.clip;
+      if (open) {
+        const Rect& c = *open;
+        body << "<clipPath id=\"c" << clips << "\"><rect x=\"0\" y=\"0\" width=\"" << c.width
+             << "\" height=\"" << c.height << "\"/></clipPath>\n"
+             << "<g transform=\"translate(" << c.x << "," << c.y << ")\" clip-path=\"url(#c" << clips
+             << ")\">\n";
+        ++clips;
+      }
+    }
+    std::visit(Writer{body, glyphs}, op.body);
+  }
+  if (open) body << "</g>\n";
   std::ostringstream out;
   const Size s = frame.size();
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -80,26 +128,8 @@ std::string to_svg(const Frame& frame) {
       << s.width << "\" height=\"" << s.height << "\" viewBox=\"0 0 " << s.width << " " << s.height
       << "\">\n"
       << "<rect width=\"" << s.width << "\" height=\"" << s.height << "\" fill=\""
-      << hex_colour(frame.background()) << "\"/>\n";
-  // Consecutive ops confined to one area share a group clipped to it and moved to its corner.
-  std::optional<Rect> open;
-  int clips = 0;
-  for (const DrawOp& op : frame.ops()) {
-    if (op.clip != open) {
-      if (open) out << "</g>\n";
-      open = op.clip;
-      if (open) {
-        const Rect& c = *open;
-        out << "<clipPath id=\"c" << clips << "\"><rect x=\"0\" y=\"0\" width=\"" << c.width
-            << "\" height=\"" << c.height << "\"/></clipPath>\n"
-            << "<g transform=\"translate(" << c.x << "," << c.y << ")\" clip-path=\"url(#c" << clips
-            << ")\">\n";
-        ++clips;
-      }
-    }
-    std::visit(Writer{out}, op.body);
-  }
-  if (open) out << "</g>\n";
+      << hex_colour(frame.background()) << "\"/>\n"
+      << glyph_defs(glyphs) << body.str();
   out << "</svg>\n";
   return out.str();
 }

@@ -14,7 +14,6 @@
 #include "trace/record.hpp"
 #include "viz/frame_json.hpp"
 #include "viz/frame_sequence.hpp"
-#include "viz/frame_text.hpp"
 #include "web/bindings.hpp"
 
 namespace scantrace::web {
@@ -129,43 +128,34 @@ std::string trace_in_memory(const nlohmann::json& in, const nlohmann::json& o) {
   }
   // The image the traced fill drew, for a page to show (a polygon has no render of its own).
   put_rgba(image, result().bytes);
+  // Without the text (options.text false: a drag's mouse move, which reads the step's events
+  // with st_kept_step): the events' JSON was half of the call's time.
+  if (!o.value("text", true)) return {};
   std::string text;
   for (const trace::Event& e : kept_trace()->events()) text += trace::event_to_json(e).dump() + "\n";
   return text;
 }
 
-// A frame's display list as viz::to_json writes it, except its pixel blocks when `raw`: their RGBA
-// bytes appended to `bytes`, the op's last element the offset of its block there instead of a PNG
-// data URI. The page puts the bytes on its canvas at once (putImageData); the PNG and its base64
-// were most of a frame's time in the module and in the browser (docs/performance.md).
+// A frame's display list as viz::to_json writes it, its text as glyphs placed from the frame's
+// glyph table (each glyph's strokes once: they were most of the JSON the page parsed on every
+// mouse move, docs/performance.md), and its pixel blocks, when `raw`, as their RGBA bytes
+// appended to `bytes`, the op's last element the offset of its block there instead of a PNG data
+// URI. The page puts the bytes on its canvas at once (putImageData); the PNG and its base64 were
+// most of a frame's time in the module and in the browser.
 std::string frame_json(const viz::Frame& frame, bool raw, std::vector<std::uint8_t>& bytes) {
-  if (!raw) return viz::to_json(frame);
-  std::string out = "{\"w\":" + std::to_string(frame.size().width) + ",\"h\":" +
-                    std::to_string(frame.size().height) + ",\"bg\":\"" +
-                    viz::frame_text::hex_colour(frame.background()) + "\",\"ops\":[";
-  bool first = true;
-  for (const viz::DrawOp& op : frame.ops()) {
-    out += first ? "" : ",";
-    first = false;
-    const auto* p = std::get_if<viz::PixelsOp>(&op.body);
-    if (!p || p->area.area() == 1) {  // one pixel: to_json writes a rectangle
-      out += viz::to_json(op);
-      continue;
-    }
-    // ["P", clip, mark, x, y, w, h, offset]: the same op with the block by reference; clip and
-    // mark as to_json writes them (its text up to the body's coordinates).
-    const std::string whole = viz::to_json(viz::DrawOp{viz::RectOp{p->area, {}, 1}, op.clip, op.mark});
-    out += "[\"P\"" + whole.substr(4, whole.rfind(",\"#") - 4) + "," + std::to_string(bytes.size()) + "]";
+  if (!raw) return viz::to_json(frame, viz::TextForm::glyph_table);
+  return viz::to_json(frame, viz::TextForm::glyph_table, [&](const viz::PixelsOp& p) {
     std::size_t at = bytes.size();
-    bytes.resize(at + p->bgr->size() * 4);
-    for (const auto& c : *p->bgr) {
+    const std::string offset = std::to_string(at);
+    bytes.resize(at + p.bgr->size() * 4);
+    for (const auto& c : *p.bgr) {
       bytes[at++] = c[2];
       bytes[at++] = c[1];
       bytes[at++] = c[0];
       bytes[at++] = 255;
     }
-  }
-  return out + "]}";
+    return offset;
+  });
 }
 
 std::string read_file(const char* path) {
@@ -185,7 +175,8 @@ extern "C" {
 // The trace `scantrace trace` writes for `input_json` ({"scene": path} | {"triangle": [[x, y] ×3],
 // "colors"?, "width"?, "height"?} | {"polygon": [[[x, y], …], …], "colors"?, …}) under the
 // options (fill options, "level", "triangles", "max_events"; "keep": record in memory and keep the
-// trace for st_frames): JSON Lines in the result's text.
+// trace for st_frames and st_kept_step, and with "text": false write no text): JSON Lines in the
+// result's text.
 EMSCRIPTEN_KEEPALIVE int st_trace(const char* input_json, const char* options_json) {
   return web::run([&] {
     const nlohmann::json in = web::parse_options(input_json);
@@ -245,6 +236,24 @@ EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
       out += (i > first ? "," : "") + web::frame_json(s.frame(i), raw, web::result().bytes);
     out += "]}";
     web::result().text = std::move(out);
+  });
+}
+
+// What a page shows of one step of the kept trace: {"events": the trace's event count,
+// "edge_table": face `triangle`'s edge_table event, "scanline": its scanline event of row `y`}
+// (null where the trace has none), each as its line of the JSON Lines.
+EMSCRIPTEN_KEEPALIVE int st_kept_step(int triangle, double y) {
+  return web::run([&] {
+    if (!web::kept_trace())
+      throw std::invalid_argument("keptStep: no trace kept (trace with keep: true first)");
+    const trace::Trace& t = *web::kept_trace();
+    const auto line = [](const auto* e) {
+      return e ? trace::event_to_json(trace::Event{*e}).dump() : std::string("null");
+    };
+    const trace::Scanline* row = t.find_scanline(triangle, static_cast<i64>(y));
+    web::result().text = "{\"events\":" + std::to_string(t.events().size()) +
+                         ",\"edge_table\":" + line(t.find_edge_table(triangle)) +
+                         ",\"scanline\":" + line(row) + "}";
   });
 }
 

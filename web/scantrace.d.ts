@@ -21,6 +21,17 @@ export interface TraceOptions extends FillOptions {
   max_events?: number;
   /** Record the trace in memory and keep it for frames(null, …) (the same events and text). */
   keep?: boolean;
+  /** false, with keep: no JSON Lines written (traceText returns ''); keptStep reads the trace. */
+  text?: boolean;
+}
+
+/** What keptStep gives of one step of the kept trace. */
+export interface KeptStep {
+  /** The kept trace's event count. */
+  events: number;
+  /** The face's edge_table event and its scanline event of the row, or null. */
+  edge_table: TraceEvent | null;
+  scanline: TraceEvent | null;
 }
 
 export type TraceInput =
@@ -57,6 +68,8 @@ export interface CanvasFrame {
   h: number;
   bg: string;
   ops: unknown[];
+  /** Text as "G" ops: glyph id's strokes ([dx, dy, dx, dy, …] each) relative to its origin. */
+  glyphs?: number[][][];
 }
 
 export interface FrameOptions {
@@ -79,6 +92,12 @@ export interface DecodedImage {
   name?: string;
 }
 
+/** An image file's name and bytes (a .npy for diff; any for checkImage). */
+export interface ImageFile {
+  name: string;
+  data: Uint8Array;
+}
+
 export interface DiffOptions extends FillOptions {
   tolerance?: number;
   undo?: boolean;
@@ -95,6 +114,8 @@ export class Scantrace {
   trace(input: TraceInput, options?: TraceOptions): TraceEvent[];
   /** trace null: the trace kept by the last traceText/trace call with keep: true. */
   frames(trace: string | TraceEvent[] | null, options?: FrameOptions): { steps: FrameStep[]; frames: CanvasFrame[] };
+  /** The kept trace's event count, and face `triangle`'s edge table and scanline event of row `y`. */
+  keptStep(triangle: number, y: number): KeptStep;
   /** `scantrace why SCENE X Y --json`'s document (trace/why_schema.json). */
   why(scene: SceneInput, x: number, y: number, options?: FillOptions): Record<string, unknown>;
   /** drawScantraceFrame's JavaScript source (viz/frame_json.hpp). */
@@ -106,7 +127,10 @@ export class Scantrace {
   /** After traceText/trace with keep: true of a triangle or polygon: the image its traced fill drew. */
   lastTraceImage: { width: number; height: number; rgba: Uint8ClampedArray } | null;
   /** `scantrace diff SCENE IMAGE --json`'s report. */
-  diff(scene: SceneInput, image: DecodedImage, options?: DiffOptions): Record<string, unknown>;
+  diff(scene: SceneInput, image: DecodedImage | ImageFile, options?: DiffOptions): Record<string, unknown>;
+  /** The checks `scantrace diff` makes before decoding (header, size, memory, PNG chunks; a .npy
+   * decoded): the format and size, or ScantraceError with the command's line. */
+  checkImage(file: ImageFile): { format: 'png' | 'bmp' | 'npy'; width: number; height: number };
 }
 
 /** Loads the module: its .wasm read beside scantrace.mjs, or the bytes given. */

@@ -114,7 +114,8 @@ export class Scantrace {
 
   // The JSON Lines `scantrace trace` writes, as text. input: {scene} | {triangle, colors?,
   // width?, height?} | {polygon, colors?, width?, height?}.
-  // With options.keep, lastTraceImage is the image the traced fill drew, {width, height, rgba}.
+  // With options.keep, lastTraceImage is the image the traced fill drew, {width, height, rgba};
+  // with keep and text: false, the trace is kept but no text written ('' returned).
   traceText(input, options = {}) {
     const spec = { ...input };
     if ('scene' in spec) spec.scene = this._sceneFile(spec.scene);
@@ -126,6 +127,14 @@ export class Scantrace {
       this.lastTraceImage = width ? { width, height, rgba } : null;
     }
     return r.text();
+  }
+
+  // What a page shows of one step of the trace the last `keep: true` call kept (with `text:
+  // false` too, which writes no JSON Lines: a drag's mouse move): {events: the trace's event
+  // count, edge_table: face `triangle`'s edge_table event, scanline: its scanline event of row
+  // `y`}, each the object its line of the JSON Lines holds, or null.
+  keptStep(triangle, y) {
+    return JSON.parse(this._call('kept_step', [triangle | 0, Number(y)]).text());
   }
 
   // The same trace as event objects, one per line (header first, footer last).
@@ -178,14 +187,36 @@ export class Scantrace {
     return this._call('demo_scene', []).text();
   }
 
-  // `scantrace diff SCENE IMAGE --json`'s report. image: {width, height, rgba, name?}, decoded.
-  // diffPicture(): the picture of the last diff's differences, {width, height, rgba}.
+  // An image file {name, data} checked as `scantrace diff` checks it before decoding
+  // (grade/image_header.hpp): {format, width, height} of a PNG or BMP whose header it accepts
+  // (decode it then, e.g. with the browser), or of a .npy, which diff() takes as it is. Bad input
+  // throws ScantraceError with the command's line.
+  checkImage(file) {
+    return JSON.parse(this._call('image_header', [this._imageFile(file)]).text());
+  }
+
+  _imageFile(file) {
+    if (!file || typeof file.name !== 'string' || !(file.data instanceof Uint8Array))
+      throw new ScantraceError('image file: {name, data} with data a Uint8Array', 2);
+    const base = file.name.replace(/^.*[\\/]/, '') || 'image';
+    this.m.FS.writeFile(`/in/${base}`, file.data);
+    return base;
+  }
+
+  // `scantrace diff SCENE IMAGE --json`'s report. image: {width, height, rgba, name?}, decoded,
+  // or a .npy file {name, data}, decoded by the module as the command decodes it.
+  // lastDiffPicture: the picture of the last diff's differences, {width, height, rgba}.
   diff(scene, image, options = {}) {
-    const { width, height, rgba } = image;
-    if (!(width > 0 && height > 0) || !rgba || rgba.length !== width * height * 4)
-      throw new ScantraceError('image: {width, height, rgba} with width × height × 4 bytes', 2);
-    const bytes = rgba instanceof Uint8Array ? rgba : new Uint8Array(rgba.buffer, rgba.byteOffset, rgba.length);
-    const r = this._call('diff', [this._sceneFile(scene), bytes, width, height, image.name || 'image.png', JSON.stringify(options)]);
+    let r;
+    if (image && image.data instanceof Uint8Array) {
+      r = this._call('diff_npy', [this._sceneFile(scene), this._imageFile(image), JSON.stringify(options)]);
+    } else {
+      const { width, height, rgba } = image;
+      if (!(width > 0 && height > 0) || !rgba || rgba.length !== width * height * 4)
+        throw new ScantraceError('image: {width, height, rgba} with width × height × 4 bytes, or a .npy {name, data}', 2);
+      const bytes = rgba instanceof Uint8Array ? rgba : new Uint8Array(rgba.buffer, rgba.byteOffset, rgba.length);
+      r = this._call('diff', [this._sceneFile(scene), bytes, width, height, image.name || 'image.png', JSON.stringify(options)]);
+    }
     const report = JSON.parse(r.text());
     const picture = new Uint8ClampedArray(r.bytes().buffer);
     const w = report.canvas ? report.canvas.width : 0;

@@ -24,8 +24,8 @@ namespace {
 // The page: no margin and no scrollbars, so the canvas's pixel (0, 0) is the screenshot's. The
 // JSON is embedded as a JavaScript literal (JSON is one); "</" is escaped so a label holding
 // "</script>" cannot end the script element.
-std::string canvas_page(const viz::Frame& f) {
-  std::string json = viz::to_json(f);
+std::string canvas_page(const viz::Frame& f, viz::TextForm text) {
+  std::string json = viz::to_json(f, text);
   for (std::size_t at = 0; (at = json.find("</", at)) != std::string::npos; at += 3)
     json.replace(at, 2, "<\\/");
   return fmt::format(
@@ -49,7 +49,9 @@ TEST_CASE("Chromium draws a canvas frame as OpenCV draws its raster", "[viz][can
   const fs::path dir = scratch("canvas");
   check_pages_against_raster(s, dir, [&](const viz::Frame& f, std::size_t i) {
     const fs::path page = dir / fmt::format("frame_{}.html", i);
-    write(page, canvas_page(f));
+    // Text as its glyphs from the frame's table (what the pages draw), and on step 4 (the
+    // first step's card) as its strokes ("T", what the Jupyter player's deck expands into).
+    write(page, canvas_page(f, i == 3 ? viz::TextForm::strokes : viz::TextForm::glyph_table));
     return page;
   });
   fs::remove_all(dir);

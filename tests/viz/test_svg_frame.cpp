@@ -6,6 +6,8 @@
 // backend cannot silently drop or move a mark; the canvas JSON holds every operation and mark.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
@@ -33,8 +35,9 @@ TEST_CASE("an SVG frame is valid, self-contained SVG 1.1", "[viz][svg]") {
        {std::size_t{0}, std::size_t{3}, s.steps().size() / 2, s.steps().size() - 1}) {
     INFO("step " << i);
     const std::string svg = viz::to_svg(s.frame(i));
-    // Self-contained: the only URLs are the namespaces; images are data URIs.
-    const std::regex url(R"((href|src)\s*=\s*"(?!data:)[^"]*")");
+    // Self-contained: the only URLs are the namespaces; images are data URIs, glyphs placed from
+    // the document's own <defs> (#gN).
+    const std::regex url(R"((href|src)\s*=\s*"(?!data:|#g[0-9]+")[^"]*")");
     CHECK_FALSE(std::regex_search(svg, url));
     CHECK(svg.find("http://", svg.find("xmlns:xlink") + 50) == std::string::npos);
     CHECK(svg.find("width=\"1280\" height=\"720\"") != std::string::npos);
@@ -81,6 +84,57 @@ TEST_CASE("the canvas JSON holds every operation and mark of the frame", "[viz][
   }
   CHECK(std::string(viz::frame_canvas_script()).find("function drawScantraceFrame(ctx, frame)") !=
         std::string::npos);
+}
+
+TEST_CASE("the canvas JSON's glyph table places the strokes the text op holds",
+          "[viz][svg][json]") {
+  // The same frame with its text as strokes ("T") and as glyphs placed from the frame's table
+  // ("G"): every "G" op, each glyph's strokes moved to its origin, gives the "T" op's strokes
+  // (both written to 1/100 px: a sum of two such numbers is within 0.01), and the table holds each
+  // glyph once, however often the text repeats it.
+  const trace::Trace t = course_triangle();
+  viz::FrameSequence s(t, {}, {1280, 720}, "test");
+  const viz::Frame f = s.frame(s.steps().size() / 2);
+  const nlohmann::json strokes = nlohmann::json::parse(viz::to_json(f));
+  const nlohmann::json table = nlohmann::json::parse(viz::to_json(f, viz::TextForm::glyph_table));
+  REQUIRE(table["ops"].size() == strokes["ops"].size());
+  CHECK_FALSE(strokes.contains("glyphs"));
+  std::size_t texts = 0, placed = 0, points = 0;
+  double worst = 0;
+  for (std::size_t k = 0; k < strokes["ops"].size(); ++k) {
+    const nlohmann::json& a = strokes["ops"][k];
+    const nlohmann::json& b = table["ops"][k];
+    if (a[0] != "T") {
+      CHECK(a == b);
+      continue;
+    }
+    ++texts;
+    REQUIRE(b[0] == "G");
+    CHECK(b[3] == a[3]);  // the text, colour and thickness
+    CHECK(b[4] == a[4]);
+    CHECK(b[5] == a[5]);
+    std::vector<double> expanded;
+    for (std::size_t g = 0; g + 2 < b[6].size(); g += 3) {
+      ++placed;
+      const double x = b[6][g + 1], y = b[6][g + 2];
+      for (const auto& stroke : table["glyphs"].at(b[6][g].get<std::size_t>()))
+        for (std::size_t i = 0; i + 1 < stroke.size(); i += 2) {
+          expanded.push_back(x + stroke[i].get<double>());
+          expanded.push_back(y + stroke[i + 1].get<double>());
+        }
+    }
+    std::vector<double> want;
+    for (const auto& stroke : a[6])
+      for (const auto& v : stroke) want.push_back(v.get<double>());
+    REQUIRE(expanded.size() == want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) worst = std::max(worst, std::abs(expanded[i] - want[i]));
+    points += want.size() / 2;
+  }
+  INFO(texts << " text ops, " << placed << " glyphs placed, " << points << " stroke points");
+  CHECK(texts > 20);
+  CHECK(worst <= 0.0100001);
+  CHECK(table["glyphs"].size() < placed / 3);  // each glyph once: far fewer than placed
+  CHECK(viz::to_json(f, viz::TextForm::glyph_table).size() * 3 < viz::to_json(f).size());
 }
 
 TEST_CASE("Chromium draws an SVG frame as OpenCV draws its raster", "[viz][svg][chromium]") {

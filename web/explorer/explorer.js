@@ -11,7 +11,8 @@ export async function start(st) {
   let s = fromHash(location.hash);
   let scene = null; // scene mode: {name, data}
   let sceneObj = null; // the scene the grid shows (triangle mode: the triangle as a one-face scene)
-  let events = [], traceText = '', plan = [], fill = null, diffPicture = null;
+  let traceText = '', plan = [], fill = null, diffPicture = null;
+  let shown = null; // the module's keptStep of the current step: the tables' events
   let view = { zoom: 1, x: 0, y: 0 }; // canvas pixel (0, 0) at screen (x, y), `zoom` px a pixel
   let drag = null, marked = null;
   const dragTimes = [];
@@ -42,7 +43,9 @@ export async function start(st) {
 
   // Re-runs the module on the state: the fill, the trace, its steps and the current step's frame,
   // all drawn before this returns (a drag calls it on every mouse move: docs/performance.md).
-  function recompute() {
+  // `moving`: a drag's mouse move, where the trace is kept in the module without its JSON Lines
+  // (the tables read the step's events from the module); the release writes them.
+  function recompute(moving = false) {
     const t0 = performance.now();
     showError(null);
     try {
@@ -55,7 +58,8 @@ export async function start(st) {
         ? { triangle: s.triangle, colors: s.colors, width: s.size[0], height: s.size[1] }
         : s.mode === 'polygon' ? { polygon: [s.polygon], width: s.size[0], height: s.size[1] } : { scene };
       // Kept in the module for the frames of its steps (composeStep).
-      traceText = st.traceText(traced, { ...fillOptions(), level: s.mode === 'scene' ? 'triangle' : 'scanline', keep: true });
+      const text = st.traceText(traced, { ...fillOptions(), level: s.mode === 'scene' ? 'triangle' : 'scanline', keep: true, text: !moving });
+      traceText = moving ? null : text;
       const traceMs = performance.now() - t0;
       if (s.mode !== 'scene') fill = { ...st.lastTraceImage, ms: traceMs };
       if (fillCanvas.width !== fill.width || fillCanvas.height !== fill.height) {
@@ -63,7 +67,6 @@ export async function start(st) {
         fillCanvas.height = fill.height;
       }
       fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
-      events = traceText.split('\n').filter((l) => l).map((l) => JSON.parse(l));
       composeStep();
       $('fill-ms').textContent = s.mode === 'scene' ? `render ${fill.ms.toFixed(2)} ms` : `fill and trace ${fill.ms.toFixed(1)} ms`;
     } catch (e) {
@@ -85,6 +88,9 @@ export async function start(st) {
       r = st.frames(null, { first: s.step, count: 1, source, blocks: 'rgba' });
     }
     shownFrame = r.frames[0] || null;
+    // The tables' events: the step's face's edge table and, for a scanline step, its row.
+    const step = plan[s.step];
+    shown = st.keptStep(step ? Math.max(0, step.triangle) : 0, step && step.kind === 'scanlines' ? step.last_row : -1);
   }
 
   function redraw() {
@@ -198,13 +204,11 @@ export async function start(st) {
   function showTables() {
     const step = currentStep();
     $('step-kind').textContent = step ? `${step.kind}${step.kind === 'scanlines' ? ` rows ${step.first_row}..${step.last_row}` : ''}` : '';
-    const table = events.find((e) => e.type === 'edge_table' && (!step || e.triangle === Math.max(0, step.triangle)));
+    const table = shown && shown.edge_table;
     $('edge-table').textContent = table
       ? table.edges.map((e) => `edge ${e.edge}: (${e.from}) -> (${e.to})  rows ${e.first_row}..${e.last_row}  x@ymin ${e.x_at_y_min}  dx/dy ${e.dx_dy}`).join('\n')
       : '(none: the trace is at triangle level, or no edge)';
-    const row = step && step.kind === 'scanlines'
-      ? events.find((e) => e.type === 'scanline' && e.triangle === step.triangle && e.y === step.last_row)
-      : null;
+    const row = step && step.kind === 'scanlines' && shown ? shown.scanline : null;
     $('active').textContent = row
       ? [`y = ${row.y}  entered [${row.entered}]  retired [${row.retired}]`,
         ...row.active_edges.map((a) => `edge ${a.edge}  x = ${a.x}`),
@@ -212,7 +216,9 @@ export async function start(st) {
         ...(row.span ? [`span [${row.span.x_begin}, ${row.span.x_end})`] : []),
         ...((row.spans || []).map((sp) => `span [${sp.x_begin}, ${sp.x_end})`))].join('\n')
       : '(choose a scanline step: \u2192 \u2190)';
-    $('events').textContent = `${events.length} events, ${traceText.length} bytes of JSON Lines`;
+    $('events').textContent = !shown ? ''
+      : traceText === null ? `${shown.events} events (their JSON Lines written when the vertex is let go)`
+        : `${shown.events} events, ${traceText.length} bytes of JSON Lines`;
   }
 
   function setStep(k) {
@@ -281,7 +287,7 @@ export async function start(st) {
       // composed frame of the current step. The handler's time, kept for the bench
       // (web/bench/explorer_drag.mjs) and the test's report.
       const t0 = performance.now();
-      recompute();
+      recompute(true);
       dragTimes.push(performance.now() - t0);
     } else {
       const [x0, y0, vx, vy] = drag.pan;
@@ -292,7 +298,10 @@ export async function start(st) {
     }
   });
   window.addEventListener('mouseup', (e) => {
-    if (drag && drag.vertex !== undefined) history.replaceState(null, '', toHash(s));
+    if (drag && drag.vertex !== undefined) {
+      drag = null;
+      recompute(); // the trace's JSON Lines too, and the address
+    }
     if (drag && drag.pan && !drag.moved) {
       const [x, y] = toCanvas(...pointer(e)).map(Math.floor);
       if (fill && x >= 0 && y >= 0 && x < fill.width && y < fill.height) why(x, y);
@@ -377,22 +386,30 @@ export async function start(st) {
   async function openFile(file) {
     const bytes = new Uint8Array(await file.arrayBuffer());
     if (/\.(json|obj)$/i.test(file.name)) openScene({ name: file.name, data: bytes });
-    else if (/\.png$/i.test(file.name)) await diffImage(file, bytes);
-    else showError(`${file.name}: drop a scene (.json, .obj) or an image rendered for it (.png)`);
+    else if (/\.(png|npy)$/i.test(file.name)) await diffImage(file, bytes);
+    else showError(`${file.name}: drop a scene (.json, .obj) or an image rendered for it (.png, .npy)`);
   }
 
-  // A dropped PNG against the open scene: the browser decodes it, the module compares.
+  // A dropped image against the open scene. The module first checks it as `scantrace diff` does
+  // before decoding (a PNG declaring 100000x100000 pixels, a truncated one, a .npy holding a
+  // pickle: the command's line); a .npy it then decodes itself, a PNG the browser decodes.
   async function diffImage(file, bytes) {
     if (s.mode !== 'scene') return showError(`${file.name}: open the scene it was rendered for first`);
     try {
-      const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
-      const c = document.createElement('canvas');
-      c.width = bitmap.width;
-      c.height = bitmap.height;
-      const ctx = c.getContext('2d');
-      ctx.drawImage(bitmap, 0, 0);
-      const img = ctx.getImageData(0, 0, c.width, c.height);
-      const report = st.diff(scene, { width: c.width, height: c.height, rgba: img.data, name: file.name }, fillOptions());
+      const header = st.checkImage({ name: file.name, data: bytes });
+      let report;
+      if (header.format === 'npy') {
+        report = st.diff(scene, { name: file.name, data: bytes }, fillOptions());
+      } else {
+        const bitmap = await createImageBitmap(new Blob([bytes], { type: `image/${header.format}` }));
+        const c = document.createElement('canvas');
+        c.width = bitmap.width;
+        c.height = bitmap.height;
+        const ctx = c.getContext('2d');
+        ctx.drawImage(bitmap, 0, 0);
+        const img = ctx.getImageData(0, 0, c.width, c.height);
+        report = st.diff(scene, { width: c.width, height: c.height, rgba: img.data, name: file.name }, { ...fillOptions(), format: header.format });
+      }
       diffPicture = st.lastDiffPicture;
       $('diff').textContent = JSON.stringify(report, null, 1);
       showError(null);

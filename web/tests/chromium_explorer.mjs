@@ -4,7 +4,8 @@
 // - dragging a vertex changes the trace shown into the native `trace` of the new triangle;
 // - `scantrace step`'s keys step; a click on a pixel shows that pixel's `why --json`;
 // - the page's fill pixels equal the native render; a PNG given for an open scene is diffed as
-//   `diff --json` diffs it; a malformed scene shows the CLI's line and the page keeps working;
+//   `diff --json` diffs it, and so is a .npy; a malformed scene, a PNG declaring 100000 x 100000
+//   pixels and a .npy holding a pickle show `scantrace diff`'s line and the page keeps working;
 // - no console error, no exception, no network request.
 //
 //   node --experimental-websocket chromium_explorer.mjs EXPLORER.html SCANTRACE WORK_DIR
@@ -12,9 +13,10 @@ import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
+import zlib from 'node:zlib';
 
 import { checker, launch, until, watchProblems } from './cdp.mjs';
-import { decodePng, encodePng } from './png.mjs';
+import { decodePng, encodePng, pngChunk, pngSignature } from './png.mjs';
 
 const [explorer, scantraceArg, work] = process.argv.slice(2);
 const scantrace = path.resolve(scantraceArg);
@@ -62,6 +64,19 @@ try {
     const to = [from[0] - 83.3, from[1] - 121.7];
     await mouse('mousePressed', from);
     for (let i = 1; i <= 5; ++i) await mouse('mouseMoved', [from[0] + (to[0] - from[0]) * i / 5, from[1] + (to[1] - from[1]) * i / 5]);
+    // Before the release (the moves keep the trace in the module without its JSON Lines): the
+    // tables show the native trace's edge table and current row of the triangle as it is now.
+    const moving = (await b.evaluate('explorer.state()')).triangle;
+    native(['trace', '--triangle', moving.map((v) => v.join(',')).join(' '), '--shading', 'flat', '-o', 'moving.jsonl']);
+    const movingTrace = jsonl(fs.readFileSync(path.join(work, 'moving.jsonl'), 'utf8'));
+    const edgeTable = await text('edge-table');
+    for (const e of movingTrace.find((ev) => ev.type === 'edge_table').edges)
+      assert.ok(edgeTable.includes(`edge ${e.edge}: (${e.from}) -> (${e.to})  rows ${e.first_row}..${e.last_row}  x@ymin ${e.x_at_y_min}  dx/dy ${e.dx_dy}`), edgeTable);
+    const active = await text('active');
+    const y = Number(active.match(/^y = (-?\d+)/)[1]);
+    const row = movingTrace.find((ev) => ev.type === 'scanline' && ev.y === y);
+    assert.ok(row, `row ${y} is in the native trace`);
+    for (const a of row.active_edges) assert.ok(active.includes(`edge ${a.edge}  x = ${a.x}`), active);
     await mouse('mouseReleased', to);
     const moves = await b.evaluate('explorer.dragTimes()');
     console.log(`a drag's moves took ${moves.map((t) => t.toFixed(1)).join(', ')} ms (fill, trace, plan, the step's frame drawn; web/bench/explorer_drag.mjs takes medians)`);
@@ -236,6 +251,62 @@ try {
     await setFile(path.join(work, 'student.png'));
     await until('the diff report', async () => (await text('diff')).startsWith('{'));
     assert.deepStrictEqual(JSON.parse(await text('diff')), want);
+  });
+
+  // A .npy file as numpy.save writes it (format 1.0): the header dict padded to 64 bytes.
+  const npy = (descr, shape, data) => {
+    let dict = `{'descr': '${descr}', 'fortran_order': False, 'shape': (${shape.join(', ')}), }`;
+    dict += ' '.repeat(63 - ((10 + dict.length) % 64)) + '\n';
+    const head = Buffer.alloc(10);
+    Buffer.from('\x93NUMPY', 'latin1').copy(head);
+    head[6] = 1;
+    head.writeUInt16LE(dict.length, 8);
+    return Buffer.concat([head, Buffer.from(dict, 'latin1'), Buffer.from(data)]);
+  };
+
+  // Bad input the command refuses before decoding: the page shows `scantrace diff`'s line for the
+  // same files (its 'scantrace: ' prefix aside) and keeps working: the next good file is diffed.
+  await check("bad input shows scantrace diff's line and the page keeps working", async () => {
+    // A PNG whose header declares 100000 x 100000 pixels (its IHDR's CRC right; one short IDAT).
+    const ihdr = Buffer.alloc(13);
+    ihdr.writeUInt32BE(100000, 0);
+    ihdr.writeUInt32BE(100000, 4);
+    ihdr.set([8, 2, 0, 0, 0], 8);
+    fs.writeFileSync(path.join(work, 'huge.png'), Buffer.concat([pngSignature, pngChunk('IHDR', ihdr),
+      pngChunk('IDAT', zlib.deflateSync(Buffer.alloc(10))), pngChunk('IEND', Buffer.alloc(0))]));
+    // An object array: numpy.save(allow_pickle=True) writes its pickle after the header.
+    fs.writeFileSync(path.join(work, 'pickled.npy'), npy('|O', [2, 2, 3], Buffer.from('\x80\x04\x95\x00cbuiltins\neval\n.', 'latin1')));
+    const bad = path.join(work, 'broken_scene.json');
+    fs.writeFileSync(bad, '{"width": 512, "vertices": [');
+    for (const [file, scene] of [['huge.png', 'explorer_triangle.json'], ['pickled.npy', 'explorer_triangle.json'], ['student.png', 'broken_scene.json']]) {
+      const line = native(['diff', scene, file], [1]).stderr.trim().split('\n').pop().replace(/^scantrace: /, '');
+      if (scene === 'broken_scene.json') {
+        await setFile(bad);
+      } else {
+        await setFile(scene === 'explorer_triangle.json' ? path.join(work, 'explorer_triangle.json') : scene);
+        await until('the scene open', async () => (await b.evaluate('explorer.state().mode')) === 'scene' && (await text('error')) === '');
+        await setFile(path.join(work, file));
+      }
+      await until(`the error line for ${file}`, async () => (await text('error')).length > 0);
+      assert.equal(await text('error'), line);
+    }
+  });
+
+  await check('a .npy image for the open scene is diffed as diff --json diffs it', async () => {
+    await setFile(path.join(work, 'explorer_triangle.json'));
+    await until('the scene open', async () => (await b.evaluate('explorer.state().mode')) === 'scene' && (await text('error')) === '');
+    // The student image of the PNG check as the course hands images in: float64, H x W x 3.
+    const img = decodePng(fs.readFileSync(path.join(work, 'student.png')));
+    const values = new Float64Array(img.width * img.height * 3);
+    for (let i = 0, k = 0; i < img.width * img.height; ++i)
+      for (let c = 0; c < 3; ++c) values[k++] = img.rgba[i * 4 + c] / 255;
+    fs.writeFileSync(path.join(work, 'student.npy'), npy('<f8', [img.height, img.width, 3], new Uint8Array(values.buffer)));
+    const want = JSON.parse(native(['diff', 'explorer_triangle.json', 'student.npy', '--json', '--shading', 'flat'], [0, 3]).stdout);
+    await b.evaluate("document.getElementById('diff').textContent = ''");
+    await setFile(path.join(work, 'student.npy'));
+    await until('the diff report', async () => (await text('diff')).startsWith('{'));
+    assert.deepStrictEqual(JSON.parse(await text('diff')), want);
+    assert.equal(await text('error'), '');
   });
 
   await check('no console error, no exception, no network request', async () => {

@@ -1,0 +1,44 @@
+#pragma once
+// Each glyph of a frame's text written once (docs/design.md §6, "Text"): the SVG and canvas
+// backends draw text as the Hershey strokes, and a frame's labels repeat the same few dozen
+// glyphs hundreds of times (the course triangle's step frames: 85 text runs, 27,000 stroke points,
+// 90 % of a frame's canvas JSON). A backend asks the table for the id of each glyph it places and
+// writes the table once: the glyph's strokes relative to its origin (hershey_glyph_strokes), the
+// SVG's <defs> placed by <use>, the canvas JSON's "glyphs" placed by a "G" op.
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "viz/hershey.hpp"
+
+namespace scantrace::viz {
+
+class GlyphTable {
+ public:
+  struct Glyph {
+    unsigned char c;
+    HersheyFont font;
+    double scale;  // quantised (hershey_scale)
+  };
+
+  // The id of the glyph (ids count from 0 in the order first asked for).
+  int id(unsigned char c, HersheyFont font, double quantised_scale) {
+    const auto [at, added] = ids_.try_emplace({c, static_cast<int>(font), quantised_scale},
+                                              static_cast<int>(glyphs_.size()));
+    if (added) glyphs_.push_back({c, font, quantised_scale});
+    return at->second;
+  }
+  // The glyphs by id.
+  const std::vector<Glyph>& glyphs() const { return glyphs_; }
+  // Glyph `id`'s polylines relative to its origin.
+  std::vector<std::vector<Point2d>> strokes(int id) const {
+    const Glyph& g = glyphs_.at(static_cast<std::size_t>(id));
+    return hershey_glyph_strokes(g.c, g.font, g.scale);
+  }
+
+ private:
+  std::map<std::tuple<unsigned char, int, double>, int> ids_;
+  std::vector<Glyph> glyphs_;
+};
+
+}  // namespace scantrace::viz

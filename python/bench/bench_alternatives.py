@@ -112,6 +112,12 @@ def main():
         lambda: scantrace.diff(s, student, shading="flat")
     contenders["scantrace.diff (the same image, Gouraud reference)"] = \
         lambda: scantrace.diff(s, student, shading="gouraud")
+    # The Gouraud assignment's own case: a Gouraud render with the same grey rows against the
+    # Gouraud reference.
+    student_g = scantrace.render_img(f, v, c, d, "g")
+    student_g[::37] = 0.5
+    contenders["scantrace.diff (Gouraud image with grey rows, Gouraud reference)"] = \
+        lambda: scantrace.diff(s, student_g, shading="gouraud")
     times = {name: [] for name in contenders}
     cpp_times = []
     for _ in range(args.rounds):

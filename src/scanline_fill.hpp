@@ -77,7 +77,10 @@ struct SpanShader {
   // span, not per pixel) and one increment per pixel in double: the colour is linear along the
   // row, and 16,384 increments drift by ~1e-12, far inside the 1e-4 budget.
   Color c, step;
-  SpanShader(Color left, Color right, double xl, double xr, i64 x_begin) {
+  // Inlined: called, its colours went by value on the stack, stored 8 bytes at a time and loaded
+  // 16 at a time, which the store buffer cannot forward (perf: a fifth of the Gouraud sweep's
+  // samples on that load once the sweep had grown enough for GCC to stop inlining this).
+  [[gnu::always_inline]] SpanShader(Color left, Color right, double xl, double xr, i64 x_begin) {
     if (!(xr > xl)) {  // a span of one point: vector_interp's symmetric mean
       c = (left + right) * 0.5;
       return;
@@ -172,8 +175,24 @@ struct ConvexRows : RowRule<C, Tracer> {
   // The flat colour in the canvas's pixel format, converted once per polygon (DirectCanvas only).
   DirectPixel<C> flat_pixel{};
 
-  // Inlined into the sweep (scanline_sweep.hpp says why).
+  // Inlined into the sweep (scanline_sweep.hpp says why): the list's outermost steppers, copied
+  // out for the run and back after it.
   [[gnu::always_inline]] void run(i64 y, const i64 run_last, ActiveEdgeList<Stepper>& active) {
+    const bool two = active.size() >= 2;
+    Stepper l = two ? active.front().at : Stepper{};
+    Stepper r = two ? active.back().at : Stepper{};
+    run(y, run_last, active, l, r);
+    if (two) active.front().at = l, active.back().at = r;
+  }
+
+  // A run whose outermost steppers the caller holds (the list's first and last edges, at row y):
+  // they come back stepped past run_last, and the list's copies are written only on traced rows,
+  // for the tracer. The triangle sweep holds its two so. Why: it read its long edge's stepper
+  // back from the list, where the run had just stored it, and that copy loaded 16 bytes at a time
+  // what the run had stored 8 bytes at a time, which the store buffer cannot forward: perf put
+  // 13% of a Gouraud float64 render's sweep samples on that load (the course scene).
+  [[gnu::always_inline]] void run(i64 y, const i64 run_last, ActiveEdgeList<Stepper>& active,
+                                  Stepper& l_held, Stepper& r_held) {
     const bool closed = opt.fill_rule == FillRule::closed;
     const bool gouraud = opt.shading == Shading::gouraud;
     const bool shade = gouraud && !uniform;
@@ -182,8 +201,7 @@ struct ConvexRows : RowRule<C, Tracer> {
     const std::size_t n_active = active.size();
     const Edge* left = n_active >= 2 ? &active.front().edge : nullptr;
     const Edge* right = n_active >= 2 ? &active.back().edge : nullptr;
-    Stepper l = n_active >= 2 ? active.front().at : Stepper{};
-    Stepper r = n_active >= 2 ? active.back().at : Stepper{};
+    Stepper l = l_held, r = r_held;
     RunEdgeColor<Stepper> l_color, r_color;
     if (shade && left) {
       l_color.start(*left, colors, grid);
@@ -237,8 +255,12 @@ struct ConvexRows : RowRule<C, Tracer> {
           if constexpr (kCanvasShades && CoverageCanvas<C>) {
             if (at.clip) {
               ShadedSpan<DirectPixel<C>> part(xb, xe, shader.c, shader.step);
-              at.claimed += CoverageMask::claim(at.cover, xb, xe,
-                                                [&](int a, int b) { part.write(at.row, a, b); });
+              // Inlined as the flat run writer is (RowCursor::fill_flat): called, it was a
+              // fifth of the Gouraud sweep's samples once the sweep had grown.
+              const auto run = [&](int a, int b) __attribute__((always_inline)) {
+                part.write(at.row, a, b);
+              };
+              at.claimed += CoverageMask::claim(at.cover, xb, xe, run);
             } else {
               CoverageMask::mark(at.cover, xb, xe);
               at.claimed += xe - xb;
@@ -270,7 +292,7 @@ struct ConvexRows : RowRule<C, Tracer> {
       at.next_row();
       trace.begin_row(y + 1);
     }
-    if (n_active >= 2) active.front().at = l, active.back().at = r;
+    l_held = l, r_held = r;
     pixels += written;
     at.finish(canvas);
   }
@@ -280,10 +302,16 @@ struct ConvexRows : RowRule<C, Tracer> {
 // written as the convex rule writes a flat span, and the same counts.
 template <Canvas C>
 FillResult fill_small_triangle(C& canvas, const SmallTriangle& t, Color color, FlatRow& flat_row) {
-  std::array<RowSpan, kSmallTriangleRows> spans;  // only rows [0, t.rows) are written and read
-  small_triangle_spans(t, spans.data());
+  // The pixel first, the spans after: the rows read the pixel from memory (RowCursor::fill_flat
+  // takes it by reference), and the kernel's call between its stores and their first load lets
+  // them reach the cache. Made after the kernel, the pixel was stored a few instructions before
+  // the first row loaded it, in wider loads than its stores, which the store buffer cannot
+  // forward: a stall on every face, half of a near-to-far float64 render's samples in this
+  // function (perf, the course scene).
   DirectPixel<C> pixel{};
   if constexpr (DirectCanvas<C>) pixel = C::convert(color);
+  std::array<RowSpan, kSmallTriangleRows> spans;  // only rows [0, t.rows) are written and read
+  small_triangle_spans(t, spans.data());
   RowCursor<C> at(canvas, t.row0);
   i64 pixels = 0;
   for (int r = 0;;) {

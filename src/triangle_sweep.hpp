@@ -71,8 +71,11 @@ template <class RowRule>
     else
       active.hold(side, side_at, along, along_at);
     rule.begin_row(from);
-    rule.run(from, to, active);
-    along_at = long_left ? active.front().at : active.back().at;  // stepped past row `to`
+    // The run steps along_at past row `to` in place (ConvexRows::run says why not in the list).
+    if (long_left)
+      rule.run(from, to, active, along_at, side_at);
+    else
+      rule.run(from, to, active, side_at, along_at);
   };
   if (y_first < middle_row)
     run(detail::triangle_edge(p, top, mid, grid), y_first, std::min(middle_row - 1, y_last));

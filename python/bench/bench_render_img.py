@@ -6,7 +6,8 @@
 Prints medians of N rounds (default 30), the three timed interleaved round by round so that a
 busy machine slows them alike, and the median of the per-round ratios (each Python call over the
 C++ render of the same round: on a machine whose load swings from round to round, the steadier
-figure); the load average is printed:
+figure); the load average is printed. Times are the rendering thread's CPU time by default
+(--clock cpu: on two cores shared with other jobs, wall time mostly measures the waits):
   - C++: the library's render of the scene (Image<Rgb32f>, the float canvas of `scantrace
     render`), timed inside C++ (no Python at all);
   - Python render_img: the course's call, numpy in, a 512 x 512 x 3 float64 image out (the array
@@ -31,10 +32,14 @@ import scantrace  # noqa: E402
 from scantrace import _scantrace  # noqa: E402
 
 
+CLOCKS = {"wall": time.perf_counter, "cpu": time.thread_time}
+clock = CLOCKS["cpu"]
+
+
 def timed(f):
-    t0 = time.perf_counter()
+    t0 = clock()
     f()
-    return time.perf_counter() - t0
+    return clock() - t0
 
 
 def main():
@@ -45,20 +50,27 @@ def main():
     ap.add_argument("scene", nargs="?", default=str(default))
     ap.add_argument("--rounds", type=int, default=30)
     ap.add_argument("--numpy-rounds", type=int, default=3)
+    ap.add_argument("--clock", choices=sorted(CLOCKS), default="cpu",
+                    help="cpu (default): the rendering thread's CPU time, user and system "
+                         "(time.thread_time; in C++ CLOCK_THREAD_CPUTIME_ID), which leaves out "
+                         "the time a render waited for a core on a shared machine; wall: "
+                         "elapsed time")
     args = ap.parse_args()
+    global clock
+    clock = CLOCKS[args.clock]
 
     s = scantrace.load_scene(args.scene)
     f, v, c, d = s["faces"], s["vertices"], s["vcolors"], s["depth"]
     print(f"{args.scene}: {len(f)} faces; medians of {args.rounds} rounds (numpy: "
-          f"{args.numpy_rounds}); load average {os.getloadavg()[0]:.2f} on {os.cpu_count()} "
-          f"cores\n")
+          f"{args.numpy_rounds}); {args.clock} time; load average {os.getloadavg()[0]:.2f} on "
+          f"{os.cpu_count()} cores\n")
     print("| shading | C++ render | Python render_img (float64) | ratio (of medians / median of "
           "ratios) | Python render float32 | ratio | pure numpy | speed-up of render_img |")
     print("|---|---|---|---|---|---|---|---|")
     for shading in ("f", "g"):
         cpp, py64, py32 = [], [], []
         for _ in range(args.rounds):
-            cpp += _scantrace._cpp_render_seconds(args.scene, shading, 1)
+            cpp += _scantrace._cpp_render_seconds(args.scene, shading, 1, args.clock)
             py64.append(timed(lambda: scantrace.render_img(f, v, c, d, shading)))
             py32.append(timed(lambda: scantrace.render(v, f, c, d, shading=shading,
                                                        dtype=np.float32)))

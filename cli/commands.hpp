@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "cli/demo_explain.hpp"
+#include "grade/image_header.hpp"
 
 namespace CLI {
 class App;
@@ -28,7 +29,8 @@ Command add_stress_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
 Command add_why_command(CLI::App& app);
-Command add_diff_command(CLI::App& app);
+// `jpeg_bmp`: the executable's decoder of JPEG and BMP images (grade/image_header.hpp).
+Command add_diff_command(CLI::App& app, grade::JpegBmpDecoder jpeg_bmp);
 Command add_explore_command(CLI::App& app);  // the web build's explorer page (web/)
 Command add_grade_command(CLI::App& app);
 

@@ -29,6 +29,7 @@ struct DiffArgs {
   ModelFlags model;
   double tolerance = 1.0 / 255.0;
   bool no_undo = false, json = false;
+  grade::JpegBmpDecoder jpeg_bmp = nullptr;
 };
 
 void run_diff(const DiffArgs& args) {
@@ -38,7 +39,7 @@ void run_diff(const DiffArgs& args) {
   const Stopwatch work;
   // CPU time too: on a machine shared with other jobs the wall time says little about the work.
   const std::clock_t cpu = std::clock();
-  const grade::SubmittedImage image = grade::read_submitted_image(args.image);
+  const grade::SubmittedImage image = grade::read_submitted_image(args.image, args.jpeg_bmp);
   grade::DiffOptions options;
   options.tolerance = args.tolerance;
   options.undo = !args.no_undo;
@@ -72,8 +73,9 @@ void run_diff(const DiffArgs& args) {
 
 }  // namespace
 
-Command add_diff_command(CLI::App& app) {
+Command add_diff_command(CLI::App& app, grade::JpegBmpDecoder jpeg_bmp) {
   auto args = std::make_shared<DiffArgs>();
+  args->jpeg_bmp = jpeg_bmp;
   CLI::App* cmd = app.add_subcommand(
       "diff",
       "Compares IMAGE, what another renderer produced for SCENE, with the reference\n"

@@ -3,12 +3,11 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <string>
 
-#include "grade/opencv_decode.hpp"
 #include "io/input_error.hpp"
 
 namespace scantrace::cli {
@@ -20,21 +19,17 @@ void keep_diff_command_line(int, char** argv) {
   kept_argv = argv;
 }
 
-}  // namespace scantrace::cli
-
-namespace scantrace::grade {
-
 // Nothing has been written yet when the image is read (the scene is loaded, no output is), so
 // the other executable starts the command again from the beginning; its start-up (OpenCV's
 // codecs, ~0.1-0.3 s) is paid by JPEG and BMP images only.
-void decode_with_opencv(std::string_view, SubmittedImage& out) {
+void hand_image_to_scantrace_tools(std::string_view, grade::SubmittedImage& out) {
   std::error_code ec;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
   const std::filesystem::path tools = self.parent_path() / "scantrace-tools";
   std::string why = "cannot be found";
-  if (!ec && cli::kept_argv != nullptr && std::filesystem::exists(tools, ec)) {
+  if (!ec && kept_argv != nullptr && std::filesystem::exists(tools, ec)) {
     std::fflush(nullptr);
-    execv(tools.c_str(), cli::kept_argv);
+    execv(tools.c_str(), kept_argv);
     why = std::string("cannot be run (") + std::strerror(errno) + ")";
   }
   throw InputError(out.name, "",
@@ -42,4 +37,4 @@ void decode_with_opencv(std::string_view, SubmittedImage& out) {
                        why + " beside " + self.string() + "; PNG and .npy images need none");
 }
 
-}  // namespace scantrace::grade
+}  // namespace scantrace::cli

@@ -11,6 +11,7 @@
 int main(int argc, char** argv) {
   using namespace scantrace::cli;
   keep_diff_command_line(argc, argv);
-  constexpr AddCommand commands[]{add_diff_command};
+  constexpr AddCommand commands[]{
+      [](CLI::App& app) { return add_diff_command(app, hand_image_to_scantrace_tools); }};
   return run_app(argc, argv, commands);
 }

@@ -2,6 +2,7 @@
 // executable runs `render` itself and hands every other command line to this one
 // (cli/main_render.cpp).
 #include "cli/app.hpp"
+#include "grade/opencv_decode.hpp"
 
 int main(int argc, char** argv) {
   using namespace scantrace::cli;
@@ -17,7 +18,7 @@ int main(int argc, char** argv) {
       add_bench_command,
       add_check_command,
       add_why_command,
-      add_diff_command,
+      [](CLI::App& app) { return add_diff_command(app, scantrace::grade::decode_with_opencv); },
       add_step_command,
       add_explore_command,
       add_grade_command};

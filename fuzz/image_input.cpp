@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "grade/image_input.hpp"
+#include "grade/opencv_decode.hpp"
 #include "io/input_error.hpp"
 
 // The fuzzer runs under -rss_limit_mb=2048: a header declaring a large image must be refused by the
@@ -20,7 +21,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   try {
-    const auto image = scantrace::grade::decode_image(bytes, "fuzz.img");
+    const auto image =
+        scantrace::grade::decode_image(bytes, "fuzz.img", scantrace::grade::decode_with_opencv);
     // What was accepted has a shape and finite values.
     if (image.pixels.width() <= 0 || image.pixels.height() <= 0) __builtin_trap();
   } catch (const scantrace::InputError&) {

@@ -18,6 +18,14 @@ struct SubmittedImage {
   std::string name;       // for messages
 };
 
+// Decodes what libpng and the .npy reader do not, a JPEG or a BMP (out.format says which, its
+// declared size already checked), into out.pixels; throws InputError naming out.name. Each
+// executable passes its own to decode_image (grade/image_input.hpp): OpenCV's imgcodecs where it
+// is linked (grade/opencv_decode.hpp), handing the command to scantrace-tools in scantrace-diff,
+// which links no OpenCV (cli/diff_handoff.hpp); nullptr where no decoder exists (the image is
+// then refused with one line naming its format).
+using JpegBmpDecoder = void (*)(std::string_view bytes, SubmittedImage& out);
+
 // A NumPy .npy file, by its magic.
 bool is_npy(std::string_view bytes);
 

@@ -3,7 +3,6 @@
 #include <spdlog/spdlog.h>
 
 #include "grade/jpeg_header.hpp"
-#include "grade/opencv_decode.hpp"
 #include "grade/png_decoder.hpp"
 #include "io/input_error.hpp"
 #include "io/json_input.hpp"
@@ -25,7 +24,8 @@ bool declared_size(std::string_view b, const std::string& name, std::int64_t& wi
   return false;
 }
 
-SubmittedImage decode_image(std::string_view bytes, const std::string& name) {
+SubmittedImage decode_image(std::string_view bytes, const std::string& name,
+                            JpegBmpDecoder jpeg_bmp) {
   if (is_npy(bytes)) return decode_npy(bytes, name);
   SubmittedImage out;
   out.name = name;
@@ -37,16 +37,19 @@ SubmittedImage decode_image(std::string_view bytes, const std::string& name) {
     std::string said;
     out.pixels = decode_png(bytes, name, said);
     if (!said.empty()) spdlog::warn("warning: {}: the png decoder said: {}", name, said);
+  } else if (jpeg_bmp != nullptr) {
+    jpeg_bmp(bytes, out);
   } else {
-    decode_with_opencv(bytes, out);  // JPEG, BMP
+    throw InputError(name, "",
+                     "a " + out.format + " image cannot be decoded here (PNG and .npy can)");
   }
   return out;
 }
 
-SubmittedImage read_submitted_image(const std::filesystem::path& file) {
+SubmittedImage read_submitted_image(const std::filesystem::path& file, JpegBmpDecoder jpeg_bmp) {
   return within_memory(file.string(), [&] {
     const std::string bytes = json_input::read_text_file(file);
-    return decode_image(bytes, file.string());
+    return decode_image(bytes, file.string(), jpeg_bmp);
   });
 }
 

@@ -2,9 +2,9 @@
 // JPEG and BMP images, decoded by OpenCV's imgcodecs (decode_image hands them here; a PNG is
 // decoded by libpng itself, grade/png_decoder.hpp, and a .npy by io/npy_reader.hpp).
 //
-// A link seam: `scantrace_grade` defines this with OpenCV (opencv_decode.cpp); `scantrace-diff`,
-// which links no OpenCV so that it starts without loading imgcodecs' ~140 libraries, defines it
-// as handing the whole command line to `scantrace-tools` (cli/diff_handoff.cpp).
+// The JpegBmpDecoder (grade/image_header.hpp) of every executable that links OpenCV;
+// `scantrace-diff`, which links none so that it starts without loading imgcodecs' ~140 libraries,
+// passes one that hands the whole command line to `scantrace-tools` (cli/diff_handoff.hpp).
 #include <string_view>
 
 #include "grade/image_input.hpp"

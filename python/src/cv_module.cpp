@@ -12,6 +12,7 @@
 
 #include "arrays.hpp"
 #include "grade/image_input.hpp"
+#include "grade/opencv_decode.hpp"
 #include "io/input_error.hpp"
 #include "py_trace.hpp"
 #include "viz/replay.hpp"
@@ -58,7 +59,7 @@ py::dict replay(const PyTrace& t, const std::filesystem::path& out, py::handle f
 // An image file as the command's diff reads it: uint8 for 8-bit files (all of PNG, JPEG, BMP),
 // and its format.
 py::tuple read_image(const std::filesystem::path& path) {
-  const grade::SubmittedImage im = grade::read_submitted_image(path);
+  const grade::SubmittedImage im = grade::read_submitted_image(path, grade::decode_with_opencv);
   py::array_t<std::uint8_t> out({im.pixels.height(), im.pixels.width(), 3});
   std::uint8_t* o = out.mutable_data();
   for (const Rgb32f& p : im.pixels.pixels())

@@ -65,7 +65,7 @@ TEST_CASE("npy: float32, float64 and uint8 H×W×3 arrays are read exactly", "[g
   CHECK(u1.integer);
   CHECK(u1.values == std::vector<float>{0.f, 128.f, 255.f});
   const auto image = scantrace::grade::decode_image(
-      npy("|u1", "(1, 1, 3)", std::string("\x00\x80\xff", 3)), "c.npy");
+      npy("|u1", "(1, 1, 3)", std::string("\x00\x80\xff", 3)), "c.npy", nullptr);
   CHECK(image.pixels(0, 0).g == Approx(128.0 / 255));
 }
 
@@ -105,7 +105,7 @@ TEST_CASE("image files: a huge declared size and a truncated PNG are refused bef
   png += std::string(4, '\0');  // CRC (not checked before the size)
   png += std::string("\x00\x00\x00\x00IEND\xae\x42\x60\x82", 12);
   try {
-    scantrace::grade::decode_image(png, "huge.png");
+    scantrace::grade::decode_image(png, "huge.png", nullptr);
     FAIL("no error");
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find("100000x100000") != std::string::npos);
@@ -114,12 +114,12 @@ TEST_CASE("image files: a huge declared size and a truncated PNG are refused bef
   std::string small = png;
   small.replace(16, 8, std::string("\x00\x00\x00\x05\x00\x00\x00\x05", 8));
   try {
-    scantrace::grade::decode_image(small.substr(0, 40), "cut.png");
+    scantrace::grade::decode_image(small.substr(0, 40), "cut.png", nullptr);
     FAIL("no error");
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find("truncated") != std::string::npos);
   }
-  CHECK_THROWS_AS(scantrace::grade::decode_image("GIF89a....", "x.gif"), InputError);
+  CHECK_THROWS_AS(scantrace::grade::decode_image("GIF89a....", "x.gif", nullptr), InputError);
 }
 
 TEST_CASE("image files: a declared size whose product overflows 64 bits is refused, not wrapped",
@@ -131,7 +131,7 @@ TEST_CASE("image files: a declared size whose product overflows 64 bits is refus
       scantrace::json_input::read_text_file(std::filesystem::path(SCANTRACE_SOURCE_DIR) /
                                             "fuzz/regressions/image_input/png-size-overflow");
   try {
-    scantrace::grade::decode_image(png, "overflow.png");
+    scantrace::grade::decode_image(png, "overflow.png", nullptr);
     FAIL("no error");
   } catch (const InputError& e) {
     CHECK(std::string(e.what()).find("declares 4294902015x4278190082 pixels") != std::string::npos);

@@ -25,10 +25,14 @@ struct PngLayout {
 
 int channels(int colour) {
   switch (colour) {
-    case PNG_COLOR_TYPE_GRAY_ALPHA: return 2;
-    case PNG_COLOR_TYPE_RGB: return 3;
-    case PNG_COLOR_TYPE_RGB_ALPHA: return 4;
-    default: return 1;  // grey, palette
+    case PNG_COLOR_TYPE_GRAY_ALPHA:
+      return 2;
+    case PNG_COLOR_TYPE_RGB:
+      return 3;
+    case PNG_COLOR_TYPE_RGB_ALPHA:
+      return 4;
+    default:
+      return 1;  // grey, palette
   }
 }
 
@@ -45,8 +49,8 @@ std::string random_png(const PngLayout& l, int w, int h, std::mt19937& rng) {
   REQUIRE(setjmp(png_jmpbuf(png)) == 0);
   png_set_write_fn(png, &out, append, nullptr);
   png_set_IHDR(png, info, w, h, l.depth, l.colour,
-               l.interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-               PNG_FILTER_TYPE_DEFAULT);
+               l.interlaced ? PNG_INTERLACE_ADAM7 : PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   const int levels = 1 << std::min(l.depth, 8);
   std::vector<png_color> palette(static_cast<std::size_t>(levels));
   std::vector<png_byte> alpha(palette.size());
@@ -57,18 +61,16 @@ std::string random_png(const PngLayout& l, int w, int h, std::mt19937& rng) {
     png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
   png_color_16 key{};
   key.gray = key.red = 1, key.green = 2, key.blue = 3;
-  if (l.trns)
-    png_set_tRNS(png, info, alpha.data(), static_cast<int>(alpha.size()), &key);
+  if (l.trns) png_set_tRNS(png, info, alpha.data(), static_cast<int>(alpha.size()), &key);
   png_write_info(png, info);
-  png_set_packing(png);  // one byte per sub-byte sample in the rows below
+  png_set_packing(png);                  // one byte per sub-byte sample in the rows below
   if (l.depth == 16) png_set_swap(png);  // the rows hold little-endian 16-bit samples
   const int bytes_per_sample = l.depth == 16 ? 2 : 1;
   const std::size_t row_bytes = static_cast<std::size_t>(w) * channels(l.colour) * bytes_per_sample;
   std::vector<png_byte> pixels(row_bytes * h);
   for (std::size_t k = 0; k < pixels.size(); ++k)
-    pixels[k] = static_cast<png_byte>(l.depth < 8 && bytes_per_sample == 1
-                                          ? rng() % levels
-                                          : rng() % 256);
+    pixels[k] =
+        static_cast<png_byte>(l.depth < 8 && bytes_per_sample == 1 ? rng() % levels : rng() % 256);
   std::vector<png_bytep> rows(h);
   for (int y = 0; y < h; ++y) rows[y] = pixels.data() + row_bytes * y;
   png_write_image(png, rows.data());
@@ -82,10 +84,11 @@ std::string random_png(const PngLayout& l, int w, int h, std::mt19937& rng) {
 TEST_CASE("png decoder: every colour type and depth decodes as OpenCV's IMREAD_COLOR does",
           "[grade][image]") {
   std::mt19937 rng(35);
-  const std::vector<std::pair<int, std::vector<int>>> types{
-      {PNG_COLOR_TYPE_GRAY, {1, 2, 4, 8, 16}},    {PNG_COLOR_TYPE_PALETTE, {1, 2, 4, 8}},
-      {PNG_COLOR_TYPE_RGB, {8, 16}},              {PNG_COLOR_TYPE_GRAY_ALPHA, {8, 16}},
-      {PNG_COLOR_TYPE_RGB_ALPHA, {8, 16}}};
+  const std::vector<std::pair<int, std::vector<int>>> types{{PNG_COLOR_TYPE_GRAY, {1, 2, 4, 8, 16}},
+                                                            {PNG_COLOR_TYPE_PALETTE, {1, 2, 4, 8}},
+                                                            {PNG_COLOR_TYPE_RGB, {8, 16}},
+                                                            {PNG_COLOR_TYPE_GRAY_ALPHA, {8, 16}},
+                                                            {PNG_COLOR_TYPE_RGB_ALPHA, {8, 16}}};
   int cases = 0;
   for (const auto& [colour, depths] : types)
     for (const int depth : depths)
@@ -96,7 +99,7 @@ TEST_CASE("png decoder: every colour type and depth decodes as OpenCV's IMREAD_C
           const std::string png = random_png(layout, 13, 7, rng);
           INFO("colour type " << colour << ", depth " << depth << ", tRNS " << trns
                               << ", interlaced " << interlaced);
-          const auto ours = scantrace::grade::decode_image(png, "t.png");
+          const auto ours = scantrace::grade::decode_image(png, "t.png", nullptr);
           const cv::Mat cv_image =
               cv::imdecode(std::vector<unsigned char>(png.begin(), png.end()), cv::IMREAD_COLOR);
           REQUIRE(cv_image.type() == CV_8UC3);
@@ -122,7 +125,7 @@ TEST_CASE("png decoder: corrupt image data is one error naming the file", "[grad
   REQUIRE(idat != std::string::npos);
   png[idat + 8] ^= 0x5A;  // inside the compressed stream: its CRC no longer matches
   try {
-    scantrace::grade::decode_image(png, "broken.png");
+    scantrace::grade::decode_image(png, "broken.png", nullptr);
     FAIL("a corrupt PNG was decoded");
   } catch (const InputError& e) {
     const std::string what = e.what();

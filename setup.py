@@ -4,12 +4,17 @@ built by the project's own CMake (the build is defined there once), then copied 
     pip install --no-build-isolation .       (into a venv made with --system-site-packages)
 
 Environment:
-    SCANTRACE_CMAKE_BUILD_DIR   the CMake build directory (default: outside the clone, in
-                                ${XDG_CACHE_HOME:-~/.cache}/scantrace/build-python-KEY, KEY naming
-                                the clone's path: the install writes nothing into the clone;
-                                kept, so a second install rebuilds only what changed). An
-                                existing build directory given here is built as it is
-                                configured, not reconfigured.
+    SCANTRACE_CMAKE_BUILD_DIR   the CMake build directory. Default: outside the clone, in
+                                ${XDG_CACHE_HOME:-~/.cache}/scantrace/python-KEY/build, KEY naming
+                                the clone's path (the install writes nothing into the clone; the
+                                directory is kept, so a second install rebuilds only what
+                                changed). python-KEY/ also holds a link to each of the clone's
+                                top-level entries and CMake is given python-KEY/ as the source:
+                                a compile then sees the paths a clone's own build/ sees
+                                (../../src/x.cpp), so ccache, with python-KEY/ as its base
+                                directory, finds the objects of any clone's build (scripts/build.sh,
+                                CI, an earlier pip install elsewhere). An existing build directory
+                                given here is built as it is configured, not reconfigured.
     SCANTRACE_PYTHON_OPENCV=1   also build _scantrace_cv (explain's video, diff of PNG/JPEG/BMP
                                 files), which links OpenCV; without it the package loads no OpenCV.
     SCANTRACE_JOBS              parallel compile jobs (default: the number of cores).
@@ -33,15 +38,43 @@ from setuptools.command.build_ext import build_ext
 ROOT = pathlib.Path(__file__).resolve().parent
 
 
-def default_build_dir():
-    """The CMake build directory of this clone in the user's cache, one per clone (a clone's
-    build directory holds its absolute paths)."""
+def default_work_dir():
+    """This clone's directory in the user's cache, one per clone (a build directory holds its
+    absolute paths): the links to the clone's entries and the CMake build directory build/."""
     cache = pathlib.Path(os.environ.get("XDG_CACHE_HOME") or pathlib.Path.home() / ".cache")
     key = hashlib.sha256(str(ROOT).encode()).hexdigest()[:12]
-    return cache / "scantrace" / f"build-python-{key}"
+    return cache / "scantrace" / f"python-{key}"
 
 
-BUILD = pathlib.Path(os.environ.get("SCANTRACE_CMAKE_BUILD_DIR") or default_build_dir()).resolve()
+def mirror_clone(work):
+    """Links work/NAME -> the clone's NAME for each of the clone's top-level entries (but .git and
+    build, the name of the build directory beside them), and drops links to entries that are gone.
+
+    Why: ccache hashes a compile's paths, relative to its base directory when they lie below it.
+    A clone's own build (scripts/build.sh, CI: base directory the clone, build/ in it) compiles
+    src/x.cpp as ../../src/x.cpp from build/src. A build directory elsewhere would see the clone
+    under another relative path, different for every clone, and every compile would miss (as it
+    did: a fresh clone's install compiled all of it, 294 s of CPU). Seen through these links from
+    work/build, the paths are the same as in any clone's build/, generated unity sources' #include
+    lines included (ccache's preprocessed hash rewrites them relative too)."""
+    work.mkdir(parents=True, exist_ok=True)
+    wanted = {p.name for p in ROOT.iterdir() if p.name not in (".git", "build")}
+    for link in work.iterdir():
+        if link.is_symlink() and link.name not in wanted:
+            link.unlink()
+    for name in sorted(wanted):
+        link, target = work / name, ROOT / name
+        if link.is_symlink() and os.readlink(link) == str(target):
+            continue
+        if link.is_symlink():
+            link.unlink()
+        link.symlink_to(target)
+
+
+CUSTOM_BUILD = os.environ.get("SCANTRACE_CMAKE_BUILD_DIR")
+# WORK: the source directory CMake is given (the clone itself for a build directory of the user's).
+WORK = ROOT if CUSTOM_BUILD else default_work_dir()
+BUILD = pathlib.Path(CUSTOM_BUILD).resolve() if CUSTOM_BUILD else WORK / "build"
 WITH_OPENCV = os.environ.get("SCANTRACE_PYTHON_OPENCV", "0") not in ("", "0", "OFF", "off")
 
 
@@ -96,9 +129,17 @@ class CMakeBuild(build_ext):
 
     def run(self):
         progress = Progress()
+        if WORK != ROOT:
+            mirror_clone(WORK)
+            # The base directory covers the links and build/; set here, not left to the user's
+            # environment, whose CCACHE_BASEDIR would name the clone (scripts/build.sh's).
+            os.environ["CCACHE_BASEDIR"] = str(WORK)
+        else:
+            os.environ.setdefault("CCACHE_BASEDIR", str(ROOT))
+        os.environ.setdefault("CCACHE_NOHASHDIR", "true")  # as .ci/run: no -g, but be sure
         if not (BUILD / "CMakeCache.txt").exists():
             BUILD.mkdir(parents=True, exist_ok=True)
-            cmd = ["cmake", "-S", str(ROOT), "-B", str(BUILD), "-DCMAKE_BUILD_TYPE=Release",
+            cmd = ["cmake", "-S", str(WORK), "-B", str(BUILD), "-DCMAKE_BUILD_TYPE=Release",
                    "-DSCANTRACE_BUILD_TESTS=OFF", "-DSCANTRACE_BUILD_BENCH=OFF",
                    "-DSCANTRACE_BUILD_PYTHON=ON", f"-DPython_EXECUTABLE={sys.executable}",
                    f"-DSCANTRACE_PYTHON_OPENCV={'ON' if WITH_OPENCV else 'OFF'}"]
@@ -108,7 +149,6 @@ class CMakeBuild(build_ext):
             progress.run(cmd, "configuring")
         jobs = os.environ.get("SCANTRACE_JOBS", str(os.cpu_count() or 2))
         env_targets = [ext.name.split(".")[-1] for ext in self.extensions]
-        os.environ.setdefault("CCACHE_BASEDIR", str(ROOT))
         progress.run(["cmake", "--build", str(BUILD), "-j", jobs, "--target", *env_targets],
                      "compiling the C++ core")
         progress.close()

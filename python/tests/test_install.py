@@ -2,6 +2,7 @@
 
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import textwrap
@@ -113,6 +114,78 @@ def test_pip_install_builds_outside_the_clone(tmp_path):
     out = subprocess.run([sys.executable, "-c", script], cwd=source, env=env, check=True,
                          capture_output=True, text=True).stdout.split()
     egg_base, build = pathlib.Path(out[0]), pathlib.Path(out[1])
-    assert build.parent == tmp_path / "cache" / "scantrace" and build.is_dir()
-    assert build.name.startswith("build-python-") and egg_base == build
+    assert build.parent.parent == tmp_path / "cache" / "scantrace" and build.is_dir()
+    assert build.parent.name.startswith("python-") and build.name == "build"
+    assert egg_base == build
     assert not build.is_relative_to(source.resolve())
+
+
+FAKE_PROJECT = {
+    # setup.py's configure and target, on a project of three small sources: a unity library (its
+    # generated source #includes absolute paths, as io/ and trace/ do) and the module.
+    "CMakeLists.txt": textwrap.dedent("""\
+        cmake_minimum_required(VERSION 3.25)
+        project(scantrace VERSION 0.0.1 LANGUAGES CXX)
+        add_library(core STATIC src/a.cpp src/b.cpp)
+        set_target_properties(core PROPERTIES UNITY_BUILD ON POSITION_INDEPENDENT_CODE ON)
+        target_include_directories(core PUBLIC ${PROJECT_SOURCE_DIR})
+        add_library(_scantrace MODULE python/module.cpp)
+        target_link_libraries(_scantrace PRIVATE core)
+        set_target_properties(_scantrace PROPERTIES PREFIX ""
+                              LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/python/scantrace)
+        """),
+    "src/a.hpp": "int a();\nint b();\n",
+    "src/a.cpp": '#include "src/a.hpp"\nint a() { return 1; }\n',
+    "src/b.cpp": '#include "src/a.hpp"\nint b() { return 2; }\n',
+    "python/module.cpp": '#include "src/a.hpp"\nint module_value() { return a() + b(); }\n',
+}
+
+
+def fake_clone(path):
+    for name, text in FAKE_PROJECT.items():
+        (path / name).parent.mkdir(parents=True, exist_ok=True)
+        (path / name).write_text(text)
+    shutil.copy(pathlib.Path(__file__).parents[2] / "setup.py", path / "setup.py")
+    return path
+
+
+def ccache_results(log):
+    """The results ccache's stats log recorded, one list per compile."""
+    compiles = []
+    for line in log.read_text().splitlines():
+        if line.startswith("# "):
+            compiles.append([])
+        elif compiles:
+            compiles[-1].append(line)
+    return compiles
+
+
+@pytest.mark.skipif(not shutil.which("ccache"), reason="ccache is not installed")
+def test_pip_build_of_a_fresh_clone_reuses_another_clones_objects(tmp_path):
+    """The compiles of setup.py's build (in the user's cache, outside the clone) are ccache hits
+    when another clone at another path has built the same sources in its own build/, as
+    scripts/build.sh and CI do: the speed of `pip install` from a warm cache. Nothing is written
+    into the clone."""
+    env = {k: v for k, v in os.environ.items()
+           if not k.startswith(("CCACHE_", "SCANTRACE_CMAKE_BUILD_DIR"))}
+    env.update(CCACHE_DIR=str(tmp_path / "ccache"), XDG_CACHE_HOME=str(tmp_path / "cache"))
+    first = fake_clone(tmp_path / "one" / "scantrace")
+    subprocess.run(["cmake", "-S", str(first), "-B", str(first / "build"),
+                    "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"],
+                   check=True, capture_output=True, env=env)
+    subprocess.run(["cmake", "--build", str(first / "build")], check=True, capture_output=True,
+                   env={**env, "CCACHE_BASEDIR": str(first)})
+
+    second = fake_clone(tmp_path / "elsewhere" / "another-name")
+    before = {p: p.read_bytes() for p in second.rglob("*") if p.is_file()}
+    log = tmp_path / "second.log"
+    # CCACHE_BASEDIR naming the clone, as scripts/build.sh exports it: setup.py sets its own.
+    subprocess.run([sys.executable, "setup.py", "-q", "build_ext"], cwd=second, check=True,
+                   capture_output=True,
+                   env={**env, "CCACHE_STATSLOG": str(log), "CCACHE_BASEDIR": str(second)})
+    results = ccache_results(log)
+    assert len(results) == 2, results  # the unity source of core, the module's source
+    assert all(any(r.endswith("_cache_hit") for r in c) for c in results), results
+    assert {p: p.read_bytes() for p in second.rglob("*") if p.is_file()} == before
+    built = list((tmp_path / "cache" / "scantrace").glob("python-*/build/python/scantrace/_scantrace*"))
+    assert len(built) == 1, built

@@ -164,6 +164,43 @@ try {
     assert.equal(differ, 0, `${differ} channel values differ`);
   });
 
+  await check('a block as runs and texels is drawn as its PNG, clipped, at scale 1 and 2', async () => {
+    // The module hands the magnified cells over as runs of equal columns and rows with one texel
+    // each (web/bindings_trace.cpp's block_runs); drawScantraceFrame stretches them. Made here:
+    // runs [2, 1, 3, 3] × [3, 1, 3] of 12 texels, the 9x7 block they spell out written by the
+    // test as a PNG, both drawn at (-2, -1) under the clip [5, 4, 5, 3].
+    const [cols, rows] = [[2, 1, 3, 3], [3, 1, 3]];
+    const [w, h] = [9, 7];
+    const texels = new Uint8Array(cols.length * rows.length * 4);
+    for (let i = 0; i < cols.length * rows.length; ++i) texels.set([(i * 61) & 255, (i * 29 + 7) & 255, (i * 113) & 255, 255], i * 4);
+    const rgba = new Uint8Array(w * h * 4);
+    const runOf = (runs, v) => { let k = 0; for (let at = runs[0]; at <= v; at += runs[++k]); return k; };
+    for (let y = 0; y < h; ++y)
+      for (let x = 0; x < w; ++x) rgba.set(texels.subarray((runOf(rows, y) * cols.length + runOf(cols, x)) * 4, (runOf(rows, y) * cols.length + runOf(cols, x)) * 4 + 4), (y * w + x) * 4);
+    const uri = 'data:image/png;base64,' + encodePng({ width: w, height: h, rgba }).toString('base64');
+    const differ = await b.evaluate(`(async () => {
+      const draw = new Function(explorer.module().canvasScript() + '; return drawScantraceFrame;')();
+      const runs = { width: ${w}, height: ${h}, cols: ${JSON.stringify(cols)}, rows: ${JSON.stringify(rows)}, texels: new Uint8ClampedArray(${JSON.stringify(Array.from(texels))}) };
+      const pixels = async (block, scale, clip) => {
+        const c = document.createElement('canvas');
+        c.width = 20 * scale;
+        c.height = 12 * scale;
+        const ctx = c.getContext('2d');
+        ctx.setTransform(scale, 0, 0, scale, 0, 0);
+        await draw(ctx, { w: 20, h: 12, bg: '#808080', ops: [['P', clip, null, clip ? -2 : 3, clip ? -1 : 2, ${w}, ${h}, block]] });
+        return ctx.getImageData(0, 0, c.width, c.height).data;
+      };
+      let n = 0;
+      for (const scale of [1, 2])
+        for (const clip of [null, [5, 4, 5, 3]]) {
+          const [a, b] = [await pixels(runs, scale, clip), await pixels(${JSON.stringify(uri)}, scale, clip)];
+          for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
+        }
+      return n;
+    })()`);
+    assert.equal(differ, 0, `${differ} channel values differ`);
+  });
+
   await check('a polygon: its trace, a dragged vertex and the winding rule are the native trace --polygon', async () => {
     // A self-crossing pentagon (a star): under non-zero its centre is inside, under even-odd not.
     const star = [[256, 40], [380, 440], [60, 190], [450, 190], [130, 440]];

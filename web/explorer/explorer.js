@@ -2,12 +2,15 @@
 // real fill (the WebAssembly module) redo its edge table, active edge list and spans; step
 // through the composer's frames with `scantrace step`'s keys; click a pixel for its `why`; open a
 // scene; drop an image rendered for it for a `diff`. The state is kept in the address.
+import { frameRedraw } from './frame_redraw.js';
 import { fromHash, fromHex, toHash, toHex } from './state.js';
 
 const $ = (id) => document.getElementById(id);
 
 export async function start(st) {
   const drawFrame = new Function(`${st.canvasScript()}; return drawScantraceFrame;`)();
+  // The step's frame drawn over the last one where they differ (frame_redraw.js).
+  const drawFrameOver = frameRedraw(drawFrame);
   let s = fromHash(location.hash);
   let scene = null; // scene mode: {name, data}
   let sceneObj = null; // the scene the grid shows (triangle mode: the triangle as a one-face scene)
@@ -196,8 +199,9 @@ export async function start(st) {
     if (frame.width !== shownFrame.w || frame.height !== shownFrame.h) {
       frame.width = shownFrame.w;
       frame.height = shownFrame.h;
+      drawFrameOver.reset(); // a resized canvas is cleared
     }
-    drawFrame(fctx, shownFrame);
+    drawFrameOver(fctx, shownFrame);
     frame.dataset.step = String(s.step);
   }
 

@@ -77,6 +77,22 @@ try {
     const row = movingTrace.find((ev) => ev.type === 'scanline' && ev.y === y);
     assert.ok(row, `row ${y} is in the native trace`);
     for (const a of row.active_edges) assert.ok(active.includes(`edge ${a.edge}  x = ${a.x}`), active);
+    // The moves redrew the frame only where it changed (web/explorer/frame_redraw.js): the canvas
+    // must hold the step's frame drawn whole.
+    const stale = await b.evaluate(`(() => {
+      const st = explorer.module();
+      const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
+      const f = st.frames(null, { first: explorer.state().step, count: 1, source: 'the explorer\u2019s triangle', blocks: 'rgba' }).frames[0];
+      const c = document.createElement('canvas');
+      c.width = f.w;
+      c.height = f.h;
+      draw(c.getContext('2d'), f);
+      const want = c.getContext('2d').getImageData(0, 0, f.w, f.h).data, got = explorer.framePixels();
+      let n = got.length === want.length ? 0 : -1;
+      for (let i = 0; n >= 0 && i < want.length; ++i) if (want[i] !== got[i]) ++n;
+      return n;
+    })()`);
+    assert.equal(stale, 0, `the frame shown while dragging differs from the frame drawn whole in ${stale} channel values`);
     await mouse('mouseReleased', to);
     const moves = await b.evaluate('explorer.dragTimes()');
     console.log(`a drag's moves took ${moves.map((t) => t.toFixed(1)).join(', ')} ms (fill, trace, plan, the step's frame drawn; web/bench/explorer_drag.mjs takes medians)`);

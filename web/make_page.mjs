@@ -50,7 +50,6 @@ if (kind === 'explorer') {
   script = [
     ...common,
     unmodule(read(path.join(here, 'explorer', 'state.js'))),
-    unmodule(read(path.join(here, 'explorer', 'frame_redraw.js'))),
     unmodule(read(path.join(here, 'explorer', 'explorer.js'))),
     `openMark('script');
 gunzipBase64('${wasm}')

@@ -77,8 +77,7 @@ try {
     const row = movingTrace.find((ev) => ev.type === 'scanline' && ev.y === y);
     assert.ok(row, `row ${y} is in the native trace`);
     for (const a of row.active_edges) assert.ok(active.includes(`edge ${a.edge}  x = ${a.x}`), active);
-    // The moves redrew the frame only where it changed (web/explorer/frame_redraw.js): the canvas
-    // must hold the step's frame drawn whole.
+    // The canvas holds the step's frame of the triangle as it is now, drawn whole.
     const stale = await b.evaluate(`(() => {
       const st = explorer.module();
       const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();

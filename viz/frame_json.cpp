@@ -249,6 +249,24 @@ const char* frame_canvas_script() {
       } else if (kind === 'P' && typeof op[7] === 'string') {
         ctx.imageSmoothingEnabled = false;
         ctx.drawImage(images[k++], a[0], a[1]);
+      } else if (kind === 'P' && op[7].cols) {
+        // Runs of equal columns and rows and one texel each ({width, height, cols, rows, texels}:
+        // the WebAssembly module's magnified cells): the texels stretched over each column run
+        // into one row per row run, then each of those rows stretched over its run's height. A
+        // source one texel wide or one row tall is sampled at that texel whatever the scale, so
+        // this draws the block's own pixels, as putImageData of the whole block would.
+        const b = op[7], n = b.rows.length, row = new Uint32Array(b.width * n);
+        const texel = new Uint32Array(b.texels.buffer, b.texels.byteOffset, b.cols.length * n);
+        // A plain loop: runs are a few pixels wide, and a fill() per run cost more than its pixels.
+        for (let r = 0, i = 0, t = 0; r < n; ++r)
+          for (let c = 0; c < b.cols.length; ++c, ++t)
+            for (let k = b.cols[c], v = texel[t]; k > 0; --k) row[i++] = v;
+        const strip = document.createElement('canvas');
+        strip.width = b.width;
+        strip.height = n;
+        strip.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(row.buffer), b.width, n), 0, 0);
+        ctx.imageSmoothingEnabled = false;
+        for (let r = 0, y = a[1]; r < n; y += b.rows[r++]) ctx.drawImage(strip, 0, r, b.width, 1, a[0], y, b.width, b.rows[r]);
       } else if (kind === 'P' && !untransformed) {
         const b = op[7], c = document.createElement('canvas');
         c.width = b.width;

@@ -16,8 +16,10 @@
 //       glyphs placed (TextForm::glyph_table): glyph `id` of the frame's "glyphs" with its origin
 //       at (x, y); a stroke point is that origin plus the glyph's point
 //   ["P", clip, mark, x, y, w, h, "data:image/png;base64,..."]   a block of pixels
-// (drawScantraceFrame also takes the block as {width, height, data}, its RGBA bytes, in place of
-// the data URI: the WebAssembly module's frames with blocks: 'rgba', drawn without loading)
+// (drawScantraceFrame also takes the block as {width, height, data}, its RGBA bytes, or as
+// {width, height, cols, rows, texels}, its runs of equal columns and rows and one RGBA texel per
+// run pair, in place of the data URI: the WebAssembly module's frames with blocks: 'rgba', drawn
+// without loading)
 // With TextForm::glyph_table the frame also holds
 //   "glyphs": [[[dx, dy, dx, dy, ...], ...], ...]   glyph id's strokes relative to its origin
 // each glyph (character, font and scale) written once however often the frame's text repeats it

@@ -43,10 +43,16 @@ std::string number_by_printf(double v) {
 }
 
 std::string hex_colour(const Scalar& c) {
-  char buf[8];
-  auto byte = [](double v) { return static_cast<unsigned>(std::clamp(std::lround(v), 0L, 255L)); };
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(c[2]), byte(c[1]), byte(c[0]));
-  return buf;
+  // Without snprintf: emscripten's formatting was a tenth of a frame's JSON in the browser
+  // (docs/performance.md); every op writes a colour.
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out = "#000000";
+  for (int i = 0; i < 3; ++i) {
+    const auto v = static_cast<unsigned>(std::clamp(std::lround(c[2 - i]), 0L, 255L));
+    out[static_cast<std::size_t>(1 + 2 * i)] = kHex[v >> 4];
+    out[static_cast<std::size_t>(2 + 2 * i)] = kHex[v & 15];
+  }
+  return out;
 }
 
 std::string xml_escape(const std::string& s) {

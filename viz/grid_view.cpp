@@ -64,9 +64,17 @@ void GridView::cells(const CanvasState& state, std::optional<Color> background) 
   auto cells = std::make_shared<std::vector<Vec3b>>(static_cast<std::size_t>(v.width) *
                                                     static_cast<std::size_t>(v.height));
   const std::int64_t wx0 = state.window().x, wx1 = wx0 + state.window().width;
+  std::int64_t previous_y = 0;
   for (int r = 0; r < v.height; ++r) {
     const std::int64_t y = geometry_.pixel_y(v.y + r);
     Vec3b* out = cells->data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(v.width);
+    // A row of the same canvas row as the one above: a copy of it (a cell is many frame rows;
+    // this loop was a sixth of a browser's drag move, docs/performance.md).
+    if (r > 0 && y == previous_y) {
+      std::copy(out - v.width, out, out);
+      continue;
+    }
+    previous_y = y;
     const bool row_on_canvas = y >= 0 && y < canvas_.height;
     // Whole rows of the state at once: a view has hundreds of thousands of frame pixels.
     const Vec3b* pixels = row_on_canvas ? state.row_pixels(y) : nullptr;

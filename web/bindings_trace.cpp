@@ -2,6 +2,8 @@
 // of a trace's steps as the canvas backend draws them (viz/frame_json.hpp).
 #include <emscripten/emscripten.h>
 
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -136,26 +138,86 @@ std::string trace_in_memory(const nlohmann::json& in, const nlohmann::json& o) {
   return text;
 }
 
-// A frame's display list as viz::to_json writes it, its text as glyphs placed from the frame's
-// glyph table (each glyph's strokes once: they were most of the JSON the page parsed on every
-// mouse move, docs/performance.md), and its pixel blocks, when `raw`, as their RGBA bytes
-// appended to `bytes`, the op's last element the offset of its block there instead of a PNG data
-// URI. The page puts the bytes on its canvas at once (putImageData); the PNG and its base64 were
-// most of a frame's time in the module and in the browser.
-std::string frame_json(const viz::Frame& frame, bool raw, std::vector<std::uint8_t>& bytes) {
-  if (!raw) return viz::to_json(frame, viz::TextForm::glyph_table);
-  return viz::to_json(frame, viz::TextForm::glyph_table, [&](const viz::PixelsOp& p) {
-    std::size_t at = bytes.size();
-    const std::string offset = std::to_string(at);
-    bytes.resize(at + p.bgr->size() * 4);
-    for (const auto& c : *p.bgr) {
+// Whether n bytes at a and b are equal, eight at a time: emscripten's memcmp compares byte by
+// byte, and comparing each row of a block with the one above was 1.8 ms of a drag's move.
+bool same_bytes(const void* a, const void* b, std::size_t n) {
+  const auto* p = static_cast<const unsigned char*>(a);
+  const auto* q = static_cast<const unsigned char*>(b);
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8) {
+    std::uint64_t x, y;
+    std::memcpy(&x, p + i, 8);
+    std::memcpy(&y, q + i, 8);
+    if (x != y) return false;
+  }
+  for (; i < n; ++i)
+    if (p[i] != q[i]) return false;
+  return true;
+}
+
+// A pixel block as the runs of equal rows and of equal columns it is made of, and one texel per
+// run pair: the magnified canvas cells repeat each canvas pixel over a cell of frame pixels, so a
+// step frame's 1280 × 600 block is some 40 × 40 texels. Lossless: rows are merged only when equal,
+// columns only when equal in every row kept. Its JSON (the op's last element):
+//   {"at": offset of the texels' RGBA bytes, "cols": [run widths], "rows": [run heights]}
+// (web/scantrace.mjs expands it). Writing and copying the 2.3 MB of RGBA bytes of the whole block
+// was a quarter of a drag's mouse move (docs/performance.md).
+std::string block_runs(const viz::PixelsOp& p, std::vector<std::uint8_t>& bytes) {
+  const std::size_t w = static_cast<std::size_t>(p.area.width), h = static_cast<std::size_t>(p.area.height);
+  const viz::Vec3b* px = p.bgr->data();
+  // Rows: the first of each run of equal rows.
+  std::vector<std::size_t> row_starts, row_heights;
+  for (std::size_t r = 0; r < h; ++r) {
+    if (r > 0 && same_bytes(px + r * w, px + (r - 1) * w, w * sizeof(viz::Vec3b))) {
+      ++row_heights.back();
+      continue;
+    }
+    row_starts.push_back(r);
+    row_heights.push_back(1);
+  }
+  // Columns: a new run where any kept row changes from the column before.
+  std::vector<std::size_t> col_starts, col_widths;
+  for (std::size_t u = 0; u < w; ++u) {
+    bool same = u > 0;
+    for (std::size_t k = 0; same && k < row_starts.size(); ++k)
+      same = px[row_starts[k] * w + u] == px[row_starts[k] * w + u - 1];
+    if (same) {
+      ++col_widths.back();
+      continue;
+    }
+    col_starts.push_back(u);
+    col_widths.push_back(1);
+  }
+  std::size_t at = bytes.size();
+  std::string json = "{\"at\":" + std::to_string(at) + ",\"cols\":[";
+  bytes.resize(at + row_starts.size() * col_starts.size() * 4);
+  for (const std::size_t r : row_starts)
+    for (const std::size_t u : col_starts) {
+      const viz::Vec3b& c = px[r * w + u];
       bytes[at++] = c[2];
       bytes[at++] = c[1];
       bytes[at++] = c[0];
       bytes[at++] = 255;
     }
-    return offset;
-  });
+  const auto list = [&](const std::vector<std::size_t>& v) {
+    for (std::size_t i = 0; i < v.size(); ++i) json += (i ? "," : "") + std::to_string(v[i]);
+  };
+  list(col_widths);
+  json += "],\"rows\":[";
+  list(row_heights);
+  return json + "]}";
+}
+
+// A frame's display list as viz::to_json writes it, its text as glyphs placed from the frame's
+// glyph table (each glyph's strokes once: they were most of the JSON the page parsed on every
+// mouse move, docs/performance.md), and its pixel blocks, when `raw`, as their runs and texels
+// (block_runs) appended to `bytes` instead of PNG data URIs. The page puts the expanded bytes on
+// its canvas at once (putImageData); the PNG and its base64 were most of a frame's time in the
+// module and in the browser.
+std::string frame_json(const viz::Frame& frame, bool raw, std::vector<std::uint8_t>& bytes) {
+  if (!raw) return viz::to_json(frame, viz::TextForm::glyph_table);
+  return viz::to_json(frame, viz::TextForm::glyph_table,
+                      [&](const viz::PixelsOp& p) { return block_runs(p, bytes); });
 }
 
 std::string read_file(const char* path) {

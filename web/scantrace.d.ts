@@ -79,10 +79,21 @@ export interface FrameOptions {
   count?: number;
   rows_per_step?: number;
   source?: string;
-  /** 'rgba': each pixel block ("P" op) ends with {width, height, data} (RGBA bytes), which
-   * drawScantraceFrame puts on the canvas at once; 'png' (default): a PNG data URI, loaded
-   * asynchronously. */
+  /** 'rgba': each pixel block ("P" op) ends with a RunsBlock, which drawScantraceFrame draws at
+   * once; 'png' (default): a PNG data URI, loaded asynchronously. */
   blocks?: 'png' | 'rgba';
+}
+
+/** A frames() pixel block with blocks: 'rgba': the runs of equal columns (widths, left to right)
+ * and of equal rows (heights, top to bottom) it is made of, one RGBA texel per run pair (row
+ * by row), and `data`, the width × height RGBA bytes, expanded when first read. */
+export interface RunsBlock {
+  width: number;
+  height: number;
+  cols: number[];
+  rows: number[];
+  texels: Uint8ClampedArray;
+  readonly data: Uint8ClampedArray;
 }
 
 export interface DecodedImage {

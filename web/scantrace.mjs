@@ -45,6 +45,29 @@ export async function load(options = {}) {
 
 const decoder = new TextDecoder();
 
+// A pixel block `w` × `h` from its runs ({at, cols, rows}: run widths and heights) and its texels
+// (RGBA, one per run pair, row by row, from byte `at` of `bytes`): {width, height, cols, rows,
+// texels}, which drawScantraceFrame draws as it is (viz/frame_json.cpp), and `data`, the block's
+// RGBA bytes, expanded when first read.
+function runsBlock(w, h, { at, cols, rows }, bytes) {
+  const texels = bytes.subarray(at, at + cols.length * rows.length * 4);
+  let data = null;
+  return {
+    width: w, height: h, cols, rows, texels,
+    get data() {
+      if (data) return data;
+      data = new Uint8ClampedArray(w * h * 4);
+      const out = new Uint32Array(data.buffer), from = new Uint32Array(texels.slice().buffer);
+      for (let r = 0, y = 0; r < rows.length; y += rows[r++]) {
+        // The run's first row from its texels, the others copies of it.
+        for (let c = 0, i = y * w; c < cols.length; ++c) for (let k = cols[c], v = from[r * cols.length + c]; k > 0; --k) out[i++] = v;
+        for (let k = 1; k < rows[r]; ++k) out.copyWithin((y + k) * w, y * w, (y + 1) * w);
+      }
+      return data;
+    },
+  };
+}
+
 export class Scantrace {
   constructor(module) {
     this.m = module;
@@ -160,14 +183,13 @@ export class Scantrace {
     const r = this._call('frames', [file, JSON.stringify(options)]);
     const out = JSON.parse(r.text());
     if (options.blocks === 'rgba') {
-      // Each pixel block's op ends with the offset of its RGBA bytes in the result's bytes.
-      const bytes = new Uint8ClampedArray(r.bytes().buffer);
+      // Each pixel block's op ends with its runs of equal columns and rows and the offset of its
+      // texels (one RGBA pixel per run pair) in the result's bytes (web/bindings_trace.cpp's
+      // block_runs): some kilobytes instead of the block's 2.3 MB.
+      const texels = new Uint8ClampedArray(r.bytes().buffer);
       for (const f of out.frames)
         for (const op of f.ops)
-          if (op[0] === 'P') {
-            const [w, h, at] = [op[5], op[6], op[7]];
-            op[7] = { width: w, height: h, data: bytes.subarray(at, at + w * h * 4) };
-          }
+          if (op[0] === 'P') op[7] = runsBlock(op[5], op[6], op[7], texels);
     }
     return out;
   }

@@ -7,7 +7,7 @@
 //
 //   node --experimental-websocket web/bench/explorer_drag.mjs EXPLORER.html [OPENS] [MOVES] [OTHER.html]
 // With OTHER.html (another build's explorer, e.g. main's), the opens alternate between the two
-// pages, each in a fresh browser, and both medians are printed.
+// pages, each in a fresh browser, and so do the drags (three rounds each); both medians printed.
 import path from 'node:path';
 
 import { launch, until } from '../tests/cdp.mjs';
@@ -40,29 +40,54 @@ async function openTimes(pages, n) {
 }
 await openTimes(other ? [explorer, other] : [explorer], opens);
 
-const b = await launch();
-try {
-  for (const d of ['Runtime', 'Page']) await b.page(`${d}.enable`);
-  await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}#step=12` });
-  await until('the page to start', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"), 60000);
-
-  // Vertex 2 of the course triangle dragged back and forth along a diagonal, step 13 shown.
-  const from = await b.evaluate('explorer.vertexOnScreen(2)');
-  const mouse = (type, [x, y]) => b.page('Input.dispatchMouseEvent', { type, x, y, button: 'left', buttons: type === 'mouseReleased' ? 0 : 1, clickCount: 1 });
-  const trip = [];
-  await mouse('mousePressed', from);
-  let at = from;
-  for (let i = 1; i <= moves; ++i) {
-    const k = ((i % 40) < 20 ? i % 20 : 20 - (i % 20)) * 2.7;
-    at = [from[0] - k, from[1] - 0.6 * k];
-    const t0 = performance.now();
-    await mouse('mouseMoved', at);
-    trip.push(performance.now() - t0);
+// Vertex 2 of the course triangle dragged back and forth along a diagonal, step 13 shown, in a
+// fresh browser: the handler's times of `moves` mouse moves (the first 30, V8 still compiling the
+// module's functions, left out) and the DevTools round trips.
+async function dragTimes(page, moves) {
+  const b = await launch();
+  try {
+    for (const d of ['Runtime', 'Page']) await b.page(`${d}.enable`);
+    await b.page('Page.navigate', { url: `file://${path.resolve(page)}#step=12` });
+    await until('the page to start', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"), 60000);
+    const from = await b.evaluate('explorer.vertexOnScreen(2)');
+    const mouse = (type, [x, y]) => b.page('Input.dispatchMouseEvent', { type, x, y, button: 'left', buttons: type === 'mouseReleased' ? 0 : 1, clickCount: 1 });
+    const trip = [];
+    await mouse('mousePressed', from);
+    let at = from;
+    for (let i = 1; i <= moves + 30; ++i) {
+      const k = ((i % 40) < 20 ? i % 20 : 20 - (i % 20)) * 2.7;
+      at = [from[0] - k, from[1] - 0.6 * k];
+      const t0 = performance.now();
+      await mouse('mouseMoved', at);
+      if (i > 30) trip.push(performance.now() - t0);
+    }
+    await mouse('mouseReleased', at);
+    return { handler: (await b.evaluate('explorer.dragTimes()')).slice(30), trip,
+      stages: (await b.evaluate('explorer.dragStages ? explorer.dragStages() : []')).slice(30) };
+  } finally {
+    await b.close();
   }
-  await mouse('mouseReleased', at);
-  const handler = await b.evaluate('explorer.dragTimes()');
-  const [q1, q3] = quartiles(handler);
-  console.log(`drag of vertex 2, step 13 shown (${handler.length} moves): handler median ${median(handler).toFixed(1)} ms (quartiles ${q1.toFixed(1)}, ${q3.toFixed(1)}); DevTools round trip of a move median ${median(trip).toFixed(1)} ms`);
-} finally {
-  await b.close();
 }
+
+// With OTHER.html, the drags alternate between the two pages in three rounds of MOVES / 3 moves
+// (the machine's load shifts over a run: each page gets its share of every period).
+const pages = other ? [explorer, other] : [explorer];
+const rounds = other ? 3 : 1;
+const times = pages.map(() => ({ handler: [], trip: [], stages: [] }));
+for (let r = 0; r < rounds; ++r)
+  for (const [k, page] of pages.entries()) {
+    const t = await dragTimes(page, Math.ceil(moves / rounds));
+    times[k].handler.push(...t.handler);
+    times[k].trip.push(...t.trip);
+    times[k].stages.push(...t.stages);
+  }
+pages.forEach((page, k) => {
+  const { handler, trip, stages } = times[k];
+  const [q1, q3] = quartiles(handler);
+  console.log(`drag of vertex 2, step 13 shown, ${page} (${handler.length} moves${rounds > 1 ? ` in ${rounds} rounds alternated with the other page` : ''}): handler median ${median(handler).toFixed(1)} ms (quartiles ${q1.toFixed(1)}, ${q3.toFixed(1)}); DevTools round trip of a move median ${median(trip).toFixed(1)} ms`);
+  if (stages.length) {
+    // Each stage's own time: the difference of the ends, medians.
+    const part = (a, b) => median(stages.map((x) => x[b] - (a ? x[a] : 0))).toFixed(1);
+    console.log(`  stages, medians: traced fill ${part(null, 'trace')} ms, fill put on its canvas ${part('trace', 'fill')}, step frame composed ${part('fill', 'frame')}, drawn ${part('frame', 'drawn')}`);
+  }
+});

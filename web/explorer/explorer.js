@@ -15,7 +15,8 @@ export async function start(st) {
   let shown = null; // the module's keptStep of the current step: the tables' events
   let view = { zoom: 1, x: 0, y: 0 }; // canvas pixel (0, 0) at screen (x, y), `zoom` px a pixel
   let drag = null, marked = null;
-  const dragTimes = [];
+  const dragTimes = [], dragStages = [];
+  let lastStages = null;
 
   const grid = $('grid'), gctx = grid.getContext('2d');
   const frame = $('frame'), fctx = frame.getContext('2d');
@@ -47,6 +48,9 @@ export async function start(st) {
   // (the tables read the step's events from the module); the release writes them.
   function recompute(moving = false) {
     const t0 = performance.now();
+    // Milliseconds from the start to the end of each stage (the bench's breakdown of a move).
+    const stages = { trace: 0, fill: 0, frame: 0, drawn: 0 };
+    lastStages = stages;
     showError(null);
     try {
       sceneObj = s.mode === 'triangle' ? triangleScene() : null;
@@ -61,18 +65,22 @@ export async function start(st) {
       const text = st.traceText(traced, { ...fillOptions(), level: s.mode === 'scene' ? 'triangle' : 'scanline', keep: true, text: !moving });
       traceText = moving ? null : text;
       const traceMs = performance.now() - t0;
+      stages.trace = traceMs;
       if (s.mode !== 'scene') fill = { ...st.lastTraceImage, ms: traceMs };
       if (fillCanvas.width !== fill.width || fillCanvas.height !== fill.height) {
         fillCanvas.width = fill.width;
         fillCanvas.height = fill.height;
       }
       fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
+      stages.fill = performance.now() - t0;
       composeStep();
+      stages.frame = performance.now() - t0;
       $('fill-ms').textContent = s.mode === 'scene' ? `render ${fill.ms.toFixed(2)} ms` : `fill and trace ${fill.ms.toFixed(1)} ms`;
     } catch (e) {
       showError(e);
     }
     redraw();
+    stages.drawn = performance.now() - t0;
     document.body.dataset.recomputeMs = (performance.now() - t0).toFixed(1);
   }
 
@@ -289,6 +297,7 @@ export async function start(st) {
       const t0 = performance.now();
       recompute(true);
       dragTimes.push(performance.now() - t0);
+      dragStages.push(lastStages);
     } else {
       const [x0, y0, vx, vy] = drag.pan;
       if (Math.hypot(px - x0, py - y0) > 3) drag.moved = true;
@@ -451,6 +460,9 @@ export async function start(st) {
     traceText: () => traceText,
     // Milliseconds of each mouse move of a vertex drag so far (the handler: module and drawing).
     dragTimes: () => dragTimes.slice(),
+    // Each move's stages, ms from the handler's start to the end of: the traced fill, the fill
+    // put on its canvas, the step's frame composed, everything drawn.
+    dragStages: () => dragStages.slice(),
     scene: () => (s.mode === 'triangle' ? JSON.stringify(triangleScene()) : null),
     // The module (the JavaScript API) and the frame shown, for the console and the test.
     module: () => st,

@@ -77,6 +77,21 @@ try {
     const row = movingTrace.find((ev) => ev.type === 'scanline' && ev.y === y);
     assert.ok(row, `row ${y} is in the native trace`);
     for (const a of row.active_edges) assert.ok(active.includes(`edge ${a.edge}  x = ${a.x}`), active);
+    // The canvas holds the step's frame of the triangle as it is now, drawn whole.
+    const stale = await b.evaluate(`(() => {
+      const st = explorer.module();
+      const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
+      const f = st.frames(null, { first: explorer.state().step, count: 1, source: 'the explorer\u2019s triangle', blocks: 'rgba' }).frames[0];
+      const c = document.createElement('canvas');
+      c.width = f.w;
+      c.height = f.h;
+      draw(c.getContext('2d'), f);
+      const want = c.getContext('2d').getImageData(0, 0, f.w, f.h).data, got = explorer.framePixels();
+      let n = got.length === want.length ? 0 : -1;
+      for (let i = 0; n >= 0 && i < want.length; ++i) if (want[i] !== got[i]) ++n;
+      return n;
+    })()`);
+    assert.equal(stale, 0, `the frame shown while dragging differs from the frame drawn whole in ${stale} channel values`);
     await mouse('mouseReleased', to);
     const moves = await b.evaluate('explorer.dragTimes()');
     console.log(`a drag's moves took ${moves.map((t) => t.toFixed(1)).join(', ')} ms (fill, trace, plan, the step's frame drawn; web/bench/explorer_drag.mjs takes medians)`);
@@ -159,6 +174,43 @@ try {
         const [a, b] = [await pixels({ width: ${w}, height: ${h}, data }, scale), await pixels(${JSON.stringify(uri)}, scale)];
         for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
       }
+      return n;
+    })()`);
+    assert.equal(differ, 0, `${differ} channel values differ`);
+  });
+
+  await check('a block as runs and texels is drawn as its PNG, clipped, at scale 1 and 2', async () => {
+    // The module hands the magnified cells over as runs of equal columns and rows with one texel
+    // each (web/bindings_trace.cpp's block_runs); drawScantraceFrame stretches them. Made here:
+    // runs [2, 1, 3, 3] × [3, 1, 3] of 12 texels, the 9x7 block they spell out written by the
+    // test as a PNG, both drawn at (-2, -1) under the clip [5, 4, 5, 3].
+    const [cols, rows] = [[2, 1, 3, 3], [3, 1, 3]];
+    const [w, h] = [9, 7];
+    const texels = new Uint8Array(cols.length * rows.length * 4);
+    for (let i = 0; i < cols.length * rows.length; ++i) texels.set([(i * 61) & 255, (i * 29 + 7) & 255, (i * 113) & 255, 255], i * 4);
+    const rgba = new Uint8Array(w * h * 4);
+    const runOf = (runs, v) => { let k = 0; for (let at = runs[0]; at <= v; at += runs[++k]); return k; };
+    for (let y = 0; y < h; ++y)
+      for (let x = 0; x < w; ++x) rgba.set(texels.subarray((runOf(rows, y) * cols.length + runOf(cols, x)) * 4, (runOf(rows, y) * cols.length + runOf(cols, x)) * 4 + 4), (y * w + x) * 4);
+    const uri = 'data:image/png;base64,' + encodePng({ width: w, height: h, rgba }).toString('base64');
+    const differ = await b.evaluate(`(async () => {
+      const draw = new Function(explorer.module().canvasScript() + '; return drawScantraceFrame;')();
+      const runs = { width: ${w}, height: ${h}, cols: ${JSON.stringify(cols)}, rows: ${JSON.stringify(rows)}, texels: new Uint8ClampedArray(${JSON.stringify(Array.from(texels))}) };
+      const pixels = async (block, scale, clip) => {
+        const c = document.createElement('canvas');
+        c.width = 20 * scale;
+        c.height = 12 * scale;
+        const ctx = c.getContext('2d');
+        ctx.setTransform(scale, 0, 0, scale, 0, 0);
+        await draw(ctx, { w: 20, h: 12, bg: '#808080', ops: [['P', clip, null, clip ? -2 : 3, clip ? -1 : 2, ${w}, ${h}, block]] });
+        return ctx.getImageData(0, 0, c.width, c.height).data;
+      };
+      let n = 0;
+      for (const scale of [1, 2])
+        for (const clip of [null, [5, 4, 5, 3]]) {
+          const [a, b] = [await pixels(runs, scale, clip), await pixels(${JSON.stringify(uri)}, scale, clip)];
+          for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
+        }
       return n;
     })()`);
     assert.equal(differ, 0, `${differ} channel values differ`);

@@ -22,8 +22,10 @@ std::string component(double v) {
   return s;
 }
 
+// fmt, not "(" + std::string: GCC 12 warns falsely (-Wrestrict, its bug 105651) on a literal
+// prepended to a temporary string.
 std::string rgb(Color c) {
-  return "(" + component(c.r) + ", " + component(c.g) + ", " + component(c.b) + ")";
+  return fmt::format("({}, {}, {})", component(c.r), component(c.g), component(c.b));
 }
 
 // A way the image may have been produced wrongly, as the pixel of the image that lands on the

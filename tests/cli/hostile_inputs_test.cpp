@@ -41,13 +41,16 @@ std::size_t count_lines(const std::string& s) {
 // Runs `scantrace ARGS` under a shell prefix (ulimit) and an environment assignment.
 scantrace::test::RunResult run_with(const std::filesystem::path& cwd, const std::string& prefix,
                                     const std::vector<std::string>& args) {
-  std::string command = "cd " + shell_quote(cwd.string()) + " && " + prefix + " timeout -s KILL " +
-                        std::to_string(kTimeout) + " " + shell_quote(SCANTRACE_BINARY);
-  for (const std::string& a : args) command += " " + shell_quote(a);
-  command += " >" + shell_quote((cwd / ".out").string()) + " 2>" +
-             shell_quote((cwd / ".err").string());
-  // A subshell: the ulimit stays in it.
-  const int status = std::system(("(" + command + ")").c_str());
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict, its bug 105651) on a literal
+  // prepended to a temporary string, as in " " + shell_quote(a).
+  std::string command = "(cd ";  // a subshell: the ulimit stays in it
+  command.append(shell_quote(cwd.string())).append(" && ").append(prefix);
+  command.append(" timeout -s KILL ").append(std::to_string(kTimeout)).append(" ");
+  command.append(shell_quote(SCANTRACE_BINARY));
+  for (const std::string& a : args) command.append(" ").append(shell_quote(a));
+  command.append(" >").append(shell_quote((cwd / ".out").string()));
+  command.append(" 2>").append(shell_quote((cwd / ".err").string())).append(")");
+  const int status = std::system(command.c_str());
   scantrace::test::RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.out = read_text(cwd / ".out");

@@ -68,3 +68,39 @@ def test_any_array_given_to_diff_is_compared_or_refused(image):
         return
     assert image.ndim == 3 and image.shape[2] == 3 and image.shape[0] and image.shape[1]
     assert report.compared_pixels > 0
+
+
+# The scene's checks run on the bits of the values (python/src/arrays.cpp: all_finite,
+# all_in_unit_range, the faces' range): the boundary values of those tricks against numpy's plain
+# comparisons. -0.0 is a colour in range (it equals 0); the smallest double above 1 and the
+# largest finite double are not, nor are the smallest negative subnormal and a value below -1
+# (whose bits, read unsigned, lie above those of 1.0 minus 2^63).
+edge_values = [0.0, -0.0, 1.0, np.nextafter(1.0, 2.0), np.nextafter(0.0, -1.0),
+               np.nextafter(0.0, 1.0), 0.5, 2.0, -1.0, -2.0, 1.7976931348623157e308,
+               -1.7976931348623157e308, -1e-300,
+               np.nan, np.inf, -np.inf]
+bad_index = st.sampled_from([-2 ** 63, -1, 5, 2 ** 62])
+poke = st.one_of(st.tuples(st.just("vertices"), st.integers(0, 9), st.sampled_from(edge_values)),
+                 st.tuples(st.just("vcolors"), st.integers(0, 14), st.sampled_from(edge_values)),
+                 st.tuples(st.just("faces"), st.integers(0, 8), bad_index))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(poke, max_size=3))
+def test_a_scene_is_refused_exactly_when_a_plain_check_refuses_it(pokes):
+    # A valid scene of 5 vertices and 3 faces, then up to three values replaced.
+    arrays = {"vertices": np.linspace(0, 15, 10).reshape(5, 2),
+              "vcolors": np.linspace(0, 1, 15).reshape(5, 3),
+              "faces": np.array([[0, 1, 2], [2, 3, 4], [4, 0, 1]], np.int64)}
+    for name, index, value in pokes:
+        arrays[name].reshape(-1)[index] = value
+    v, c, f = arrays["vertices"], arrays["vcolors"], arrays["faces"]
+    problems = {"vertices": not np.isfinite(v).all(),
+                "vcolors": not (np.isfinite(c).all() and (c >= 0).all() and (c <= 1).all()),
+                "faces": not ((f >= 0) & (f < 5)).all()}
+    try:
+        scantrace.render(v, f, c, np.arange(5.0), size=(16, 16))
+    except ValueError as e:
+        refused(e, {name for name, bad in problems.items() if bad})
+        return
+    assert not any(problems.values())

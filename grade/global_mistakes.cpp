@@ -36,110 +36,138 @@ struct Transform {
   std::function<bool(const RgbImage&, int, int, Rgb32f&)> sample;
 };
 
-}  // namespace
+bool inside(const RgbImage& m, int x, int y) {
+  return x >= 0 && y >= 0 && x < m.width() && y < m.height();
+}
 
-std::vector<GlobalMistake> find_global_mistakes(const Scene& scene, const RgbImage& reference,
-                                                const FaceIdImage& ids, const SubmittedImage& in,
-                                                double tol, bool undo, RgbImage& image,
-                                                std::vector<unsigned char>& compared) {
-  std::vector<GlobalMistake> found;
-  const int W = scene.width, H = scene.height;
-  RgbImage src = in.pixels;
-  const int iw = src.width(), ih = src.height();
-
-  // Colours in [0, 255]: a float array whose values go beyond 1 by more than the tolerance.
-  if (in.format == "npy" && !in.eight_bit) {
-    float top = 0;
-    for (const Rgb32f p : src.pixels()) top = std::max({top, p.r, p.g, p.b});
-    if (top > 1 + tol && top <= 255 + tol) {
-      found.push_back({"scaled_255",
-                       fmt::format("colours are scaled to [0, 255] (the largest value is {:.4g}), "
-                                   "not [0, 1]",
-                                   top),
-                       undo});
-      if (undo)
-        for (int y = 0; y < ih; ++y)
-          for (int x = 0; x < iw; ++x) {
-            Rgb32f& p = src(x, y);
-            p = {p.r / 255.0f, p.g / 255.0f, p.b / 255.0f};
-          }
-    }
-  }
-
-  const auto inside = [](const RgbImage& m, int x, int y) {
-    return x >= 0 && y >= 0 && x < m.width() && y < m.height();
-  };
-  const std::vector<Transform> transforms{
+// The transforms, the identity first and the transposition second (transform_applies() knows
+// them by position).
+const std::vector<Transform>& transforms() {
+  static const std::vector<Transform> all{
       {"identity", "",
-       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+       [](const RgbImage& m, int x, int y, Rgb32f& out) {
          return inside(m, x, y) ? (out = m(x, y), true) : false;
        }},
       {"transposed", "the image is transposed (x and y swapped: img[x][y] instead of img[y][x])",
-       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+       [](const RgbImage& m, int x, int y, Rgb32f& out) {
          return inside(m, y, x) ? (out = m(y, x), true) : false;
        }},
       {"flipped_vertically", "the image is flipped vertically (row 0 at the bottom)",
-       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+       [](const RgbImage& m, int x, int y, Rgb32f& out) {
          return inside(m, x, m.height() - 1 - y) ? (out = m(x, m.height() - 1 - y), true) : false;
        }},
       {"flipped_horizontally", "the image is flipped horizontally",
-       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+       [](const RgbImage& m, int x, int y, Rgb32f& out) {
          return inside(m, m.width() - 1 - x, y) ? (out = m(m.width() - 1 - x, y), true) : false;
        }},
       {"bgr", "red and blue are swapped (BGR instead of RGB)",
-       [&](const RgbImage& m, int x, int y, Rgb32f& out) {
+       [](const RgbImage& m, int x, int y, Rgb32f& out) {
          if (!inside(m, x, y)) return false;
          const Rgb32f p = m(x, y);
          out = {p.b, p.g, p.r};
          return true;
        }},
   };
-  // Score each transform on the pixels where the reference shows a face (a wrong background would
-  // otherwise weigh on all of them alike).
+  return all;
+}
+
+constexpr std::size_t kIdentity = 0, kTransposed = 1;
+
+// Whether transform t can explain an image of iw x ih on a canvas of W x H: the transposition
+// only an image of the swapped size, the others only one of the canvas's size (the identity
+// always: it is the image as it is, cropped or padded).
+bool transform_applies(std::size_t t, int iw, int ih, int W, int H) {
+  if (t == kTransposed) return iw == H && ih == W;
+  return t == kIdentity || (iw == W && ih == H);
+}
+
+// Colours in [0, 255]: a float array whose values go beyond 1 by more than the tolerance. Undone
+// (in `src`) when `undo`.
+void find_scaled_255(const SubmittedImage& in, double tol, bool undo, RgbImage& src,
+                     std::vector<GlobalMistake>& found) {
+  if (in.format != "npy" || in.eight_bit) return;
+  float top = 0;
+  for (const Rgb32f p : src.pixels()) top = std::max({top, p.r, p.g, p.b});
+  if (!(top > 1 + tol && top <= 255 + tol)) return;
+  found.push_back({"scaled_255",
+                   fmt::format("colours are scaled to [0, 255] (the largest value is {:.4g}), "
+                               "not [0, 1]",
+                               top),
+                   undo});
+  if (!undo) return;
+  for (int y = 0; y < src.height(); ++y)
+    for (int x = 0; x < src.width(); ++x) {
+      Rgb32f& p = src(x, y);
+      p = {p.r / 255.0f, p.g / 255.0f, p.b / 255.0f};
+    }
+}
+
+// The transform that explains the image, kIdentity when none does clearly. Each is scored on the
+// pixels where the reference shows a face (a wrong background would otherwise weigh on all of
+// them alike); one must explain clearly more than the image as it is, and most of the faces'
+// pixels. Reports it, and a canvas of the wrong size that it does not explain.
+std::size_t find_transform(const Scene& scene, const RgbImage& reference, const FaceIdImage& ids,
+                           const RgbImage& src, double tol, bool undo,
+                           std::vector<GlobalMistake>& found) {
+  const int W = scene.width, H = scene.height, iw = src.width(), ih = src.height();
   std::int64_t face_pixels = 0;
-  std::vector<std::int64_t> score(transforms.size(), 0);
-  for (std::size_t t = 0; t < transforms.size(); ++t) {
-    if (t == 1 && !(iw == H && ih == W)) continue;
-    if (t != 1 && !(iw == W && ih == H) && t != 0) continue;
+  std::vector<std::int64_t> score(transforms().size(), 0);
+  for (std::size_t t = 0; t < transforms().size(); ++t) {
+    if (!transform_applies(t, iw, ih, W, H)) continue;
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x) {
         if (ids.at(x, y) < 0) continue;
-        if (t == 0) ++face_pixels;
+        if (t == kIdentity) ++face_pixels;
         Rgb32f p;
-        if (transforms[t].sample(src, x, y, p) && max_diff(p, reference(x, y)) <= tol) ++score[t];
+        if (transforms()[t].sample(src, x, y, p) && max_diff(p, reference(x, y)) <= tol) ++score[t];
       }
   }
-  std::size_t best = 0;
-  for (std::size_t t = 1; t < transforms.size(); ++t)
+  std::size_t best = kIdentity;
+  for (std::size_t t = 1; t < transforms().size(); ++t)
     if (score[t] > score[best]) best = t;
-  // A transform must explain clearly more than the image as it is, and most of the faces' pixels.
-  if (best != 0 && (score[best] < 2 * score[0] || 2 * score[best] < face_pixels)) best = 0;
-  const bool transposed_size = iw == H && ih == W && iw != ih;
-  if (best != 0) {
-    found.push_back({transforms[best].kind,
+  if (best != kIdentity &&
+      (score[best] < 2 * score[kIdentity] || 2 * score[best] < face_pixels))
+    best = kIdentity;
+  if (best != kIdentity) {
+    found.push_back({transforms()[best].kind,
                      fmt::format("{} ({} of {} face pixels match after undoing it, {} before)",
-                                 transforms[best].text, score[best], face_pixels, score[0]),
+                                 transforms()[best].text, score[best], face_pixels,
+                                 score[kIdentity]),
                      undo});
   }
-  if ((iw != W || ih != H) && !(best == 1)) {
+  if ((iw != W || ih != H) && best != kTransposed) {
+    const bool transposed_size = iw == H && ih == W && iw != ih;
     found.push_back({"canvas_size",
                      fmt::format("the image is {}x{}, the scene's canvas is {}x{}{}", iw, ih, W, H,
                                  transposed_size ? " (width and height swapped)" : ""),
                      false});
   }
-  const std::size_t use = undo ? best : 0;
+  return best;
+}
+
+// `src` through transform `use` onto the scene's canvas (the background where it has no pixel),
+// and which canvas pixels it gave.
+void resample(const Scene& scene, const RgbImage& src, std::size_t use, RgbImage& image,
+              std::vector<unsigned char>& compared) {
+  const int W = scene.width, H = scene.height;
   image = RgbImage(W, H, Rgb32f::from(scene.background));
   compared.assign(static_cast<std::size_t>(W) * H, 0);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       Rgb32f p;
-      if (transforms[use].sample(src, x, y, p)) {
+      if (transforms()[use].sample(src, x, y, p)) {
         image(x, y) = p;
         compared[static_cast<std::size_t>(y) * W + x] = 1;
       }
     }
+}
 
-  // The background: the most common colour where the reference shows none of the faces.
+// The background: the most common colour where the reference shows none of the faces, reported
+// when it is not the scene's, and (when `undo`) replaced by the scene's.
+void find_background(const Scene& scene, const FaceIdImage& ids,
+                     const std::vector<unsigned char>& compared, double tol, bool undo,
+                     RgbImage& image, std::vector<GlobalMistake>& found) {
+  const int W = scene.width, H = scene.height;
   const auto background_pixel = [&](int x, int y) {
     return ids.at(x, y) < 0 && compared[static_cast<std::size_t>(y) * W + x];
   };
@@ -156,34 +184,46 @@ std::vector<GlobalMistake> find_global_mistakes(const Scene& scene, const RgbIma
   std::int64_t mode_count = 0;
   for (const auto& [key, n] : counts)
     if (n > mode_count || (n == mode_count && key < mode)) mode = key, mode_count = n;
-  if (bg_pixels > 0 && 2 * mode_count >= bg_pixels) {
-    const Color seen{(mode >> 16) / 255.0, ((mode >> 8) & 255) / 255.0, (mode & 255) / 255.0};
-    // Printed: the mean of the values in the mode's 8-bit bin, not the bin, so that a float
-    // image's 0.99 is not reported as 252/255 = 0.988 (issue 36).
-    double sum[3] = {0, 0, 0};
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x)
-        if (background_pixel(x, y) && bin(image(x, y)) == mode) {
-          const Rgb32f p = image(x, y);
-          sum[0] += p.r, sum[1] += p.g, sum[2] += p.b;
-        }
-    const double n = static_cast<double>(mode_count);
-    const Color seen_mean{sum[0] / n, sum[1] / n, sum[2] / n};
-    // The mode is 8-bit; compare with half a level of slack on top of the tolerance.
-    const Rgb32f expected = Rgb32f::from(scene.background);
-    const Rgb32f seen_px = Rgb32f::from(seen);
-    if (max_diff(seen_px, expected) > tol + 0.5 / 255) {
-      found.push_back({"background",
-                       fmt::format("the background is {} instead of {} ({} of {} background "
-                                   "pixels)",
-                                   rgb(seen_mean), rgb(scene.background), mode_count, bg_pixels),
-                       undo});
-      if (undo)
-        for (int y = 0; y < H; ++y)
-          for (int x = 0; x < W; ++x)
-            if (max_diff(image(x, y), seen_px) <= 0.5 / 255 + 1e-4) image(x, y) = expected;
-    }
-  }
+  if (bg_pixels == 0 || 2 * mode_count < bg_pixels) return;
+  const Color seen{(mode >> 16) / 255.0, ((mode >> 8) & 255) / 255.0, (mode & 255) / 255.0};
+  // The mode is 8-bit; compare with half a level of slack on top of the tolerance.
+  const Rgb32f expected = Rgb32f::from(scene.background);
+  const Rgb32f seen_px = Rgb32f::from(seen);
+  if (max_diff(seen_px, expected) <= tol + 0.5 / 255) return;
+  // Printed: the mean of the values in the mode's 8-bit bin, not the bin, so that a float
+  // image's 0.99 is not reported as 252/255 = 0.988 (issue 36).
+  double sum[3] = {0, 0, 0};
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      if (background_pixel(x, y) && bin(image(x, y)) == mode) {
+        const Rgb32f p = image(x, y);
+        sum[0] += p.r, sum[1] += p.g, sum[2] += p.b;
+      }
+  const double n = static_cast<double>(mode_count);
+  const Color seen_mean{sum[0] / n, sum[1] / n, sum[2] / n};
+  found.push_back({"background",
+                   fmt::format("the background is {} instead of {} ({} of {} background "
+                               "pixels)",
+                               rgb(seen_mean), rgb(scene.background), mode_count, bg_pixels),
+                   undo});
+  if (!undo) return;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      if (max_diff(image(x, y), seen_px) <= 0.5 / 255 + 1e-4) image(x, y) = expected;
+}
+
+}  // namespace
+
+std::vector<GlobalMistake> find_global_mistakes(const Scene& scene, const RgbImage& reference,
+                                                const FaceIdImage& ids, const SubmittedImage& in,
+                                                double tol, bool undo, RgbImage& image,
+                                                std::vector<unsigned char>& compared) {
+  std::vector<GlobalMistake> found;
+  RgbImage src = in.pixels;
+  find_scaled_255(in, tol, undo, src, found);
+  const std::size_t best = find_transform(scene, reference, ids, src, tol, undo, found);
+  resample(scene, src, undo ? best : kIdentity, image, compared);
+  find_background(scene, ids, compared, tol, undo, image, found);
   return found;
 }
 

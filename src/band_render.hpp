@@ -14,6 +14,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -96,6 +97,72 @@ inline void count_near_to_far(RenderStats& stats, char seen) {
   }
 }
 
+// What the bands' threads found, joined after them. Per face: near to far, the NearToFarSeen
+// bits of every band that listed it; otherwise 1 when some band filled part of it, 2 when culled
+// (every band that sets it up culls it), 0 otherwise. Per band: the pixels written and those
+// clipped. The flags are relaxed atomic stores and or-s (which band sees a face first is up to
+// the threads; the join orders them before they are read), and a band's pixels are counted in a
+// local and stored once: the threads' counters share a cache line, and a store per face bounced
+// it between the cores (the 1200² scene's two-thread speed-up was 1.2-1.36 with it).
+struct BandTally {
+  std::vector<char> faces;
+  std::vector<long long> pixels, clipped;
+};
+
+enum class BandPath { near_to_far, zbuffer, painter };
+
+// Band b (rows `rows`) of the render: every face of `faces` (the faces listed for it, in the
+// drawing order) drawn into those rows only, tallied into `tally`.
+template <class P>
+void render_band(Image<P>& image, const Scene& scene, const FillOptions& opt,
+                 RenderScratch& scratch, BandPath path, int b, RowBand rows,
+                 std::span<const int> faces, FillScratch& fill, BandTally& tally) {
+  NoTracer none;
+  long long band_pixels = 0, band_clipped = 0;
+  const auto count = [&](int f, const FillResult& r) {
+    if (r.skipped == SkipReason::none)
+      std::atomic_ref<char>(tally.faces[f]).store(1, std::memory_order_relaxed);
+    if (r.skipped == SkipReason::culled)
+      std::atomic_ref<char>(tally.faces[f]).store(2, std::memory_order_relaxed);
+    band_pixels += r.pixels;
+  };
+  const auto seen = [&](int f, const FillResult& r, long long visible) {
+    std::atomic_ref<char>(tally.faces[f]).fetch_or(near_to_far_seen(r, visible),
+                                                   std::memory_order_relaxed);
+    band_pixels += visible;
+    if (r.skipped == SkipReason::none) band_clipped += r.pixels - visible;
+  };
+  if (path == BandPath::near_to_far) {
+    OcclusionCanvas<P> canvas(image, scratch.coverage, rows);
+    fill_near_to_far(canvas, scene, faces, scratch.depth, opt, fill, seen);
+  } else if (path == BandPath::zbuffer) {
+    ZBufferCanvas<P> canvas(image, scratch.zbuffer, rows);
+    fill_faces(canvas, scene, faces, scratch.depth, opt, fill, none, count);
+  } else {
+    BandCanvas<P> canvas(image, rows);
+    fill_faces(canvas, scene, faces, scratch.depth, opt, fill, none, count);
+  }
+  tally.pixels[b] = band_pixels;
+  tally.clipped[b] = band_clipped;
+}
+
+// The render's statistics from the bands' tally.
+inline RenderStats tally_stats(const BandTally& tally, BandPath path) {
+  RenderStats stats;
+  if (path == BandPath::near_to_far) {
+    stats.path = Occlusion::near_to_far;
+    for (char f : tally.faces) count_near_to_far(stats, f);
+  } else {
+    for (char f : tally.faces)
+      (f == 1   ? stats.triangles_filled
+       : f == 2 ? stats.triangles_culled
+                : stats.triangles_skipped) += 1;
+  }
+  for (long long p : tally.pixels) stats.pixels += p;
+  for (long long p : tally.clipped) stats.pixels_clipped += p;
+  return stats;
+}
+
 }  // namespace detail
 
 // The scene rendered into the caller's `image` (as render(image, scene, opt, scratch) does) with
@@ -116,72 +183,37 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
   // band as in the whole image: the same writes, so the same image, as with the painter's order.
   // Near to far, each band keeps its rows of one coverage mask, and a face meets in a band the
   // coverage of the same nearer faces as in the whole image.
-  const bool zbuffer = opt.visibility == Visibility::zbuffer;
-  const bool near_to_far =
-      !zbuffer && choose_occlusion(scene, opt, scratch.overdraw_cells) == Occlusion::near_to_far;
-  if (near_to_far) {
+  using detail::BandPath;
+  const BandPath path =
+      opt.visibility == Visibility::zbuffer ? BandPath::zbuffer
+      : choose_occlusion(scene, opt, scratch.overdraw_cells) == Occlusion::near_to_far
+          ? BandPath::near_to_far
+          : BandPath::painter;
+  if (path == BandPath::near_to_far) {
     image.reshape(scene.width, scene.height);
     scratch.coverage.reset(scene.width, scene.height);
   } else {
     image.reset(scene.width, scene.height, P::from(scene.background));
   }
   drawing_order(scene, opt.visibility, scratch,
-                near_to_far ? Occlusion::near_to_far : Occlusion::far_to_near);
-  if (zbuffer)
+                path == BandPath::near_to_far ? Occlusion::near_to_far : Occlusion::far_to_near);
+  if (path == BandPath::zbuffer)
     scratch.zbuffer.assign(static_cast<std::size_t>(scene.width) * scene.height,
                            std::numeric_limits<double>::infinity());
-  const std::vector<double>& depth = scratch.depth;
-  const std::vector<int>& order = scratch.order;
   // Four bands per thread balance the load; bands of at least 16 rows keep the per-band set-up
   // (and the faces listed in two bands) small.
   const int bands = std::clamp(scene.height / 16, 1, 4 * threads);
   const int band_height = (scene.height + bands - 1) / bands;
   const std::vector<std::vector<int>> by_band =
-      detail::faces_by_band(scene, order, band_height, bands);
-
-  // Per face: 1 when some band filled part of it, 2 when culled (every band that sets it up culls
-  // it), 0 otherwise. Bands only ever store these values, so concurrent stores agree.
-  std::vector<char> filled(scene.faces.size(), 0);
-  std::vector<long long> pixels(bands, 0), clipped(bands, 0);
+      detail::faces_by_band(scene, scratch.order, band_height, bands);
+  detail::BandTally tally{std::vector<char>(scene.faces.size(), 0),
+                          std::vector<long long>(bands, 0), std::vector<long long>(bands, 0)};
   std::atomic<int> next_band{0};
   const auto work = [&] {
     FillScratch fill;  // each thread its own
-    NoTracer none;
     for (int b; (b = next_band.fetch_add(1)) < bands;) {
       const RowBand rows{b * band_height, std::min(scene.height, (b + 1) * band_height)};
-      // Counted in a local and stored once per band: the threads' counters share a cache line,
-      // and a store per face bounced it between the cores (the 1200² scene's two-thread
-      // speed-up was 1.2-1.36 with it). The flags are relaxed stores for the same reason: the
-      // join orders them before they are read.
-      long long band_pixels = 0;
-      const auto count = [&](int f, const FillResult& r) {
-        if (r.skipped == SkipReason::none)
-          std::atomic_ref<char>(filled[f]).store(1, std::memory_order_relaxed);
-        if (r.skipped == SkipReason::culled)
-          std::atomic_ref<char>(filled[f]).store(2, std::memory_order_relaxed);
-        band_pixels += r.pixels;
-      };
-      long long band_clipped = 0;
-      // Near to far, what each band saw of a face, as bits (detail::NearToFarSeen) joined with
-      // relaxed or-s: which band sees a face first is up to the threads.
-      const auto seen = [&](int f, const FillResult& r, long long visible) {
-        std::atomic_ref<char>(filled[f]).fetch_or(detail::near_to_far_seen(r, visible),
-                                                  std::memory_order_relaxed);
-        band_pixels += visible;
-        if (r.skipped == SkipReason::none) band_clipped += r.pixels - visible;
-      };
-      if (near_to_far) {
-        OcclusionCanvas<P> canvas(image, scratch.coverage, rows);
-        fill_near_to_far(canvas, scene, by_band[b], depth, opt, fill, seen);
-      } else if (zbuffer) {
-        ZBufferCanvas<P> canvas(image, scratch.zbuffer, rows);
-        fill_faces(canvas, scene, by_band[b], depth, opt, fill, none, count);
-      } else {
-        BandCanvas<P> canvas(image, rows);
-        fill_faces(canvas, scene, by_band[b], depth, opt, fill, none, count);
-      }
-      pixels[b] = band_pixels;
-      clipped[b] = band_clipped;
+      detail::render_band(image, scene, opt, scratch, path, b, rows, by_band[b], fill, tally);
     }
   };
   {
@@ -189,19 +221,7 @@ RenderStats render_parallel(Image<P>& image, const Scene& scene, const FillOptio
     for (int t = 1; t < threads; ++t) pool.emplace_back(work);
     work();
   }
-  RenderStats stats;
-  if (near_to_far) {
-    stats.path = Occlusion::near_to_far;
-    for (char f : filled) detail::count_near_to_far(stats, f);
-  } else {
-    for (char f : filled)
-      (f == 1   ? stats.triangles_filled
-       : f == 2 ? stats.triangles_culled
-                : stats.triangles_skipped) += 1;
-  }
-  for (long long p : pixels) stats.pixels += p;
-  for (long long p : clipped) stats.pixels_clipped += p;
-  return stats;
+  return detail::tally_stats(tally, path);
 }
 
 // The same on a fresh image of the scene's size.

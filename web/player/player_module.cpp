@@ -12,7 +12,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <new>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -20,10 +19,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/input_error.hpp"
 #include "trace/trace.hpp"
 #include "viz/frame_json.hpp"
 #include "viz/frame_sequence.hpp"
+#include "web/call_status.hpp"
+#include "web/step_json.hpp"
 
 namespace scantrace::web {
 namespace {
@@ -46,40 +46,7 @@ int run(Work&& work) {
   Page& p = page();
   p.text.clear();
   p.error.clear();
-  try {
-    work();
-    return 0;
-  } catch (const InputError& e) {
-    p.error = e.what();
-    return 1;
-  } catch (const std::invalid_argument& e) {
-    p.error = e.what();
-    return 2;
-  } catch (const std::bad_alloc&) {
-    p.error = "out of memory";
-    return 1;
-  } catch (const std::exception& e) {
-    p.error = e.what();
-    return 1;
-  }
-}
-
-// A step as the full module's st_frames lists it: its kind, triangle and rows, and where the
-// canvas appears on its frame (canvas pixel (x, y) is centred at frame point origin + cell·(x, y),
-// inside `view`), from which the page maps a click back to the pixel.
-nlohmann::json step_json(const viz::FrameSequence& s, std::size_t i) {
-  const viz::Step& st = s.steps()[i];
-  nlohmann::json step{{"kind", viz::to_string(st.kind)},
-                      {"triangle", st.triangle},
-                      {"first_row", st.first_row},
-                      {"last_row", st.last_row}};
-  if (const auto g = s.geometry(i)) {
-    const viz::Point2d o = g->to_frame(0, 0);
-    step["view"] = {g->view().x, g->view().y, g->view().width, g->view().height};
-    step["origin"] = {o.x, o.y};
-    step["cell"] = g->cell();
-  }
-  return step;
+  return call_status(work, p.error);
 }
 
 }  // namespace

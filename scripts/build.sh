@@ -5,7 +5,8 @@
 #                              (not stress, bench, why, diff) and its libraries, with only the
 #                              packages they need (scripts/demo.sh: the quick first run)
 #   scripts/build.sh --web     only the WebAssembly build (docs/web.md) into build/web/: the ES
-#                              module, its .wasm, the JavaScript API and the explorer page
+#                              module, its .wasm, the JavaScript API, the explorer page, and the
+#                              trace page's own module and template
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 

@@ -13,6 +13,7 @@
 #include "src/image.hpp"
 #include "src/painter.hpp"
 #include "src/shade_mesh.hpp"
+#include "web/call_status.hpp"
 
 namespace scantrace::web {
 
@@ -24,22 +25,7 @@ Result& result() {
 int run(const std::function<void()>& work) {
   Result& r = result();
   r = Result{};
-  try {
-    work();
-    return 0;
-  } catch (const InputError& e) {
-    r.error = e.what();
-    return 1;
-  } catch (const std::invalid_argument& e) {
-    r.error = e.what();
-    return 2;
-  } catch (const std::bad_alloc&) {
-    r.error = "out of memory";
-    return 1;
-  } catch (const std::exception& e) {
-    r.error = e.what();
-    return 1;
-  }
+  return call_status(work, r.error);
 }
 
 void put_rgba(const RgbImage& image, std::vector<std::uint8_t>& bytes) {

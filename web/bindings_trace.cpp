@@ -17,6 +17,7 @@
 #include "viz/frame_json.hpp"
 #include "viz/frame_sequence.hpp"
 #include "web/bindings.hpp"
+#include "web/step_json.hpp"
 
 namespace scantrace::web {
 namespace {
@@ -276,22 +277,7 @@ EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
     const std::size_t first = std::min<std::size_t>(o.value("first", std::size_t{0}), n);
     const std::size_t last = std::min<std::size_t>(first + o.value("count", n), n);
     std::string out = "{\"steps\":[";
-    for (std::size_t i = 0; i < n; ++i) {
-      const viz::Step& st = s.steps()[i];
-      nlohmann::json step{{"kind", viz::to_string(st.kind)},
-                          {"triangle", st.triangle},
-                          {"first_row", st.first_row},
-                          {"last_row", st.last_row}};
-      // Where the canvas appears on the frame: canvas pixel (x, y) is centred at frame point
-      // origin + cell·(x, y), inside `view` (a page maps a click back to the pixel).
-      if (const auto g = s.geometry(i)) {
-        const viz::Point2d o = g->to_frame(0, 0);
-        step["view"] = {g->view().x, g->view().y, g->view().width, g->view().height};
-        step["origin"] = {o.x, o.y};
-        step["cell"] = g->cell();
-      }
-      out += (i ? "," : "") + step.dump();
-    }
+    for (std::size_t i = 0; i < n; ++i) out += (i ? "," : "") + web::step_json(s, i).dump();
     out += "],\"frames\":[";
     const bool raw = o.value("blocks", std::string("png")) == "rgba";
     for (std::size_t i = first; i < last; ++i)

@@ -1,7 +1,8 @@
-// Assembles the web build's pages (docs/web.md), each one self-contained HTML file: the module's
-// glue, the JavaScript API, the page's script and the .wasm (gzip, base64; the page inflates it
-// with the browser's DecompressionStream) inlined into the page's template. No network, no
-// external font or script: they work opened from file://.
+// Assembles the web build's pages (docs/web.md), each one self-contained HTML file: a module's
+// glue, its JavaScript API, the page's script and the .wasm (gzip, base64; the page inflates it
+// with the browser's DecompressionStream) inlined into the page's template. The explorer carries
+// the full module (scantrace_wasm), the trace page its own smaller one (scantrace_player). No
+// network, no external font or script: they work opened from file://.
 //
 //   node make_page.mjs explorer BUILD_WEB_DIR OUT.html    the explorer
 //   node make_page.mjs player BUILD_WEB_DIR OUT.html      the trace page's template: `replay -o
@@ -22,11 +23,9 @@ const unmodule = (text) =>
     .replace(/^export default \w+;$/gm, '')
     .replace(/^export (class|async function|function|const) /gm, '$1 ');
 
-const wasm = zlib.gzipSync(fs.readFileSync(path.join(dir, 'scantrace_wasm.wasm')), { level: 9 }).toString('base64');
-const common = [
-  unmodule(read(path.join(dir, 'scantrace_wasm.mjs'))),
-  unmodule(read(path.join(here, 'scantrace.mjs'))),
-  `async function gunzipBase64(text) {
+// A module's .wasm as the page holds it: gzip, base64.
+const inlined = (name) => zlib.gzipSync(fs.readFileSync(path.join(dir, name)), { level: 9 }).toString('base64');
+const helpers = `async function gunzipBase64(text) {
   // A plain loop: Uint8Array.from(atob(text), callback) calls a function per byte.
   const chars = atob(text);
   const bytes = new Uint8Array(chars.length);
@@ -43,27 +42,33 @@ function showFatal(e) {
   const el = document.getElementById('error');
   el.hidden = false;
   el.textContent = 'error: ' + (e && e.message ? e.message : e);
-}`,
-];
+}`;
 let script;
 if (kind === 'explorer') {
+  // The full module (scantrace_wasm) and the JavaScript API.
   script = [
-    ...common,
+    unmodule(read(path.join(dir, 'scantrace_wasm.mjs'))),
+    unmodule(read(path.join(here, 'scantrace.mjs'))),
+    helpers,
     unmodule(read(path.join(here, 'explorer', 'state.js'))),
     unmodule(read(path.join(here, 'explorer', 'explorer.js'))),
     `openMark('script');
-gunzipBase64('${wasm}')
+gunzipBase64('${inlined('scantrace_wasm.wasm')}')
   .then((wasmBinary) => { openMark('inflated'); return load({ wasmBinary }); })
   .then((st) => { openMark('loaded'); return start(st); })
   .catch(showFatal);`,
   ];
 } else if (kind === 'player') {
+  // The trace page's own module (scantrace_player: player/player_module.cpp), a third of the
+  // full one's size, gzipped (docs/performance.md).
   script = [
-    ...common,
+    unmodule(read(path.join(dir, 'scantrace_player.mjs'))),
+    unmodule(read(path.join(here, 'player', 'player_api.mjs'))),
+    helpers,
     unmodule(read(path.join(here, 'player', 'player.js'))),
     'const page = /*SCANTRACE_PAGE_DATA*/null;',
-    `Promise.all([gunzipBase64('${wasm}'), gunzipBase64(page.trace)])
-  .then(([wasmBinary, trace]) => load({ wasmBinary }).then((st) => startPlayer(st, page.cfg, new TextDecoder().decode(trace))))
+    `Promise.all([gunzipBase64('${inlined('scantrace_player.wasm')}'), gunzipBase64(page.trace)])
+  .then(([wasmBinary, trace]) => loadPlayer(wasmBinary).then((pm) => startPlayer(pm, page.cfg, new TextDecoder().decode(trace))))
   .catch(showFatal);`,
   ];
 } else {

@@ -36,6 +36,12 @@ if(SCANTRACE_BUILD_TESTS)
                    ${CMAKE_BINARY_DIR}/examples/demo/demo_scene.json)
   set_tests_properties("web: node module equals the native command" PROPERTIES
                        FIXTURES_REQUIRED demo_files LABELS "web" TIMEOUT 600)
+  # The trace page's module against the full one: its exports, its steps and frames
+  # (web/tests/node_player.mjs).
+  add_test(NAME "web: node player module composes the full module's frames"
+           COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/node_player.mjs ${web_dir})
+  set_tests_properties("web: node player module composes the full module's frames" PROPERTIES
+                       LABELS "web" TIMEOUT 300)
 endif()
 
 if(SCANTRACE_BUILD_TESTS)
@@ -65,7 +71,7 @@ if(SCANTRACE_BUILD_TESTS AND SCANTRACE_CHROMIUM)
   add_test(NAME "web: trace page in headless Chromium"
            COMMAND ${SCANTRACE_NODE} --experimental-websocket --no-warnings
                    ${PROJECT_SOURCE_DIR}/web/tests/chromium_trace_page.mjs $<TARGET_FILE:scantrace>
-                   ${CMAKE_BINARY_DIR}/web-tests/trace_page)
+                   ${CMAKE_BINARY_DIR}/web-tests/trace_page ${web_dir})
   set_tests_properties("web: trace page in headless Chromium" PROPERTIES LABELS "web;browser"
                        TIMEOUT 300)
 endif()

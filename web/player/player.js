@@ -1,16 +1,17 @@
 // The trace page (docs/web.md): `replay`/`explain -o OUT.html` write the trace and this player,
-// which composes each step's frame in the page with the WebAssembly module (the composer of the
-// videos) and draws it with the canvas backend, sharp at any size: kilobytes of trace instead of
-// megabytes of pre-drawn frames. The frame is fitted to the window; the step list is beside it,
+// which composes each step's frame in the page with its WebAssembly module (player_api.mjs: the
+// composer of the videos, and nothing the page does not call) and draws it with the canvas
+// backend, sharp at any size: kilobytes of trace instead of megabytes of pre-drawn frames. The frame is fitted to the window; the step list is beside it,
 // hidden until asked for. OUT.html#step=N opens at step N.
 
-// cfg: {source, width, height, rows_per_step, first, last, marked_pixel?}
-export async function startPlayer(st, cfg, traceText) {
+// pm: loadPlayer()'s module; cfg: {source, width, height, rows_per_step, mode, first, last, marked_pixel?}
+export async function startPlayer(pm, cfg, traceText) {
   const $ = (id) => document.getElementById(id);
-  const drawFrame = new Function(`${st.canvasScript()}; return drawScantraceFrame;`)();
+  const drawFrame = new Function(`${pm.canvasScript()}; return drawScantraceFrame;`)();
   const base = { width: cfg.width, height: cfg.height, rows_per_step: cfg.rows_per_step, source: cfg.source };
+  if (cfg.mode) base.mode = cfg.mode;
   if (cfg.marked_pixel) base.marked_pixel = cfg.marked_pixel;
-  const all = st.frames(traceText, { ...base, count: 0 }).steps;
+  const all = pm.open(traceText, base).steps;
   const first = Math.min(cfg.first || 0, all.length - 1);
   const last = Math.min(cfg.last ?? all.length - 1, all.length - 1);
   const steps = all.slice(first, last + 1);
@@ -40,7 +41,7 @@ export async function startPlayer(st, cfg, traceText) {
     const wanted = k;
     drawing = drawing.then(async () => {
       if (wanted !== k) return;
-      const f = st.frames(traceText, { ...base, first: first + wanted, count: 1 }).frames[0];
+      const f = pm.frame(first + wanted);
       const dpr = window.devicePixelRatio || 1;
       canvas.width = Math.round(cfg.width * scale * dpr);
       canvas.height = Math.round(cfg.height * scale * dpr);

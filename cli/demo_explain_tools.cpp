@@ -48,7 +48,7 @@ void explain_demo_with_video(const std::filesystem::path& trace_file,
   spdlog::info(
       "wrote {}: the same steps as a self-contained page ({} steps, {:.1f} MB of pre-drawn "
       "frames: this build has no web build; `bash scripts/build.sh --web`, then `scantrace replay "
-      "{} -o {}`, writes the trace page of under 1 MB): open it in a browser and step with the "
+      "{} -o {}`, writes the trace page of under 400 KB): open it in a browser and step with the "
       "arrow keys",
       page.string(), p.steps, p.bytes / 1e6, trace_file.string(), page.string());
 }

@@ -84,16 +84,27 @@ export async function start(st) {
     document.body.dataset.recomputeMs = (performance.now() - t0).toFixed(1);
   }
 
+  // The frame's size: the canvas's box on the screen in device pixels, 16:9, at most the 1280 x 720
+  // of the videos and at least the composer's 320 x 180. A 1280-wide frame shown in a 690-pixel
+  // column was scaled down by the browser: composing and drawing 3.4 times the pixels shown was
+  // most of a drag move's drawing (docs/performance.md); composed at the size shown, the frame's
+  // text and grid are drawn sharp, not resampled.
+  function frameSize() {
+    const w = Math.round(Math.max(320, Math.min(1280, frame.clientWidth * (window.devicePixelRatio || 1))));
+    return { width: w, height: Math.max(180, Math.round((w * 9) / 16)) };
+  }
+
   // The plan of steps and the current step's frame from one call (one plan), the frame's pixel
   // blocks as bytes: nothing waits for an image to load.
   let shownFrame = null;
   function composeStep() {
     const source = s.mode === 'scene' ? scene.name : `the explorer\u2019s ${s.mode}`;
-    let r = st.frames(null, { first: s.step, count: 1, source, blocks: 'rgba' });
+    const options = { count: 1, source, blocks: 'rgba', ...frameSize() };
+    let r = st.frames(null, { ...options, first: s.step });
     plan = r.steps;
     if (s.step >= plan.length && plan.length) {
       s.step = plan.length - 1;
-      r = st.frames(null, { first: s.step, count: 1, source, blocks: 'rgba' });
+      r = st.frames(null, { ...options, first: s.step });
     }
     shownFrame = r.frames[0] || null;
     // The tables' events: the step's face's edge table and, for a scanline step, its row.
@@ -433,6 +444,11 @@ export async function start(st) {
     e.preventDefault();
     if (e.dataTransfer.files[0]) openFile(e.dataTransfer.files[0]);
   });
+  // A window resized (a projector, a narrower column): the frame composed again at its new size.
+  window.addEventListener('resize', () => {
+    const { width, height } = frameSize();
+    if (plan.length && (width !== frame.width || height !== frame.height)) setStep(s.step);
+  });
   window.addEventListener('hashchange', () => {
     if (location.hash === toHash(s)) return;
     s = fromHash(location.hash);
@@ -466,6 +482,8 @@ export async function start(st) {
     scene: () => (s.mode === 'triangle' ? JSON.stringify(triangleScene()) : null),
     // The module (the JavaScript API) and the frame shown, for the console and the test.
     module: () => st,
+    // The frame's size as composed (the `frames` options width and height the page passes).
+    frameSize: () => ({ width: frame.width, height: frame.height }),
     framePixels: () => Array.from(fctx.getImageData(0, 0, frame.width, frame.height).data),
     fillPixels: () => Array.from(fillCanvas.getContext('2d').getImageData(0, 0, fillCanvas.width, fillCanvas.height).data),
   };

@@ -138,23 +138,6 @@ std::string trace_in_memory(const nlohmann::json& in, const nlohmann::json& o) {
   return text;
 }
 
-// Whether n bytes at a and b are equal, eight at a time: emscripten's memcmp compares byte by
-// byte, and comparing each row of a block with the one above was 1.8 ms of a drag's move.
-bool same_bytes(const void* a, const void* b, std::size_t n) {
-  const auto* p = static_cast<const unsigned char*>(a);
-  const auto* q = static_cast<const unsigned char*>(b);
-  std::size_t i = 0;
-  for (; i + 8 <= n; i += 8) {
-    std::uint64_t x, y;
-    std::memcpy(&x, p + i, 8);
-    std::memcpy(&y, q + i, 8);
-    if (x != y) return false;
-  }
-  for (; i < n; ++i)
-    if (p[i] != q[i]) return false;
-  return true;
-}
-
 // A pixel block as the runs of equal rows and of equal columns it is made of, and one texel per
 // run pair: the magnified canvas cells repeat each canvas pixel over a cell of frame pixels, so a
 // step frame's 1280 × 600 block is some 40 × 40 texels. Lossless: rows are merged only when equal,
@@ -168,7 +151,7 @@ std::string block_runs(const viz::PixelsOp& p, std::vector<std::uint8_t>& bytes)
   // Rows: the first of each run of equal rows.
   std::vector<std::size_t> row_starts, row_heights;
   for (std::size_t r = 0; r < h; ++r) {
-    if (r > 0 && same_bytes(px + r * w, px + (r - 1) * w, w * sizeof(viz::Vec3b))) {
+    if (r > 0 && web::same_bytes(px + r * w, px + (r - 1) * w, w * sizeof(viz::Vec3b))) {
       ++row_heights.back();
       continue;
     }

@@ -49,7 +49,7 @@ export async function start(st) {
   function recompute(moving = false) {
     const t0 = performance.now();
     // Milliseconds from the start to the end of each stage (the bench's breakdown of a move).
-    const stages = { trace: 0, fill: 0, frame: 0, drawn: 0 };
+    const stages = { trace: 0, fill: 0, frame: 0, grid: 0, step: 0, drawn: 0 };
     lastStages = stages;
     showError(null);
     try {
@@ -79,7 +79,7 @@ export async function start(st) {
     } catch (e) {
       showError(e);
     }
-    redraw();
+    redraw(stages, t0);
     stages.drawn = performance.now() - t0;
     document.body.dataset.recomputeMs = (performance.now() - t0).toFixed(1);
   }
@@ -89,8 +89,11 @@ export async function start(st) {
   // column was scaled down by the browser: composing and drawing 3.4 times the pixels shown was
   // most of a drag move's drawing (docs/performance.md); composed at the size shown, the frame's
   // text and grid are drawn sharp, not resampled.
+  // The box's width is kept from the last layout (a ResizeObserver, below): reading clientWidth
+  // in a mouse move made the browser lay the page out there and then (the tables had changed).
+  let frameBoxWidth = frame.clientWidth;
   function frameSize() {
-    const w = Math.round(Math.max(320, Math.min(1280, frame.clientWidth * (window.devicePixelRatio || 1))));
+    const w = Math.round(Math.max(320, Math.min(1280, frameBoxWidth * (window.devicePixelRatio || 1))));
     return { width: w, height: Math.max(180, Math.round((w * 9) / 16)) };
   }
 
@@ -112,9 +115,12 @@ export async function start(st) {
     shown = st.keptStep(step ? Math.max(0, step.triangle) : 0, step && step.kind === 'scanlines' ? step.last_row : -1);
   }
 
-  function redraw() {
+  // `stages` (a drag's move): the end of each drawing, ms from t0, kept for the bench.
+  function redraw(stages = null, t0 = 0) {
     drawGrid();
+    if (stages) stages.grid = performance.now() - t0;
     drawStep();
+    if (stages) stages.step = performance.now() - t0;
     showTables();
     // The address follows the state, but not on every mouse move of a drag (a replaceState cost
     // 5 ms of the move's time): the release writes it.
@@ -444,11 +450,13 @@ export async function start(st) {
     e.preventDefault();
     if (e.dataTransfer.files[0]) openFile(e.dataTransfer.files[0]);
   });
-  // A window resized (a projector, a narrower column): the frame composed again at its new size.
-  window.addEventListener('resize', () => {
+  // The frame's box resized (a window resized, a projector, a scroll bar come or gone): the frame
+  // composed again at its new size.
+  new ResizeObserver((entries) => {
+    frameBoxWidth = entries[entries.length - 1].contentRect.width;
     const { width, height } = frameSize();
     if (plan.length && (width !== frame.width || height !== frame.height)) setStep(s.step);
-  });
+  }).observe(frame);
   window.addEventListener('hashchange', () => {
     if (location.hash === toHash(s)) return;
     s = fromHash(location.hash);
@@ -477,7 +485,8 @@ export async function start(st) {
     // Milliseconds of each mouse move of a vertex drag so far (the handler: module and drawing).
     dragTimes: () => dragTimes.slice(),
     // Each move's stages, ms from the handler's start to the end of: the traced fill, the fill
-    // put on its canvas, the step's frame composed, everything drawn.
+    // put on its canvas, the step's frame composed, the grid drawn, the frame drawn, everything
+    // drawn (the tables last).
     dragStages: () => dragStages.slice(),
     scene: () => (s.mode === 'triangle' ? JSON.stringify(triangleScene()) : null),
     // The module (the JavaScript API) and the frame shown, for the console and the test.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
 
 #include "reference/exact_reference.hpp"
@@ -109,22 +110,35 @@ class Checker {
     throw TraceError(name_ + ":" + std::to_string(line_) + ": " + what);
   }
 
-  void finite(double v, const std::string& what) const {
-    if (!std::isfinite(v)) fail(what + " is not finite (" + str(v) + ")");
+  // A message, or a callable that makes it: the per-row checks pass callables, so the strings
+  // are built only for a failure (building them for every row was most of the check's time, and
+  // a third of recording a triangle's trace: the explorer records one on every mouse move).
+  static std::string text(const std::string& what) { return what; }
+  template <class Make>
+    requires std::is_invocable_r_v<std::string, Make>
+  static std::string text(const Make& what) {
+    return what();
+  }
+
+  template <class What>
+  void finite(double v, const What& what) const {
+    if (!std::isfinite(v)) fail(text(what) + " is not finite (" + str(v) + ")");
   }
   // A begun triangle's vertices are within the fill's range: beyond it the fill skips the
   // triangle (out_of_range) instead of beginning it, and the thorough check's exact snap would
   // overflow its integers.
-  void coordinate(double v, const std::string& what) const {
+  template <class What>
+  void coordinate(double v, const What& what) const {
     finite(v, what);
     if (std::fabs(v) > kMaxCoordinate)
-      fail(what + " " + str(v) +
+      fail(text(what) + " " + str(v) +
            " is beyond the fill's range of ±2^30 pixels (the fill skips such a triangle)");
   }
-  void color(const Color& c, const std::string& what) const {
+  template <class What>
+  void color(const Color& c, const What& what) const {
     for (double v : {c.r, c.g, c.b})
       if (!std::isfinite(v) || v < -kColorSlack || v > 1 + kColorSlack)
-        fail(what + " " + str(c) + " is not a colour in [0, 1]");
+        fail(text(what) + " " + str(c) + " is not a colour in [0, 1]");
   }
 
   void check_header(const Header& h) {
@@ -354,14 +368,15 @@ class Checker {
   void check(const Scanline& r) {
     if (level_ < 2) fail("a scanline event in a trace of level triangle");
     TriangleState& s = open(r.triangle, "scanline");
-    const std::string row =
-        "triangle " + std::to_string(r.triangle) + ", row " + std::to_string(r.y);
-    if (!s.has_table) fail(row + ": scanline before the triangle's edge table");
+    const auto row = [&] {
+      return "triangle " + std::to_string(r.triangle) + ", row " + std::to_string(r.y);
+    };
+    if (!s.has_table) fail(row() + ": scanline before the triangle's edge table");
     if (s.last_y && r.y <= *s.last_y)
-      fail(row + ": rows of a triangle must increase, but row " + std::to_string(*s.last_y) +
+      fail(row() + ": rows of a triangle must increase, but row " + std::to_string(*s.last_y) +
            " came before");
     if (r.y < s.y_first || r.y > s.y_last)
-      fail(row + ": outside the rows " + std::to_string(s.y_first) + "…" +
+      fail(row() + ": outside the rows " + std::to_string(s.y_first) + "…" +
            std::to_string(s.y_last) + " its edge table gives (clipped to the canvas)");
     s.last_y = r.y;
     // The active set is what the edge table says for this row; entered/retired are its changes.
@@ -375,7 +390,7 @@ class Checker {
       if (e.last_row == r.y - 1 && r.y - 1 >= s.y_first) want_retired.push_back(e.edge);
     }
     for (const EdgeCrossing& a : r.active_edges) {
-      finite(a.x, row + ": active edge " + std::to_string(a.edge) + " x");
+      finite(a.x, [&] { return row() + ": active edge " + std::to_string(a.edge) + " x"; });
       active.push_back(a.edge);
     }
     auto sorted = [](std::vector<int> v) {
@@ -383,58 +398,60 @@ class Checker {
       return v;
     };
     if (sorted(active) != sorted(want_active))
-      fail(row + ": active edges " + ids(sorted(active)) + ", but the edge table makes " +
+      fail(row() + ": active edges " + ids(sorted(active)) + ", but the edge table makes " +
            ids(sorted(want_active)) + " active on this row");
     if (sorted(r.entered) != sorted(want_entered))
-      fail(row + ": entered " + ids(sorted(r.entered)) + " disagrees with the active set (edges " +
+      fail(row() + ": entered " + ids(sorted(r.entered)) + " disagrees with the active set (edges " +
            ids(sorted(want_entered)) + " join it on this row)");
     if (sorted(r.retired) != sorted(want_retired))
-      fail(row + ": retired " + ids(sorted(r.retired)) + " disagrees with the active set (edges " +
+      fail(row() + ": retired " + ids(sorted(r.retired)) + " disagrees with the active set (edges " +
            ids(sorted(want_retired)) + " leave it on this row)");
     if (r.active_points.size() != r.active_edges.size())
-      fail(row + ": " + std::to_string(r.active_points.size()) + " active points for " +
+      fail(row() + ": " + std::to_string(r.active_points.size()) + " active points for " +
            std::to_string(r.active_edges.size()) + " active edges");
     for (std::size_t k = 0; k < r.active_points.size(); ++k) {
       const ActivePoint& p = r.active_points[k];
-      const std::string pt = row + ": active point " + std::to_string(k);
-      finite(p.x, pt + " x");
-      color(p.color, pt + ": colour");
+      const auto pt = [&] { return row() + ": active point " + std::to_string(k); };
+      finite(p.x, [&] { return pt() + " x"; });
+      color(p.color, [&] { return pt() + ": colour"; });
       if (std::find(active.begin(), active.end(), p.edge) == active.end())
-        fail(pt + " is on edge " + std::to_string(p.edge) + ", which is not active");
+        fail(pt() + " is on edge " + std::to_string(p.edge) + ", which is not active");
       if (k > 0 && r.active_points[k - 1].x > p.x)
-        fail(row + ": active points are not sorted by x (" + str(r.active_points[k - 1].x) +
+        fail(row() + ": active points are not sorted by x (" + str(r.active_points[k - 1].x) +
              " before " + str(p.x) + ")");
     }
     if (r.span) {
       if (r.span->x_begin > r.span->x_end)
-        fail(row + ": span " + std::to_string(r.span->x_begin) + "…" +
+        fail(row() + ": span " + std::to_string(r.span->x_begin) + "…" +
              std::to_string(r.span->x_end) +
              " runs backwards (x_begin > x_end; spans are half-open)");
       if (r.span->x_begin < 0 || r.span->x_end > width_)
-        fail(row + ": span [" + std::to_string(r.span->x_begin) + ", " +
+        fail(row() + ": span [" + std::to_string(r.span->x_begin) + ", " +
              std::to_string(r.span->x_end) + ") is not inside the canvas [0, " +
              std::to_string(width_) + ")");
     }
     if (r.span_colors) {
-      if (!r.span) fail(row + ": span colours without a span");
-      color(r.span_colors->begin, row + ": span colour begin");
-      color(r.span_colors->end, row + ": span colour end");
+      if (!r.span) fail(row() + ": span colours without a span");
+      color(r.span_colors->begin, [&] { return row() + ": span colour begin"; });
+      color(r.span_colors->end, [&] { return row() + ": span colour end"; });
     }
     if (r.intervals) {
       i64 prev_end = 0;
       for (std::size_t k = 0; k < r.intervals->size(); ++k) {
         const Interval& iv = (*r.intervals)[k];
-        const std::string in = row + ": interval " + std::to_string(k);
-        finite(iv.x_left, in + " x_left"), finite(iv.x_right, in + " x_right");
+        const auto in = [&] { return row() + ": interval " + std::to_string(k); };
+        finite(iv.x_left, [&] { return in() + " x_left"; });
+        finite(iv.x_right, [&] { return in() + " x_right"; });
         if (iv.pixels.x_begin > iv.pixels.x_end || iv.pixels.x_begin < prev_end ||
             iv.pixels.x_end > width_)
-          fail(in + ": pixels [" + std::to_string(iv.pixels.x_begin) + ", " +
+          fail(in() + ": pixels [" + std::to_string(iv.pixels.x_begin) + ", " +
                std::to_string(iv.pixels.x_end) +
                ") are backwards, overlap the interval before or "
                "leave the canvas");
         prev_end = iv.pixels.x_end;
         if (iv.colors)
-          color(iv.colors->begin, in + ": colour"), color(iv.colors->end, in + ": colour");
+          color(iv.colors->begin, [&] { return in() + ": colour"; }),
+              color(iv.colors->end, [&] { return in() + ": colour"; });
       }
     }
     const i64 n = covered(r);
@@ -444,9 +461,9 @@ class Checker {
       const i64 got = s.pending_y ? static_cast<i64>(s.pending_x.size()) : 0;
       const i64 expected = columns_ ? covered_in(r, *columns_) : n;
       if (s.pending_y && *s.pending_y != r.y)
-        fail(row + ": the pixel events before it are of row " + std::to_string(*s.pending_y));
+        fail(row() + ": the pixel events before it are of row " + std::to_string(*s.pending_y));
       if (got != expected)
-        fail(row + ": " + std::to_string(got) + " pixel events for a span of " +
+        fail(row() + ": " + std::to_string(got) + " pixel events for a span of " +
              std::to_string(expected) + " pixels" + (columns_ ? " in the recorded columns" : ""));
       for (i64 x : s.pending_x) {
         bool in = false;
@@ -456,13 +473,13 @@ class Checker {
           in = r.span && r.span->contains(x);
         }
         if (!in)
-          fail(row + ": pixel (" + std::to_string(x) + ", " + std::to_string(r.y) +
+          fail(row() + ": pixel (" + std::to_string(x) + ", " + std::to_string(r.y) +
                ") is outside the span");
       }
       s.pending_y.reset();
       s.pending_x.clear();
     }
-    if (thorough_) check_exact(s, r, row);
+    if (thorough_) check_exact(s, r, row());
     ++s.scanlines;
     s.span_pixels += n;
     ++summary_.scanlines;

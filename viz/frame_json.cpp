@@ -1,6 +1,8 @@
 #include "viz/frame_json.hpp"
 
 #include <cstdio>
+#include <map>
+#include <tuple>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -101,14 +103,35 @@ struct Writer {
   }
 };
 
-// One op, its text's glyphs (glyph_table) interned in `glyphs`.
-std::string op_json(const DrawOp& op, TextForm text, GlyphTable* glyphs,
-                    const BlockWriter* block) {
+// A glyph's strokes as the "glyphs" table writes them, [[x,y,x,y,...],...]: the same few dozen
+// glyphs in every frame, so each is written once per thread and kept (their numbers were a fifth
+// of a step frame's JSON time in the explorer's module, which writes a frame per mouse move).
+const std::string& glyph_strokes_json(const GlyphTable::Glyph& g) {
+  thread_local std::map<std::tuple<unsigned char, int, double>, std::string> written;
+  auto [at, added] = written.try_emplace({g.c, static_cast<int>(g.font), g.scale});
+  if (added) {
+    std::string out(1, '[');
+    for (const auto& stroke : hershey_glyph_strokes(g.c, g.font, g.scale)) {
+      if (out.size() > 1) out += ',';
+      out += '[';
+      put_points(out, stroke);
+      out += ']';
+    }
+    out += ']';
+    at->second = std::move(out);
+  }
+  return at->second;
+}
+
+// One op appended to `out`, its text's glyphs (glyph_table) interned in `glyphs`; `b` is scratch
+// space for its body (a frame's ops reuse one: a string per op was a sixth of the JSON's time).
+void op_json(std::string& out, const DrawOp& op, TextForm text, GlyphTable* glyphs,
+             const BlockWriter* block, std::string& b) {
   // The kind first, then clip and mark: written after the body's kind, as the format says.
-  std::string b;
+  b.clear();
   std::visit(Writer{b, text, glyphs, block}, op.body);
   const std::size_t comma = b.find(',');
-  std::string out = "[";
+  out += '[';
   out.append(b, 0, comma);
   out += ',';
   out += op.clip ? box(*op.clip) : "null";
@@ -120,13 +143,14 @@ std::string op_json(const DrawOp& op, TextForm text, GlyphTable* glyphs,
     out += "null";
   out.append(b, comma);
   out += ']';
-  return out;
 }
 
 }  // namespace
 
 std::string to_json(const DrawOp& op, TextForm text) {
-  return op_json(op, text == TextForm::glyph_table ? TextForm::strokes : text, nullptr, nullptr);
+  std::string out, body;
+  op_json(out, op, text == TextForm::glyph_table ? TextForm::strokes : text, nullptr, nullptr, body);
+  return out;
 }
 
 std::string to_json(const Frame& frame, TextForm text, const BlockWriter& block) {
@@ -134,24 +158,19 @@ std::string to_json(const Frame& frame, TextForm text, const BlockWriter& block)
   put_all(out, "{\"w\":", frame.size().width, ",\"h\":", frame.size().height, ",\"bg\":\"",
           hex_colour(frame.background()), "\",\"ops\":[");
   GlyphTable glyphs;
+  std::string body;
   bool first = true;
   for (const DrawOp& op : frame.ops()) {
-    put_all(out, first ? "" : ",\n", op_json(op, text, &glyphs, &block));
+    if (!first) out += ",\n";
+    op_json(out, op, text, &glyphs, &block, body);
     first = false;
   }
   out += ']';
   if (text == TextForm::glyph_table) {
     out += ",\"glyphs\":[";
     for (std::size_t id = 0; id < glyphs.glyphs().size(); ++id) {
-      out += id ? ",[" : "[";
-      bool first_stroke = true;
-      for (const auto& stroke : glyphs.strokes(static_cast<int>(id))) {
-        out += first_stroke ? "[" : ",[";
-        first_stroke = false;
-        put_points(out, stroke);
-        out += ']';
-      }
-      out += ']';
+      out += id ? "," : "";
+      out += glyph_strokes_json(glyphs.glyphs()[id]);
     }
     out += ']';
   }
@@ -177,22 +196,27 @@ const char* frame_canvas_script() {
     // putImageData ignores the context's transform: an RGBA block goes through it only on an
     // untransformed context (the explorer's), else through a canvas of its own and drawImage.
     const untransformed = ctx.getTransform().isIdentity;
+    // One save for the frame (the caller's context comes back as it was), and one more only
+    // around an op with a clip: every op sets the colours and widths it draws with, and a save
+    // and restore for each of a step frame's ~800 ops was a fifth of drawing it in Chromium.
+    ctx.save();
     ctx.fillStyle = frame.bg;
     ctx.fillRect(0, 0, frame.w, frame.h);
+    ctx.lineCap = 'round';
+    ctx.lineJoin = 'round';
     for (const op of frame.ops) {
       const [kind, clip] = op;
-      const a = op.slice(3);
-      ctx.save();
+      // The op's arguments from index 3 (a copy of them per op, op.slice(3), was a tenth of
+      // drawing a step frame's ~800 ops).
       if (clip) {
+        ctx.save();
         ctx.beginPath();
         ctx.rect(clip[0], clip[1], clip[2], clip[3]);
         ctx.clip();
         ctx.translate(clip[0], clip[1]);
       }
-      ctx.lineCap = 'round';
-      ctx.lineJoin = 'round';
       if (kind === 'R') {
-        const [x, y, w, h, c, t] = a;
+        const x = op[3], y = op[4], w = op[5], h = op[6], c = op[7], t = op[8];
         if (t < 0) {
           ctx.fillStyle = c;
           ctx.fillRect(x, y, w, h);
@@ -202,7 +226,7 @@ const char* frame_canvas_script() {
           ctx.strokeRect(x + 0.5, y + 0.5, w - 1, h - 1);
         }
       } else if (kind === 'L') {
-        const [x1, y1, x2, y2, c, t] = a;
+        const x1 = op[3], y1 = op[4], x2 = op[5], y2 = op[6], c = op[7], t = op[8];
         ctx.strokeStyle = c;
         ctx.lineWidth = t;
         ctx.beginPath();
@@ -210,7 +234,7 @@ const char* frame_canvas_script() {
         ctx.lineTo(x2 + 0.5, y2 + 0.5);
         ctx.stroke();
       } else if (kind === 'C') {
-        const [x, y, r, c, t] = a;
+        const x = op[3], y = op[4], r = op[5], c = op[6], t = op[7];
         ctx.beginPath();
         ctx.arc(x + 0.5, y + 0.5, t < 0 ? r + 0.5 : r, 0, 2 * Math.PI);
         if (t < 0) {
@@ -222,7 +246,7 @@ const char* frame_canvas_script() {
           ctx.stroke();
         }
       } else if (kind === 'T') {
-        const [, c, t, strokes] = a;
+        const c = op[4], t = op[5], strokes = op[6];
         ctx.strokeStyle = c;
         ctx.lineWidth = t;
         ctx.beginPath();
@@ -234,7 +258,7 @@ const char* frame_canvas_script() {
       } else if (kind === 'G') {
         // Glyphs placed from the frame's table: each stroke point is the glyph's origin plus its
         // point in the table (what the strokes of a 'T' op hold, summed here).
-        const [, c, t, placed] = a;
+        const c = op[4], t = op[5], placed = op[6];
         ctx.strokeStyle = c;
         ctx.lineWidth = t;
         ctx.beginPath();
@@ -248,7 +272,7 @@ const char* frame_canvas_script() {
         ctx.stroke();
       } else if (kind === 'P' && typeof op[7] === 'string') {
         ctx.imageSmoothingEnabled = false;
-        ctx.drawImage(images[k++], a[0], a[1]);
+        ctx.drawImage(images[k++], op[3], op[4]);
       } else if (kind === 'P' && op[7].cols) {
         // Runs of equal columns and rows and one texel each ({width, height, cols, rows, texels}:
         // the WebAssembly module's magnified cells): the texels stretched over each column run
@@ -261,31 +285,36 @@ const char* frame_canvas_script() {
         for (let r = 0, i = 0, t = 0; r < n; ++r)
           for (let c = 0; c < b.cols.length; ++c, ++t)
             for (let k = b.cols[c], v = texel[t]; k > 0; --k) row[i++] = v;
-        const strip = document.createElement('canvas');
-        strip.width = b.width;
-        strip.height = n;
+        // One strip canvas kept for every frame (a new canvas per frame cost more than its
+        // pixels); putImageData replaces all of its pixels.
+        const strip = drawScantraceFrame.strip || (drawScantraceFrame.strip = document.createElement('canvas'));
+        if (strip.width !== b.width || strip.height !== n) {
+          strip.width = b.width;
+          strip.height = n;
+        }
         strip.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(row.buffer), b.width, n), 0, 0);
         ctx.imageSmoothingEnabled = false;
-        for (let r = 0, y = a[1]; r < n; y += b.rows[r++]) ctx.drawImage(strip, 0, r, b.width, 1, a[0], y, b.width, b.rows[r]);
+        for (let r = 0, y = op[4]; r < n; y += b.rows[r++]) ctx.drawImage(strip, 0, r, b.width, 1, op[3], y, b.width, b.rows[r]);
       } else if (kind === 'P' && !untransformed) {
         const b = op[7], c = document.createElement('canvas');
         c.width = b.width;
         c.height = b.height;
         c.getContext('2d').putImageData(new ImageData(b.data, b.width, b.height), 0, 0);
         ctx.imageSmoothingEnabled = false;
-        ctx.drawImage(c, a[0], a[1]);
+        ctx.drawImage(c, op[3], op[4]);
       } else if (kind === 'P') {
         // putImageData ignores the clip too: the clip's corner and the clip itself (as the
         // block's dirty rectangle) applied here.
         const b = op[7], ox = clip ? clip[0] : 0, oy = clip ? clip[1] : 0;
-        const dx = clip ? Math.max(0, -a[0]) : 0, dy = clip ? Math.max(0, -a[1]) : 0;
-        const dw = (clip ? Math.min(b.width, clip[2] - a[0]) : b.width) - dx;
-        const dh = (clip ? Math.min(b.height, clip[3] - a[1]) : b.height) - dy;
+        const dx = clip ? Math.max(0, -op[3]) : 0, dy = clip ? Math.max(0, -op[4]) : 0;
+        const dw = (clip ? Math.min(b.width, clip[2] - op[3]) : b.width) - dx;
+        const dh = (clip ? Math.min(b.height, clip[3] - op[4]) : b.height) - dy;
         if (dw > 0 && dh > 0)
-          ctx.putImageData(new ImageData(b.data, b.width, b.height), ox + a[0], oy + a[1], dx, dy, dw, dh);
+          ctx.putImageData(new ImageData(b.data, b.width, b.height), ox + op[3], oy + op[4], dx, dy, dw, dh);
       }
-      ctx.restore();
+      if (clip) ctx.restore();
     }
+    ctx.restore();
   };
   if (!blocks.length) {
     draw([]);

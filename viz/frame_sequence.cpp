@@ -83,8 +83,15 @@ void FrameSequence::apply(const Step& step) {
 }
 
 void FrameSequence::rewind(std::size_t index) {
-  // The latest checkpoint at or before the state of step `index` (the one of 0 steps always is).
+  rewound_ = true;
+  // The latest checkpoint at or before the state of step `index`; before the first one, the
+  // state of no step (an empty canvas state of the same window).
   auto it = checkpoints_.upper_bound(index);
+  if (it == checkpoints_.begin()) {
+    state_ = CanvasState(state_.window(), trace_);
+    applied_ = 0;
+    return;
+  }
   --it;
   state_ = it->second.clone();
   applied_ = it->first;
@@ -94,10 +101,13 @@ Frame FrameSequence::frame(std::size_t index, std::vector<PlacedBox>* placed) {
   if (index >= plan_.steps.size())
     throw std::out_of_range(
         fmt::format("step {} is beyond the replay's {} steps", index + 1, plan_.steps.size()));
-  if (checkpoints_.empty()) checkpoints_.emplace(0, state_.clone());
   if (index + 1 < applied_) rewind(index);
   for (; applied_ <= index; ++applied_) {
-    if (applied_ % checkpoint_every_ == 0 && !checkpoints_.count(applied_))
+    // Checkpoints only once the sequence has gone back (the interactive player): a sequence
+    // asked for its frames in order, or for one frame (the explorer's mouse move, which builds a
+    // sequence for one step), never restores one, and each is a copy of the whole canvas state.
+    if (rewound_ && applied_ % checkpoint_every_ == 0 && applied_ > 0 &&
+        !checkpoints_.count(applied_))
       checkpoints_.emplace(applied_, state_.clone());
     apply(plan_.steps[applied_]);
   }

@@ -8,7 +8,7 @@
 // Each step adds the pixels it fills to the replay's canvas state as it is passed. Frames are
 // cheapest in increasing step order (skipping ahead is fine: the skipped steps' pixels are still
 // added); going back — the interactive player — restores the nearest earlier checkpoint of the
-// canvas state and replays the steps from there.
+// canvas state (taken from the first time it goes back on) and replays the steps from there.
 #include <map>
 #include <optional>
 #include <string>
@@ -61,8 +61,10 @@ class FrameSequence {
   FrameComposer composer_;
   CanvasState state_;
   std::size_t applied_ = 0;  // steps whose pixels are in state_
-  // Copies of state_ taken when `applied_` reached a multiple of checkpoint_every_ (key: applied_).
+  // Copies of state_ taken when `applied_` reached a multiple of checkpoint_every_ (key: applied_)
+  // after the first rewind; the state of no step is made afresh, not kept.
   std::map<std::size_t, CanvasState> checkpoints_;
+  bool rewound_ = false;
   std::size_t checkpoint_every_ = 8;
   std::optional<CanvasPixel> marked_;
 };

@@ -113,6 +113,38 @@ std::optional<trace::Trace>& kept_trace() {
   return t;
 }
 
+// `image` as RGBA bytes (as put_rgba writes them) from the pixels the trace says were written:
+// the canvas's background everywhere, then each scanline's span (or inside intervals) converted
+// from the image. Only for a whole trace of one triangle or polygon at scanline level or finer,
+// by an edge-table method, where the fill writes exactly those pixels onto a canvas of its
+// background (the trace's checks hold each row's pixel events to its span); a drag's traced fill was a tenth of its mouse move in
+// Chromium converting 512 x 512 pixels, most of them background in the triangle's rows.
+void put_rgba_of_spans(const trace::Trace& t, const RgbImage& image, const Color& background,
+                       std::vector<std::uint8_t>& bytes) {
+  const std::size_t w = static_cast<std::size_t>(image.width());
+  bytes.resize(w * static_cast<std::size_t>(image.height()) * 4);
+  const Rgb32f bg = Rgb32f::from(background);
+  const std::uint8_t bg_bytes[4] = {to_byte(bg.r), to_byte(bg.g), to_byte(bg.b), 255};
+  for (std::size_t i = 0; i < bytes.size(); i += 4) std::memcpy(bytes.data() + i, bg_bytes, 4);
+  const auto put = [&](i64 y, const trace::Span& span) {
+    const Rgb32f* row = image.row(static_cast<int>(y));
+    std::uint8_t* out = bytes.data() + (static_cast<std::size_t>(y) * w + static_cast<std::size_t>(span.x_begin)) * 4;
+    for (i64 x = span.x_begin; x < span.x_end; ++x, out += 4) {
+      const Rgb32f& p = row[x];
+      out[0] = to_byte(p.r);
+      out[1] = to_byte(p.g);
+      out[2] = to_byte(p.b);
+    }
+  };
+  for (const trace::Event& e : t.events())
+    if (const auto* row = std::get_if<trace::Scanline>(&e)) {
+      if (row->intervals)
+        for (const trace::Interval& iv : *row->intervals) put(row->y, iv.pixels);
+      else if (row->span)
+        put(row->y, *row->span);
+    }
+}
+
 // The same events as trace_to_file writes, recorded in memory and kept; their JSON Lines text
 // (each line as the file writer writes it: event_to_json(e).dump()); the fill's image, RGBA, in
 // the result's bytes.
@@ -121,39 +153,37 @@ std::string trace_in_memory(const nlohmann::json& in, const nlohmann::json& o) {
   const trace::TraceFilter filter = filter_of(o);
   kept_trace().reset();
   RgbImage image;
+  std::optional<Color> background;  // a triangle's or polygon's canvas (a scene's is rendered)
   if (in.contains("scene")) {
     const std::string path = in["scene"].get<std::string>();
     kept_trace() = trace::record_scene(load_scene(path, o), fill_options(o, is_obj_file(path)), filter, &image);
   } else if (in.contains("triangle")) {
-    kept_trace() = trace::record_triangle(triangle_input(in), fill_options(o, false), filter, &image);
+    const trace::TriangleInput t = triangle_input(in);
+    background = t.background;
+    kept_trace() = trace::record_triangle(t, fill_options(o, false), filter, &image);
   } else {
-    kept_trace() = trace::record_polygon(polygon_input(in), fill_options(o, false), filter, &image);
+    const trace::GeneralPolygonInput p = polygon_input(in);
+    background = p.background;
+    kept_trace() = trace::record_polygon(p, fill_options(o, false), filter, &image);
   }
-  // The image the traced fill drew, for a page to show (a polygon has no render of its own).
-  put_rgba(image, result().bytes);
+  // The image the traced fill drew, for a page to show (a polygon has no render of its own):
+  // from the trace's spans when they are all of its pixels (no filter, none cut off).
+  const trace::Trace& t = *kept_trace();
+  // Not the halfspace method: it fills pixel by pixel and its trace has no scanline events.
+  const bool whole = fill_options(o, false).method != Method::halfspace && !filter.triangles &&
+                     !filter.rows && !filter.max_events &&
+                     filter.level >= TraceLevel::scanline && t.footer() &&
+                     !t.footer()->truncated;
+  if (background && whole)
+    put_rgba_of_spans(t, image, *background, result().bytes);
+  else
+    put_rgba(image, result().bytes);
   // Without the text (options.text false: a drag's mouse move, which reads the step's events
   // with st_kept_step): the events' JSON was half of the call's time.
   if (!o.value("text", true)) return {};
   std::string text;
   for (const trace::Event& e : kept_trace()->events()) text += trace::event_to_json(e).dump() + "\n";
   return text;
-}
-
-// Whether n bytes at a and b are equal, eight at a time: emscripten's memcmp compares byte by
-// byte, and comparing each row of a block with the one above was 1.8 ms of a drag's move.
-bool same_bytes(const void* a, const void* b, std::size_t n) {
-  const auto* p = static_cast<const unsigned char*>(a);
-  const auto* q = static_cast<const unsigned char*>(b);
-  std::size_t i = 0;
-  for (; i + 8 <= n; i += 8) {
-    std::uint64_t x, y;
-    std::memcpy(&x, p + i, 8);
-    std::memcpy(&y, q + i, 8);
-    if (x != y) return false;
-  }
-  for (; i < n; ++i)
-    if (p[i] != q[i]) return false;
-  return true;
 }
 
 // A pixel block as the runs of equal rows and of equal columns it is made of, and one texel per
@@ -169,7 +199,7 @@ std::string block_runs(const viz::PixelsOp& p, std::vector<std::uint8_t>& bytes)
   // Rows: the first of each run of equal rows.
   std::vector<std::size_t> row_starts, row_heights;
   for (std::size_t r = 0; r < h; ++r) {
-    if (r > 0 && same_bytes(px + r * w, px + (r - 1) * w, w * sizeof(viz::Vec3b))) {
+    if (r > 0 && web::same_bytes(px + r * w, px + (r - 1) * w, w * sizeof(viz::Vec3b))) {
       ++row_heights.back();
       continue;
     }

@@ -183,7 +183,15 @@ TEST_CASE("a trace whose events contradict each other is refused naming the line
     auto t = good;
     const std::size_t i = find(t, "scanline", 2);
     t[i]["active_points"][0]["color"] = {0.5, 1.25, 0};
-    CHECK_THROWS_WITH(parse(t), at_line(i, "is not a colour in [0, 1]"));
+    // The whole message, which the checker builds only when a check fails (a callable per row).
+    const std::string row = "triangle " + std::to_string(t[i]["triangle"].get<int>()) + ", row " +
+                            std::to_string(t[i]["y"].get<std::int64_t>());
+    CHECK_THROWS_WITH(parse(t), at_line(i, row + ": active point 0: colour [0.5, 1.25, 0] is not a "
+                                             "colour in [0, 1]"));
+    REQUIRE(t[i].contains("span_colors"));  // Gouraud
+    auto u = good;
+    u[i]["span_colors"]["end"] = {0, 0, -0.5};
+    CHECK_THROWS_WITH(parse(u), at_line(i, row + ": span colour end [0, 0, -0.5] is not a colour"));
     auto v = good;
     const std::size_t b = find(v, "triangle_begin");
     v[b]["colors"][1] = {-0.5, 0, 0};

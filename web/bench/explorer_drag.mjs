@@ -3,7 +3,8 @@
 // compiled and instantiated, the triangle filled and traced, the current step's frame drawn), and
 // what a mouse move of a vertex drag costs (the page's handler around the module's fill, trace,
 // plan and frame and their drawing; and the DevTools round trip of the synthesized move, which
-// returns once the renderer has handled the event). Medians; nothing is asserted.
+// returns once the renderer has handled the event); and, in drags of their own, the move with its
+// pixels rasterised (rasterHooks below). Medians; nothing is asserted.
 //
 //   node --experimental-websocket web/bench/explorer_drag.mjs EXPLORER.html [OPENS] [MOVES] [OTHER.html]
 // With OTHER.html (another build's explorer, e.g. main's), the opens alternate between the two
@@ -40,15 +41,32 @@ async function openTimes(pages, n) {
 }
 await openTimes(other ? [explorer, other] : [explorer], opens);
 
+// Chromium records a canvas's drawing calls and rasterises them later, when the frame is
+// presented (in software here, --disable-gpu): the handler's time leaves that out. A drag with
+// `rastered` measures, on either page alike, from a capturing listener (which runs before the
+// page's handler) to one that runs after it and reads a pixel of both canvases, which makes Skia
+// rasterise everything drawn: the move's whole cost, the handler and its pixels.
+const rasterHooks = `(() => {
+  window.rasteredTimes = [];
+  let t0 = 0;
+  window.addEventListener('mousemove', () => { t0 = performance.now(); }, true);
+  window.addEventListener('mousemove', () => {
+    for (const id of ['grid', 'frame']) document.getElementById(id).getContext('2d').getImageData(0, 0, 1, 1);
+    window.rasteredTimes.push(performance.now() - t0);
+  });
+})()`;
+
 // Vertex 2 of the course triangle dragged back and forth along a diagonal, step 13 shown, in a
 // fresh browser: the handler's times of `moves` mouse moves (the first 30, V8 still compiling the
-// module's functions, left out) and the DevTools round trips.
-async function dragTimes(page, moves) {
+// module's functions, left out) and the DevTools round trips; with `rastered`, the times to the
+// move's pixels rasterised instead (above).
+async function dragTimes(page, moves, rastered = false) {
   const b = await launch();
   try {
     for (const d of ['Runtime', 'Page']) await b.page(`${d}.enable`);
     await b.page('Page.navigate', { url: `file://${path.resolve(page)}#step=12` });
     await until('the page to start', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"), 60000);
+    if (rastered) await b.evaluate(rasterHooks);
     const from = await b.evaluate('explorer.vertexOnScreen(2)');
     const mouse = (type, [x, y]) => b.page('Input.dispatchMouseEvent', { type, x, y, button: 'left', buttons: type === 'mouseReleased' ? 0 : 1, clickCount: 1 });
     const trip = [];
@@ -62,6 +80,7 @@ async function dragTimes(page, moves) {
       if (i > 30) trip.push(performance.now() - t0);
     }
     await mouse('mouseReleased', at);
+    if (rastered) return { rastered: (await b.evaluate('window.rasteredTimes')).slice(30, moves + 30) };
     return { handler: (await b.evaluate('explorer.dragTimes()')).slice(30), trip,
       stages: (await b.evaluate('explorer.dragStages ? explorer.dragStages() : []')).slice(30) };
   } finally {
@@ -73,13 +92,14 @@ async function dragTimes(page, moves) {
 // (the machine's load shifts over a run: each page gets its share of every period).
 const pages = other ? [explorer, other] : [explorer];
 const rounds = other ? 3 : 1;
-const times = pages.map(() => ({ handler: [], trip: [], stages: [] }));
+const times = pages.map(() => ({ handler: [], trip: [], stages: [], rastered: [] }));
 for (let r = 0; r < rounds; ++r)
   for (const [k, page] of pages.entries()) {
     const t = await dragTimes(page, Math.ceil(moves / rounds));
     times[k].handler.push(...t.handler);
     times[k].trip.push(...t.trip);
     times[k].stages.push(...t.stages);
+    times[k].rastered.push(...(await dragTimes(page, Math.ceil(moves / rounds), true)).rastered);
   }
 pages.forEach((page, k) => {
   const { handler, trip, stages } = times[k];
@@ -88,6 +108,10 @@ pages.forEach((page, k) => {
   if (stages.length) {
     // Each stage's own time: the difference of the ends, medians.
     const part = (a, b) => median(stages.map((x) => x[b] - (a ? x[a] : 0))).toFixed(1);
-    console.log(`  stages, medians: traced fill ${part(null, 'trace')} ms, fill put on its canvas ${part('trace', 'fill')}, step frame composed ${part('fill', 'frame')}, drawn ${part('frame', 'drawn')}`);
+    console.log(`  stages, medians: traced fill ${part(null, 'trace')} ms, fill put on its canvas ${part('trace', 'fill')}, step frame composed ${part('fill', 'frame')}, drawn ${part('frame', 'drawn')}` +
+      (stages[0].step !== undefined ? ` (the grid ${part('frame', 'grid')}, the frame ${part('grid', 'step')}, the tables ${part('step', 'drawn')})` : ''));
   }
+  const { rastered } = times[k];
+  const [r1, r3] = quartiles(rastered);
+  console.log(`  the same drag with its pixels rasterised in the move (${rastered.length} moves, separate browsers): median ${median(rastered).toFixed(1)} ms (quartiles ${r1.toFixed(1)}, ${r3.toFixed(1)})`);
 });

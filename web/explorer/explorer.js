@@ -49,7 +49,7 @@ export async function start(st) {
   function recompute(moving = false) {
     const t0 = performance.now();
     // Milliseconds from the start to the end of each stage (the bench's breakdown of a move).
-    const stages = { trace: 0, fill: 0, frame: 0, drawn: 0 };
+    const stages = { trace: 0, fill: 0, frame: 0, grid: 0, step: 0, drawn: 0 };
     lastStages = stages;
     showError(null);
     try {
@@ -79,9 +79,22 @@ export async function start(st) {
     } catch (e) {
       showError(e);
     }
-    redraw();
+    redraw(stages, t0);
     stages.drawn = performance.now() - t0;
     document.body.dataset.recomputeMs = (performance.now() - t0).toFixed(1);
+  }
+
+  // The frame's size: the canvas's box on the screen in device pixels, 16:9, at most the 1280 x 720
+  // of the videos and at least the composer's 320 x 180. A 1280-wide frame shown in a 690-pixel
+  // column was scaled down by the browser: composing and drawing 3.4 times the pixels shown was
+  // most of a drag move's drawing (docs/performance.md); composed at the size shown, the frame's
+  // text and grid are drawn sharp, not resampled.
+  // The box's width is kept from the last layout (a ResizeObserver, below): reading clientWidth
+  // in a mouse move made the browser lay the page out there and then (the tables had changed).
+  let frameBoxWidth = frame.clientWidth;
+  function frameSize() {
+    const w = Math.round(Math.max(320, Math.min(1280, frameBoxWidth * (window.devicePixelRatio || 1))));
+    return { width: w, height: Math.max(180, Math.round((w * 9) / 16)) };
   }
 
   // The plan of steps and the current step's frame from one call (one plan), the frame's pixel
@@ -89,11 +102,12 @@ export async function start(st) {
   let shownFrame = null;
   function composeStep() {
     const source = s.mode === 'scene' ? scene.name : `the explorer\u2019s ${s.mode}`;
-    let r = st.frames(null, { first: s.step, count: 1, source, blocks: 'rgba' });
+    const options = { count: 1, source, blocks: 'rgba', ...frameSize() };
+    let r = st.frames(null, { ...options, first: s.step });
     plan = r.steps;
     if (s.step >= plan.length && plan.length) {
       s.step = plan.length - 1;
-      r = st.frames(null, { first: s.step, count: 1, source, blocks: 'rgba' });
+      r = st.frames(null, { ...options, first: s.step });
     }
     shownFrame = r.frames[0] || null;
     // The tables' events: the step's face's edge table and, for a scanline step, its row.
@@ -101,9 +115,12 @@ export async function start(st) {
     shown = st.keptStep(step ? Math.max(0, step.triangle) : 0, step && step.kind === 'scanlines' ? step.last_row : -1);
   }
 
-  function redraw() {
+  // `stages` (a drag's move): the end of each drawing, ms from t0, kept for the bench.
+  function redraw(stages = null, t0 = 0) {
     drawGrid();
+    if (stages) stages.grid = performance.now() - t0;
     drawStep();
+    if (stages) stages.step = performance.now() - t0;
     showTables();
     // The address follows the state, but not on every mouse move of a drag (a replaceState cost
     // 5 ms of the move's time): the release writes it.
@@ -433,6 +450,13 @@ export async function start(st) {
     e.preventDefault();
     if (e.dataTransfer.files[0]) openFile(e.dataTransfer.files[0]);
   });
+  // The frame's box resized (a window resized, a projector, a scroll bar come or gone): the frame
+  // composed again at its new size.
+  new ResizeObserver((entries) => {
+    frameBoxWidth = entries[entries.length - 1].contentRect.width;
+    const { width, height } = frameSize();
+    if (plan.length && (width !== frame.width || height !== frame.height)) setStep(s.step);
+  }).observe(frame);
   window.addEventListener('hashchange', () => {
     if (location.hash === toHash(s)) return;
     s = fromHash(location.hash);
@@ -461,11 +485,14 @@ export async function start(st) {
     // Milliseconds of each mouse move of a vertex drag so far (the handler: module and drawing).
     dragTimes: () => dragTimes.slice(),
     // Each move's stages, ms from the handler's start to the end of: the traced fill, the fill
-    // put on its canvas, the step's frame composed, everything drawn.
+    // put on its canvas, the step's frame composed, the grid drawn, the frame drawn, everything
+    // drawn (the tables last).
     dragStages: () => dragStages.slice(),
     scene: () => (s.mode === 'triangle' ? JSON.stringify(triangleScene()) : null),
     // The module (the JavaScript API) and the frame shown, for the console and the test.
     module: () => st,
+    // The frame's size as composed (the `frames` options width and height the page passes).
+    frameSize: () => ({ width: frame.width, height: frame.height }),
     framePixels: () => Array.from(fctx.getImageData(0, 0, frame.width, frame.height).data),
     fillPixels: () => Array.from(fillCanvas.getContext('2d').getImageData(0, 0, fillCanvas.width, fillCanvas.height).data),
   };

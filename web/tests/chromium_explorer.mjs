@@ -40,6 +40,22 @@ const key = async (k, code) => {
 };
 const stepShown = async () => Number((await text('step-no')).match(/step (\d+)/)[1]) - 1;
 
+// The channel values in which the frame canvas differs from the current step's frame of the kept
+// trace drawn whole on a fresh canvas at the size the page composes (-1: the sizes differ).
+const staleValues = () => b.evaluate(`(() => {
+  const st = explorer.module();
+  const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
+  const f = st.frames(null, { first: explorer.state().step, count: 1, source: 'the explorer\u2019s triangle', blocks: 'rgba', ...explorer.frameSize() }).frames[0];
+  const c = document.createElement('canvas');
+  c.width = f.w;
+  c.height = f.h;
+  draw(c.getContext('2d'), f);
+  const want = c.getContext('2d').getImageData(0, 0, f.w, f.h).data, got = explorer.framePixels();
+  let n = got.length === want.length ? 0 : -1;
+  for (let i = 0; n >= 0 && i < want.length; ++i) if (want[i] !== got[i]) ++n;
+  return n;
+})()`);
+
 try {
   for (const d of ['Runtime', 'Log', 'Network', 'Page', 'DOM']) await b.page(`${d}.enable`);
   const url = `file://${path.resolve(explorer)}#triangle=20,20;250,80;300,400&shading=flat&step=12`;
@@ -78,19 +94,7 @@ try {
     assert.ok(row, `row ${y} is in the native trace`);
     for (const a of row.active_edges) assert.ok(active.includes(`edge ${a.edge}  x = ${a.x}`), active);
     // The canvas holds the step's frame of the triangle as it is now, drawn whole.
-    const stale = await b.evaluate(`(() => {
-      const st = explorer.module();
-      const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
-      const f = st.frames(null, { first: explorer.state().step, count: 1, source: 'the explorer\u2019s triangle', blocks: 'rgba' }).frames[0];
-      const c = document.createElement('canvas');
-      c.width = f.w;
-      c.height = f.h;
-      draw(c.getContext('2d'), f);
-      const want = c.getContext('2d').getImageData(0, 0, f.w, f.h).data, got = explorer.framePixels();
-      let n = got.length === want.length ? 0 : -1;
-      for (let i = 0; n >= 0 && i < want.length; ++i) if (want[i] !== got[i]) ++n;
-      return n;
-    })()`);
+    const stale = await staleValues();
     assert.equal(stale, 0, `the frame shown while dragging differs from the frame drawn whole in ${stale} channel values`);
     await mouse('mouseReleased', to);
     const moves = await b.evaluate('explorer.dragTimes()');
@@ -132,7 +136,7 @@ try {
       const st = explorer.module();
       const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
       const s = explorer.state();
-      const f = st.frames(explorer.traceText(), { first: s.step, count: 1, source: 'the explorer\u2019s triangle' }).frames[0];
+      const f = st.frames(explorer.traceText(), { first: s.step, count: 1, source: 'the explorer\u2019s triangle', ...explorer.frameSize() }).frames[0];
       const c = document.createElement('canvas');
       c.width = f.w;
       c.height = f.h;
@@ -147,6 +151,28 @@ try {
     assert.equal(same[0], true, 'frame sizes differ');
     assert.ok(same[2] > 0, 'the frame has no pixel block');
     assert.equal(same[1], 0, `${same[1]} channel values differ`);
+  });
+
+  await check('the frame is composed at the size it is shown, and again when the window is resized', async () => {
+    // Device pixels of the canvas's box (the device scale is 1 here), 16:9, at most 1280 wide.
+    const shown = () => b.evaluate("(() => { const f = document.getElementById('frame'); return [f.width, f.height, f.clientWidth]; })()");
+    const fits = ([w, h, css]) => {
+      assert.equal(w, Math.max(320, Math.min(1280, css)));
+      assert.equal(h, Math.max(180, Math.round((w * 9) / 16)));
+    };
+    const before = await shown();
+    fits(before);
+    assert.ok(before[0] < 1280, `the frame's column is ${before[2]} pixels wide in this window`);
+    await b.page('Emulation.setDeviceMetricsOverride', { width: 900, height: 800, deviceScaleFactor: 1, mobile: false });
+    try {
+      await until('the frame composed at its new size', async () => (await shown())[0] !== before[0]);
+      fits(await shown());
+      assert.equal(await staleValues(), 0, 'the frame shown after the resize differs from the frame drawn whole at its size');
+    } finally {
+      await b.page('Emulation.clearDeviceMetricsOverride');
+    }
+    await until('the frame composed at its first size again', async () => (await shown())[0] === before[0]);
+    assert.equal(await staleValues(), 0);
   });
 
   await check('a clipped RGBA block is drawn as its clipped PNG block, also on a scaled context', async () => {

@@ -159,6 +159,40 @@ check('kept trace and its frames with RGBA blocks', () => {
     assert.ok(blocks > 0, `step ${step} has no pixel block`);
   }
 });
+// A kept trace's image is made from the trace's own spans (web/bindings_trace.cpp) when the trace
+// holds all of them; a trace capped by max_events (never reached here) takes the conversion of
+// every pixel instead. Both must be the image the fill drew, for the methods, rules and shadings,
+// a triangle cut by the canvas's edges, and polygons with a hole or crossing themselves; a
+// triangle's is also render()'s of the one-face scene.
+check("a kept trace's image from its spans is the fill's image", () => {
+  const star = [[256, 40], [380, 440], [60, 190], [450, 190], [130, 440]];
+  const holed = [[[50, 50], [400, 60], [300, 300], [60, 420]], [[100, 100], [200, 110], [150, 200]]];
+  const cases = [
+    ...['exact', 'float', 'double', 'halfspace'].map((method) => [{ triangle: [[20, 20], [250, 80], [299.5, 371.25]] }, { method }]),
+    [{ triangle: [[20, 20], [250, 80], [299.5, 371.25]] }, { shading: 'flat', fill_rule: 'closed', subpixel_bits: 0 }],
+    [{ triangle: [[-40.3, 30], [300, -20.5], [530.75, 600]], colors: [[0, 0, 0], [0.2, 0.9, 0.4], [1, 1, 0]] }, {}],
+    [{ triangle: [[10, 10], [200, 15], [60, 120]], width: 300, height: 200 }, { shading: 'flat' }],
+    [{ polygon: [star] }, { winding: 'even-odd' }],
+    [{ polygon: [star] }, { winding: 'non-zero', shading: 'flat' }],
+    [{ polygon: holed }, { winding: 'non-zero' }],
+  ];
+  for (const [input, options] of cases) {
+    const what = JSON.stringify([input, options]);
+    st.traceText(input, { ...options, keep: true, text: false });
+    const fromSpans = st.lastTraceImage;
+    st.traceText(input, { ...options, keep: true, text: false, max_events: 1e9 });
+    const everyPixel = st.lastTraceImage;
+    assert.deepStrictEqual([fromSpans.width, fromSpans.height], [everyPixel.width, everyPixel.height], what);
+    assert.ok(Buffer.from(fromSpans.rgba).equals(Buffer.from(everyPixel.rgba)), `${what}: the image from the spans differs`);
+    assert.ok(fromSpans.rgba.some((v, i) => i % 4 !== 3 && v !== 255), `${what}: nothing filled`);
+    if (input.triangle) {
+      const [w, h] = [input.width || 512, input.height || 512];
+      const scene = { width: w, height: h, background: [1, 1, 1], vertices: input.triangle,
+        vcolors: input.colors || [[1, 0, 0], [0, 1, 0], [0, 0, 1]], faces: [[0, 1, 2]], depth: [0, 0, 0] };
+      assert.ok(Buffer.from(fromSpans.rgba).equals(Buffer.from(st.render(scene, options).rgba)), `${what}: differs from render()`);
+    }
+  }
+});
 // The course scene's first 300 faces (its whole trace is 49 MB, a minute to decode twice here).
 for (const [name, file] of scenes.filter(([n]) => n !== 'many_faces'))
   check(`trace scene ${name}`, () => {

@@ -181,7 +181,7 @@ export class Scantrace {
       file = 'trace.jsonl';
     }
     const r = this._call('frames', [file, JSON.stringify(options)]);
-    const out = this._parseFrames(r.text());
+    const out = JSON.parse(r.text());
     if (options.blocks === 'rgba') {
       // Each pixel block's op ends with its runs of equal columns and rows and the offset of its
       // texels (one RGBA pixel per run pair) in the result's bytes (web/bindings_trace.cpp's
@@ -191,22 +191,6 @@ export class Scantrace {
         for (const op of f.ops)
           if (op[0] === 'P') op[7] = runsBlock(op[5], op[6], op[7], texels);
     }
-    return out;
-  }
-
-  // st_frames's JSON parsed, the last frame's glyph table taken from the last call when its text
-  // is the same (a drag's frames draw the same few dozen glyphs move after move, and parsing
-  // their strokes again was a quarter of parsing a step frame): frames may share that array.
-  _parseFrames(text) {
-    const tail = '}\n]}', at = text.lastIndexOf(',"glyphs":[');
-    if (at < 0 || !text.endsWith(tail)) return JSON.parse(text);
-    const glyphsText = text.slice(at + ',"glyphs":'.length, text.length - tail.length);
-    if (glyphsText !== this._glyphsText) {
-      this._glyphsText = glyphsText;
-      this._glyphs = JSON.parse(glyphsText);
-    }
-    const out = JSON.parse(text.slice(0, at) + tail);
-    out.frames[out.frames.length - 1].glyphs = this._glyphs;
     return out;
   }
 

@@ -159,22 +159,6 @@ check('kept trace and its frames with RGBA blocks', () => {
     assert.ok(blocks > 0, `step ${step} has no pixel block`);
   }
 });
-// frames() takes a frame's glyph table from the call before when its JSON is the same text (a
-// drag's frames): each frame's table must still be the one its own JSON holds, whichever came
-// before (parsed here from the module's text), and an equal table the same array.
-check("frames' glyph tables: each frame's own, one array when equal", () => {
-  const own = (o) => JSON.parse(st._call('frames', ['', JSON.stringify(o)]).text()).frames.map((f) => f.glyphs);
-  const seen = [];
-  for (const o of [{ first: 0 }, { first: 12 }, { first: 12 }, { first: 30, width: 640, height: 360 }, { first: 0 }, { first: 10, count: 3 }]) {
-    const options = { count: 1, blocks: 'rgba', source: 'kept.jsonl', ...o };
-    const got = st.frames(null, options).frames.map((f) => f.glyphs);
-    assert.deepStrictEqual(got, own(options), JSON.stringify(o));
-    seen.push(JSON.stringify(got[got.length - 1]));
-  }
-  assert.ok(new Set(seen).size >= 3, 'the frames tried have fewer than three different glyph tables');
-  const [a, b] = [0, 1].map(() => st.frames(null, { first: 12, count: 1, source: 'kept.jsonl' }).frames[0].glyphs);
-  assert.strictEqual(a, b);
-});
 // A kept trace's image is made from the trace's own spans (web/bindings_trace.cpp) when the trace
 // holds all of them; a trace capped by max_events (never reached here) takes the conversion of
 // every pixel instead. Both must be the image the fill drew, for the methods, rules and shadings,

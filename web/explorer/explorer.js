@@ -67,7 +67,7 @@ export async function start(st) {
       const traceMs = performance.now() - t0;
       stages.trace = traceMs;
       if (s.mode !== 'scene') fill = { ...st.lastTraceImage, ms: traceMs };
-      putFill(moving);
+      putFill();
       stages.fill = performance.now() - t0;
       composeStep();
       stages.frame = performance.now() - t0;
@@ -80,26 +80,14 @@ export async function start(st) {
     document.body.dataset.recomputeMs = (performance.now() - t0).toFixed(1);
   }
 
-  // The traced fill put on its canvas. A drag's move puts only the rows that can differ from the
-  // image already there: those of the vertices' box before and after the move (a triangle's or
-  // polygon's fill writes pixels inside its vertices' box only, on its canvas's background), a
-  // third of the 1 MB put in the course triangle's drag. Anything else puts the whole image.
-  let fillRows = null; // [first, end) of the rows of the canvas's image not all background
-  function putFill(moving) {
-    const ys = vertices().map((v) => v[1]);
-    const rows = ys.length ? [Math.max(0, Math.floor(Math.min(...ys)) - 1), Math.min(fill.height, Math.ceil(Math.max(...ys)) + 2)] : null;
-    const image = new ImageData(fill.rgba, fill.width, fill.height), ctx = fillCanvas.getContext('2d');
-    if (moving && rows && fillRows && fillCanvas.width === fill.width && fillCanvas.height === fill.height) {
-      const first = Math.min(rows[0], fillRows[0]), end = Math.max(rows[1], fillRows[1]);
-      if (end > first) ctx.putImageData(image, 0, 0, 0, first, fill.width, end - first);
-    } else {
-      if (fillCanvas.width !== fill.width || fillCanvas.height !== fill.height) {
-        fillCanvas.width = fill.width;
-        fillCanvas.height = fill.height;
-      }
-      ctx.putImageData(image, 0, 0);
+  // The traced fill put on its canvas. (Putting only the rows a drag's move can change, those of
+  // the vertices' boxes before and after it, measured no faster: docs/performance.md.)
+  function putFill() {
+    if (fillCanvas.width !== fill.width || fillCanvas.height !== fill.height) {
+      fillCanvas.width = fill.width;
+      fillCanvas.height = fill.height;
     }
-    fillRows = rows;
+    fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
   }
 
   // The frame's size: the canvas's box on the screen in device pixels, 16:9, at most the 1280 x 720

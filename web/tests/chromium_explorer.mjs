@@ -96,9 +96,8 @@ try {
     // The canvas holds the step's frame of the triangle as it is now, drawn whole.
     const stale = await staleValues();
     assert.equal(stale, 0, `the frame shown while dragging differs from the frame drawn whole in ${stale} channel values`);
-    // And the fill's canvas the whole image of the triangle as it is now (a move puts only the
-    // rows of the vertices' boxes before and after it; the vertex went up by 120 pixels, so the
-    // rows it left must have been put back to the background).
+    // And the fill's canvas the whole image of the triangle as it is now (the vertex went up by
+    // 120 pixels: the rows it left are background again).
     const staleFill = await b.evaluate(`(() => {
       const want = explorer.module().lastTraceImage.rgba, got = explorer.fillPixels();
       let n = got.length === want.length ? 0 : -1;

@@ -8,7 +8,7 @@
 //
 //   node --experimental-websocket web/bench/explorer_drag.mjs EXPLORER.html [OPENS] [MOVES] [OTHER.html]
 // With OTHER.html (another build's explorer, e.g. main's), the opens alternate between the two
-// pages, each in a fresh browser, and so do the drags (three rounds each); both medians printed.
+// pages, each in a fresh browser, and so do the drags (four rounds, each page first in two); both medians printed.
 import path from 'node:path';
 
 import { launch, until } from '../tests/cdp.mjs';
@@ -88,13 +88,15 @@ async function dragTimes(page, moves, rastered = false) {
   }
 }
 
-// With OTHER.html, the drags alternate between the two pages in three rounds of MOVES / 3 moves
-// (the machine's load shifts over a run: each page gets its share of every period).
+// With OTHER.html, the drags alternate between the two pages in four rounds of MOVES / 4 moves
+// (the machine's load shifts over a run: each page gets its share of every period), each page
+// first in two of them: whichever page went first in every round came out 1-2.5 ms slower a
+// move, the same page listed first or second (docs/performance.md).
 const pages = other ? [explorer, other] : [explorer];
-const rounds = other ? 3 : 1;
+const rounds = other ? 4 : 1;
 const times = pages.map(() => ({ handler: [], trip: [], stages: [], rastered: [] }));
 for (let r = 0; r < rounds; ++r)
-  for (const [k, page] of pages.entries()) {
+  for (const [k, page] of (r % 2 ? [...pages.entries()].reverse() : [...pages.entries()])) {
     const t = await dragTimes(page, Math.ceil(moves / rounds));
     times[k].handler.push(...t.handler);
     times[k].trip.push(...t.trip);

@@ -67,11 +67,7 @@ export async function start(st) {
       const traceMs = performance.now() - t0;
       stages.trace = traceMs;
       if (s.mode !== 'scene') fill = { ...st.lastTraceImage, ms: traceMs };
-      if (fillCanvas.width !== fill.width || fillCanvas.height !== fill.height) {
-        fillCanvas.width = fill.width;
-        fillCanvas.height = fill.height;
-      }
-      fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
+      putFill();
       stages.fill = performance.now() - t0;
       composeStep();
       stages.frame = performance.now() - t0;
@@ -82,6 +78,16 @@ export async function start(st) {
     redraw(stages, t0);
     stages.drawn = performance.now() - t0;
     document.body.dataset.recomputeMs = (performance.now() - t0).toFixed(1);
+  }
+
+  // The traced fill put on its canvas. (Putting only the rows a drag's move can change, those of
+  // the vertices' boxes before and after it, measured no faster: docs/performance.md.)
+  function putFill() {
+    if (fillCanvas.width !== fill.width || fillCanvas.height !== fill.height) {
+      fillCanvas.width = fill.width;
+      fillCanvas.height = fill.height;
+    }
+    fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
   }
 
   // The frame's size: the canvas's box on the screen in device pixels, 16:9, at most the 1280 x 720
@@ -144,8 +150,15 @@ export async function start(st) {
 
   function drawGrid() {
     gctx.setTransform(1, 0, 0, 1, 0, 0);
-    gctx.fillStyle = '#ddd';
-    gctx.fillRect(0, 0, grid.width, grid.height);
+    // The grey around the image only where the image leaves some of the grid uncovered: its
+    // opaque pixels, sampled nearest, replace every pixel they cover (the course triangle's
+    // default view covers it all, and the fill of 720 x 720 pixels was a third of the grid's
+    // rasterising in a drag's move).
+    const z = view.zoom;
+    if (!fill || view.x > 0 || view.y > 0 || view.x + fillCanvas.width * z < grid.width || view.y + fillCanvas.height * z < grid.height) {
+      gctx.fillStyle = '#ddd';
+      gctx.fillRect(0, 0, grid.width, grid.height);
+    }
     gctx.imageSmoothingEnabled = false;
     gctx.drawImage(fillCanvas, view.x, view.y, fillCanvas.width * view.zoom, fillCanvas.height * view.zoom);
     if (diffPicture) {
@@ -155,7 +168,6 @@ export async function start(st) {
       c.getContext('2d').putImageData(new ImageData(diffPicture.rgba, diffPicture.width, diffPicture.height), 0, 0);
       gctx.drawImage(c, view.x, view.y, c.width * view.zoom, c.height * view.zoom);
     }
-    const z = view.zoom;
     if (z >= 6) {
       // The pixel grid and the pixel centres, where coverage is decided.
       gctx.strokeStyle = 'rgba(0,0,0,0.15)';

@@ -96,6 +96,15 @@ try {
     // The canvas holds the step's frame of the triangle as it is now, drawn whole.
     const stale = await staleValues();
     assert.equal(stale, 0, `the frame shown while dragging differs from the frame drawn whole in ${stale} channel values`);
+    // And the fill's canvas the whole image of the triangle as it is now (the vertex went up by
+    // 120 pixels: the rows it left are background again).
+    const staleFill = await b.evaluate(`(() => {
+      const want = explorer.module().lastTraceImage.rgba, got = explorer.fillPixels();
+      let n = got.length === want.length ? 0 : -1;
+      for (let i = 0; n >= 0 && i < want.length; ++i) if (want[i] !== got[i]) ++n;
+      return n;
+    })()`);
+    assert.equal(staleFill, 0, `the fill's canvas while dragging differs from the traced fill's image in ${staleFill} channel values`);
     await mouse('mouseReleased', to);
     const moves = await b.evaluate('explorer.dragTimes()');
     console.log(`a drag's moves took ${moves.map((t) => t.toFixed(1)).join(', ')} ms (fill, trace, plan, the step's frame drawn; web/bench/explorer_drag.mjs takes medians)`);
@@ -284,6 +293,27 @@ try {
     const got = await b.evaluate('explorer.fillPixels()');
     assert.equal(got.length, want.rgba.length);
     assert.ok(got.every((v, i) => v === want.rgba[i]), 'pixels differ');
+  });
+
+  await check('the grid is grey where the fill image leaves it uncovered, after a pan too', async () => {
+    // The grid's pixel at (x, y) of its canvas, RGB.
+    const gridPixel = (x, y) => b.evaluate(`Array.from(document.getElementById('grid').getContext('2d').getImageData(${x}, ${y}, 1, 1).data.slice(0, 3))`);
+    // The default view: the 512 x 512 fill scaled over the whole 720 x 720 grid, its white
+    // background in the corner (the grey is drawn only where the image leaves some uncovered).
+    assert.deepStrictEqual(await gridPixel(2, 2), [255, 255, 255]);
+    // Panned 60 pixels right and down (a drag off the vertices): the strip it uncovers is grey,
+    // not what the grid showed there before.
+    const r = await b.evaluate("(() => { const r = document.getElementById('grid').getBoundingClientRect(); return [r.left, r.top, r.width / 720]; })()");
+    const from = [r[0] + 200 * r[2], r[1] + 40 * r[2]], to = [from[0] + 60 * r[2], from[1] + 60 * r[2]];
+    await mouse('mousePressed', from);
+    await mouse('mouseMoved', to);
+    await mouse('mouseReleased', to);
+    assert.deepStrictEqual(await gridPixel(20, 20), [221, 221, 221]);
+    assert.deepStrictEqual(await gridPixel(700, 700), [255, 255, 255]);
+    await mouse('mousePressed', to);
+    await mouse('mouseMoved', from);
+    await mouse('mouseReleased', from);
+    assert.deepStrictEqual(await gridPixel(2, 2), [255, 255, 255]);
   });
 
   await check('a click on a pixel shows its why', async () => {

@@ -13,6 +13,7 @@
 #include "demo/demo_scene.hpp"
 #include "io/obj_loader.hpp"
 #include "io/scene_json.hpp"
+#include "src/flat_span.hpp"
 #include "trace/event_json.hpp"
 #include "trace/record.hpp"
 #include "viz/frame_json.hpp"
@@ -124,18 +125,16 @@ void put_rgba_of_spans(const trace::Trace& t, const RgbImage& image, const Color
                        std::vector<std::uint8_t>& bytes) {
   const std::size_t w = static_cast<std::size_t>(image.width());
   bytes.resize(w * static_cast<std::size_t>(image.height()) * 4);
+  // The background by fill_pixels (src/flat_span.hpp): a few pixels, then copied onto the rest in
+  // doubling blocks, which emscripten hands to the engine's own copy, where a 4-byte copy per
+  // pixel of the 512 x 512 canvas was a tenth of a drag move's module time in Node.
+  struct Rgba8 {
+    std::uint8_t r, g, b, a;
+  };
   const Rgb32f bg = Rgb32f::from(background);
-  const std::uint8_t bg_bytes[4] = {to_byte(bg.r), to_byte(bg.g), to_byte(bg.b), 255};
-  // The background in the first row, then doubled (the bytes written so far copied after them):
-  // a handful of large copies, which emscripten hands to the engine's own copy, where a 4-byte
-  // copy per pixel of the 512 x 512 canvas was a tenth of a drag move's module time in Node.
-  const std::size_t first_row = std::min(bytes.size(), w * 4);
-  for (std::size_t i = 0; i < first_row; i += 4) std::memcpy(bytes.data() + i, bg_bytes, 4);
-  for (std::size_t done = first_row; done && done < bytes.size();) {
-    const std::size_t n = std::min(done, bytes.size() - done);
-    std::memcpy(bytes.data() + done, bytes.data(), n);
-    done += n;
-  }
+  auto* pixels = reinterpret_cast<Rgba8*>(bytes.data());
+  fill_pixels(pixels, pixels + bytes.size() / 4,
+              Rgba8{to_byte(bg.r), to_byte(bg.g), to_byte(bg.b), 255});
   const auto put = [&](i64 y, const trace::Span& span) {
     const Rgb32f* row = image.row(static_cast<int>(y));
     std::uint8_t* out = bytes.data() + (static_cast<std::size_t>(y) * w + static_cast<std::size_t>(span.x_begin)) * 4;

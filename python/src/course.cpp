@@ -372,12 +372,19 @@ void bind_cpp_reference(py::module_& m) {
   // clock "wall" (steady_clock) or "cpu" (this thread's CPU time, CLOCK_THREAD_CPUTIME_ID, as
   // Python's time.thread_time): on two cores shared with other jobs, a render's wall time
   // includes the time it waited for a core, its CPU time does not.
+  // pixel "float32": the library's render into a fresh Image<Rgb32f> (the float canvas of
+  // `scantrace render`), the reference render_img is held to; "float64": the render render_img
+  // runs, into the recycled Image<Rgb64> (render_array), without Python: what the float64 pixels
+  // cost in C++ alone (python/bench/bench_render_img.py prints both).
   m.def(
       "_cpp_render_seconds",
-      [](const std::string& path, const std::string& shading, int n, const std::string& clock) {
+      [](const std::string& path, const std::string& shading, int n, const std::string& clock,
+         const std::string& pixel) {
         if (clock != "wall" && clock != "cpu")
           throw_value_error("clock: expected 'wall' or 'cpu', got '" + clock + "'");
-        const bool cpu = clock == "cpu";
+        if (pixel != "float32" && pixel != "float64")
+          throw_value_error("pixel: expected 'float32' or 'float64', got '" + pixel + "'");
+        const bool cpu = clock == "cpu", wide = pixel == "float64";
         const Scene scene = load_scene_file(path, Shading::gouraud);
         FillOptions opt;
         opt.shading = shading_argument(shading);
@@ -394,13 +401,23 @@ void bind_cpp_reference(py::module_& m) {
         std::vector<double> times;
         for (int i = 0; i < n; ++i) {
           const double t0 = now();
+          if (wide) {
+            std::shared_ptr<Image<Rgb64>> image = RecycledImage<Rgb64>::take();
+            RenderScratch scratch;
+            NoTracer none;
+            render(*image, scene, opt, scratch, none);
+            times.push_back(now() - t0);
+            RecycledImage<Rgb64>::give_back(std::move(image));
+            continue;
+          }
           const RgbImage image = render(scene, opt);
           times.push_back(now() - t0);
           if (image.width() == 0) break;
         }
         return times;
       },
-      py::arg("path"), py::arg("shading"), py::arg("n"), py::arg("clock") = "wall");
+      py::arg("path"), py::arg("shading"), py::arg("n"), py::arg("clock") = "wall",
+      py::arg("pixel") = "float32");
 }
 
 void bind_course(py::module_& m) {

@@ -150,7 +150,9 @@ TEST_CASE("the course scene's scanline trace passes the thorough checks", "[.][c
   CHECK(s.events - 2 == 111298);  // the issue's count: the events between header and footer
 }
 
-TEST_CASE("a trace whose events contradict each other is refused naming the line",
+// A trace whose events contradict each other is refused naming the line: its spans and rows, its
+// values, its order and counts (the three cases below).
+TEST_CASE("a trace whose spans or rows contradict the triangle is refused naming the line",
           "[trace][check]") {
   const auto good = traced(TraceLevel::scanline);
   REQUIRE_NOTHROW(parse(good));
@@ -179,6 +181,13 @@ TEST_CASE("a trace whose events contradict each other is refused naming the line
     t.insert(t.begin() + static_cast<std::ptrdiff_t>(i) + 1, t[i]);
     CHECK_THROWS_WITH(parse(t), at_line(i + 1, "rows of a triangle must increase"));
   }
+}
+
+TEST_CASE("a trace with a colour or a vertex out of range is refused naming the line",
+          "[trace][check]") {
+  const auto good = traced(TraceLevel::scanline);
+  REQUIRE_NOTHROW(parse(good));
+
   SECTION("a colour outside [0, 1]") {
     auto t = good;
     const std::size_t i = find(t, "scanline", 2);
@@ -209,6 +218,13 @@ TEST_CASE("a trace whose events contradict each other is refused naming the line
     u[b]["snapped"][2][1] = -2147483648.0;
     CHECK_THROWS_WITH(parse(u), at_line(b, "vertex 2 snapped y"));
   }
+}
+
+TEST_CASE("a trace whose events are out of order or miscounted is refused naming the line",
+          "[trace][check]") {
+  const auto good = traced(TraceLevel::scanline);
+  REQUIRE_NOTHROW(parse(good));
+
   SECTION("a scanline of a triangle that was never begun") {
     auto t = good;
     const std::size_t i = find(t, "scanline", 4);

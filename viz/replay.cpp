@@ -1,5 +1,6 @@
 #include "viz/replay.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <memory>
@@ -82,30 +83,29 @@ OutputKind output_kind(const std::filesystem::path& out) {
                   s));
 }
 
-ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
-                    const ReplayOptions& options, Progress* progress) {
-  validate(options);
-  Replayer replayer(trace, options.plan, options.size,
-                    options.source.empty() ? "the trace" : options.source);
-  replayer.mark_on_every_frame(options.marked_pixel);
+namespace {
+
+// The steps a replay writes, [first, last] counted from 0.
+struct Chosen {
+  std::size_t first, last;
+};
+
+Chosen chosen_steps(const Replayer& replayer, const StepRange& steps) {
   const std::size_t total = replayer.steps().size();
-  if (options.steps.first > total)
-    throw std::invalid_argument(fmt::format(
-        "--steps: the replay has {} steps, so it has no step {}", total, options.steps.first));
-  const std::size_t first = options.steps.first - 1;
-  const std::size_t last = std::min(options.steps.last, total) - 1;
+  if (steps.first > total)
+    throw std::invalid_argument(
+        fmt::format("--steps: the replay has {} steps, so it has no step {}", total, steps.first));
+  return {steps.first - 1, std::min(steps.last, total) - 1};
+}
 
-  ReplayResult result;
-  result.kind = output_kind(out);
-  result.steps_total = total;
-  result.steps = last - first + 1;
-  result.mode = replayer.plan().mode;
-  result.rows_per_step = replayer.plan().rows_per_step;
-
-  std::size_t work = result.steps;  // frames to write; progress is counted in them
+// The frames the replay will write (a video's steps held for their time, otherwise one a step):
+// the progress counts them, and more than the budget is refused before anything is drawn.
+std::size_t frames_to_write(const Replayer& replayer, Chosen c, const ReplayResult& result,
+                            const ReplayOptions& options, const std::filesystem::path& out) {
+  std::size_t work = result.steps;
   if (result.kind == OutputKind::video) {
     work = 0;
-    for (std::size_t i = first; i <= last; ++i)
+    for (std::size_t i = c.first; i <= c.last; ++i)
       work += static_cast<std::size_t>(frames_for(replayer.steps()[i], options.fps, options.hold));
   }
   if (work > options.max_frames)
@@ -113,65 +113,107 @@ ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
         "{}: the replay needs {} frames ({} steps), more than the budget of {} (--max-frames); "
         "choose fewer steps (--steps A:B, --rows-per-step N, fewer triangles) or raise the budget",
         out.string(), work, result.steps, options.max_frames));
-  if (result.kind == OutputKind::html) {
-    HtmlPlayerOptions page;
-    page.source = options.source.empty() ? "the trace" : options.source;
-    page.fps = options.fps;
-    const HtmlPlayerResult h = write_html_player(replayer, first, last, out, page, progress);
-    result.format = h.format;
-    result.frames = h.steps;
-    result.bytes = h.bytes;
-    return result;
-  }
+  return work;
+}
+
+// SVG frames go to a directory or, one step, to an .svg file: not into a video or a page.
+void check_svg_output(const ReplayOptions& options, const ReplayResult& result,
+                      const std::filesystem::path& out) {
   if (options.frame_format == "svg" &&
       (result.kind == OutputKind::video || result.kind == OutputKind::html))
     throw std::invalid_argument(fmt::format(
         "{}: --format svg writes SVG frames to a directory (-o DIR/) or one step to OUT.svg",
         out.string()));
-  if (result.kind == OutputKind::svg) {
-    if (result.steps != 1)
-      throw std::invalid_argument(fmt::format(
-          "{}: an .svg file holds one step and the replay has {} (choose one with --steps N, or "
-          "write a directory: -o DIR/ --format svg)",
-          out.string(), result.steps));
-    write_file_atomically(out, to_svg(replayer.display_list(first)));
-    result.format = "svg";
-    result.frames = 1;
-    return result;
+  if (result.kind == OutputKind::svg && result.steps != 1)
+    throw std::invalid_argument(fmt::format(
+        "{}: an .svg file holds one step and the replay has {} (choose one with --steps N, or "
+        "write a directory: -o DIR/ --format svg)",
+        out.string(), result.steps));
+}
+
+void write_page(Replayer& replayer, Chosen c, const std::filesystem::path& out,
+                const ReplayOptions& options, Progress* progress, ReplayResult& result) {
+  HtmlPlayerOptions page;
+  page.source = options.source.empty() ? "the trace" : options.source;
+  page.fps = options.fps;
+  const HtmlPlayerResult h = write_html_player(replayer, c.first, c.last, out, page, progress);
+  result.format = h.format;
+  result.frames = h.steps;
+  result.bytes = h.bytes;
+}
+
+void write_svg_directory(Replayer& replayer, Chosen c, const std::filesystem::path& out,
+                         const ReplayOptions& options, std::size_t work, Progress* progress,
+                         ReplayResult& result) {
+  FrameDirectory dir(out, options.size, c.first + 1, "svg");
+  const TimeBudget budget(out, options.max_seconds);
+  for (std::size_t i = c.first; i <= c.last; ++i) {
+    check_interrupt();
+    dir.write_document(to_svg(replayer.display_list(i)));
+    if (progress) progress->update(dir.frames(), work);
+    budget.check(i - c.first + 1, result.steps);
   }
-  if (result.kind == OutputKind::frames && options.frame_format == "svg") {
-    FrameDirectory dir(out, options.size, first + 1, "svg");
-    const TimeBudget budget(out, options.max_seconds);
-    for (std::size_t i = first; i <= last; ++i) {
-      check_interrupt();
-      dir.write_document(to_svg(replayer.display_list(i)));
-      if (progress) progress->update(dir.frames(), work);
-      budget.check(i - first + 1, result.steps);
-    }
-    dir.commit();
-    if (progress) progress->finish();
-    result.format = dir.format();
-    result.frames = dir.frames();
-    return result;
-  }
+  dir.commit();
+  if (progress) progress->finish();
+  result.format = dir.format();
+  result.frames = dir.frames();
+}
+
+// A video, or PNG frames in a directory: the raster frames through a FrameSink.
+void write_raster(Replayer& replayer, Chosen c, const std::filesystem::path& out,
+                  const ReplayOptions& options, std::size_t work, Progress* progress,
+                  ReplayResult& result) {
   std::unique_ptr<FrameSink> sink;
   if (result.kind == OutputKind::video)
     sink = std::make_unique<VideoFile>(out, options.size, options.fps);
   else
-    sink = std::make_unique<FrameDirectory>(out, options.size, first + 1);
+    sink = std::make_unique<FrameDirectory>(out, options.size, c.first + 1);
   const TimeBudget budget(out, options.max_seconds);
-  for (std::size_t i = first; i <= last; ++i) {
+  for (std::size_t i = c.first; i <= c.last; ++i) {
     check_interrupt();  // a long video: Ctrl-C stops here and the sink removes its temporary
     const int repeat = frames_for(replayer.steps()[i], options.fps, options.hold);
     sink->write(replayer.frame(i), repeat);
     if (progress) progress->update(sink->frames(), work);
-    budget.check(i - first + 1, result.steps);  // steps drawn: a video's repeats cost little
+    budget.check(i - c.first + 1, result.steps);  // steps drawn: a video's repeats cost little
   }
   sink->commit();
   if (progress) progress->finish();
   result.format = sink->format();
   result.frames = sink->frames();
   result.seconds = result.kind == OutputKind::video ? result.frames / options.fps : 0;
+}
+
+}  // namespace
+
+ReplayResult replay(const trace::Trace& trace, const std::filesystem::path& out,
+                    const ReplayOptions& options, Progress* progress) {
+  validate(options);
+  Replayer replayer(trace, options.plan, options.size,
+                    options.source.empty() ? "the trace" : options.source);
+  replayer.mark_on_every_frame(options.marked_pixel);
+  const Chosen chosen = chosen_steps(replayer, options.steps);
+
+  ReplayResult result;
+  result.kind = output_kind(out);
+  result.steps_total = replayer.steps().size();
+  result.steps = chosen.last - chosen.first + 1;
+  result.mode = replayer.plan().mode;
+  result.rows_per_step = replayer.plan().rows_per_step;
+  const std::size_t work = frames_to_write(replayer, chosen, result, options, out);
+  if (result.kind == OutputKind::html) {
+    write_page(replayer, chosen, out, options, progress, result);
+    return result;
+  }
+  check_svg_output(options, result, out);
+  if (result.kind == OutputKind::svg) {
+    write_file_atomically(out, to_svg(replayer.display_list(chosen.first)));
+    result.format = "svg";
+    result.frames = 1;
+  } else if (result.kind == OutputKind::frames && options.frame_format == "svg") {
+    write_svg_directory(replayer, chosen, out, options, work, progress, result);
+  } else {
+    write_raster(replayer, chosen, out, options, work, progress, result);
+  }
   return result;
 }
 

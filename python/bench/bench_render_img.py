@@ -82,7 +82,7 @@ def main():
               f"of {args.rounds} rounds (numpy: {args.numpy_rounds}); {args.clock} time; load "
               f"average {os.getloadavg()[0]:.2f} on {os.cpu_count()} cores\n")
         print("| shading | C++ render | Python render_img (float64) | ratio (of medians / median "
-              "of ratios) | C++ float64 | render_img / it | Python render float32 | ratio | "
+              "of ratios) | C++ float64 (/ C++) | render_img / it | Python render float32 | ratio | "
               "pure numpy | speed-up of render_img |")
         print("|---|---|---|---|---|---|---|---|---|---|")
         for shading in ("f", "g"):
@@ -108,14 +108,16 @@ def time_shading(args, scene, arrays, size, shading):
     m = {k: statistics.median(x) * 1000 for k, x in
          (("cpp", cpp), ("cpp64", cpp64), ("py64", py64), ("py32", py32))}
     ratio = {k: statistics.median(p / q for p, q in zip(x, y)) for k, x, y in
-             (("py64", py64, cpp), ("py64/cpp64", py64, cpp64), ("py32", py32, cpp))}
+             (("py64", py64, cpp), ("py64/cpp64", py64, cpp64), ("cpp64", cpp64, cpp),
+              ("py32", py32, cpp))}
     naive_cells = "n/a | n/a"
     if naive:
         m["naive"] = statistics.median(naive) * 1000
         naive_cells = f"{m['naive']:.0f} ms | {m['naive'] / m['py64']:.0f}x"
     name = "flat" if shading == "f" else "gouraud"
     print(f"| {name} | {m['cpp']:.2f} ms | {m['py64']:.2f} ms | {m['py64'] / m['cpp']:.2f}x / "
-          f"{ratio['py64']:.2f}x | {m['cpp64']:.2f} ms | {ratio['py64/cpp64']:.2f}x | "
+          f"{ratio['py64']:.2f}x | {m['cpp64']:.2f} ms ({ratio['cpp64']:.2f}x) | "
+          f"{ratio['py64/cpp64']:.2f}x | "
           f"{m['py32']:.2f} ms | {m['py32'] / m['cpp']:.2f}x / {ratio['py32']:.2f}x | "
           f"{naive_cells} |")
     note = f"np.ones(({size}, {size}, 3)) alone, the float64 image's allocation and clear: " \

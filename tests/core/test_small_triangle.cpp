@@ -146,6 +146,76 @@ TEST_CASE("small triangles: the set-up refuses what the kernel cannot do exactly
   CHECK_FALSE(setup({Vec2{10, 10}, Vec2{20, 12}, Vec2{12, 30}}, 512, RowBand{40, 80}));
 }
 
+namespace {
+
+// A batch of random faces: sizes from under a pixel to 40, one in 16 with zero area, one in 16
+// with a coordinate out of range (huge, NaN or infinite), one in 16 whose box reaches far off
+// the canvas; colours partly outside [0, 1] and now and then NaN.
+struct RandomBatch {
+  TriangleBatch in{};
+  std::array<std::array<Vec2, 3>, kTriangleBatch> v;
+  std::array<std::array<Color, 3>, kTriangleBatch> c;
+};
+
+RandomBatch random_batch(sttest::Rng& rng) {
+  RandomBatch r;
+  for (int k = 0; k < kTriangleBatch; ++k) {
+    const double size = std::array{0.7, 3.0, 9.0, 24.0, 40.0}[rng.next() % 5];
+    r.v[k] = random_triangle(rng, size);
+    switch (rng.next() % 16) {
+      case 0:
+        r.v[k][2] = r.v[k][0];  // zero area
+        break;
+      case 1:
+        r.v[k][1].x = std::array<double, 4>{1e10, -2e9, std::nan(""), HUGE_VAL}[rng.next() % 4];
+        break;
+      case 2:
+        r.v[k][0] = {r.v[k][0].x - 3000, r.v[k][0].y};  // a large box reaching the canvas
+        break;
+      default:
+        break;
+    }
+    for (Color& col : r.c[k])
+      col = {rng.uniform(-0.2, 1.2), rng.uniform(0, 1),
+             rng.next() % 50 == 0 ? std::nan("") : rng.uniform(0, 1)};
+    for (int i = 0; i < 3; ++i) {
+      r.in.x[i][k] = r.v[k][i].x, r.in.y[i][k] = r.v[k][i].y;
+      r.in.r[i][k] = r.c[k][i].r, r.in.g[i][k] = r.c[k][i].g, r.in.b[i][k] = r.c[k][i].b;
+    }
+  }
+  return r;
+}
+
+struct DecisionTally {
+  int taken = 0, declined = 0, culled = 0, degenerate = 0, out_of_range = 0;
+};
+
+// The scalar decision for one face, step by step in fill_polygon's order; when it takes the face,
+// its snapped vertices and small_triangle's set-up are in p and t.
+bool scalar_takes(const std::array<Vec2, 3>& v, const SubpixelGrid& grid, const BatchTarget& target,
+                  std::array<FixedPoint, 3>& p, SmallTriangle& t, DecisionTally& tally) {
+  if (!std::all_of(v.begin(), v.end(), SubpixelGrid::representable)) {
+    ++tally.out_of_range;
+    return false;
+  }
+  for (int i = 0; i < 3; ++i) p[i] = grid.snap(v[i]);
+  const i128 area2 = static_cast<i128>(p[1].x - p[0].x) * (p[2].y - p[0].y) -
+                     static_cast<i128>(p[2].x - p[0].x) * (p[1].y - p[0].y);
+  if (area2 == 0) {
+    ++tally.degenerate;
+    return false;
+  }
+  if (target.cull != Cull::none && (target.cull == Cull::back ? area2 > 0 : area2 < 0)) {
+    ++tally.culled;
+    return false;
+  }
+  const GridBox box = grid_box(p, grid, FillRule::top_left);
+  return covers_pixels(box, W, target.band) == SkipReason::none &&
+         small_triangle(p, box, area2 > 0, grid, W, target.band, t);
+}
+
+}  // namespace
+
 // The batched set-up (src/small_triangle_batch.hpp) against the scalar one it stands in for, face
 // by face: the same decision (fill_polygon's checks in its order: representable, a non-zero area,
 // not culled, a pixel of the canvas and band, small_triangle's limits), and for a face it takes
@@ -157,7 +227,7 @@ TEST_CASE("small triangles: the batched set-up is the scalar one, on every SIMD 
   for (const auto& kernel : kernels) {
     INFO("Highway target " << kernel.target);
     sttest::Rng rng(20261126);
-    int taken = 0, declined = 0, culled = 0, degenerate = 0, out_of_range = 0;
+    DecisionTally tally;
     std::vector<int> order;
     for (int batch = 0; batch < 4000; ++batch) {
       const int bits = std::array{0, 4, 8, 12}[batch % 4];
@@ -167,78 +237,37 @@ TEST_CASE("small triangles: the batched set-up is the scalar one, on every SIMD 
       const RowBand band = batch % 3 == 0 ? RowBand{0, H} : RowBand{std::min(a, b), std::max(a, b)};
       const Cull cull = std::array{Cull::none, Cull::back, Cull::front}[(batch / 4) % 3];
       const BatchTarget target{bits, W, band, cull};
-      TriangleBatch in{};
-      std::array<std::array<Vec2, 3>, kTriangleBatch> v;
-      std::array<std::array<Color, 3>, kTriangleBatch> c;
-      for (int k = 0; k < kTriangleBatch; ++k) {
-        const double size = std::array{0.7, 3.0, 9.0, 24.0, 40.0}[rng.next() % 5];
-        v[k] = random_triangle(rng, size);
-        switch (rng.next() % 16) {
-          case 0:
-            v[k][2] = v[k][0];  // zero area
-            break;
-          case 1:
-            v[k][1].x = std::array<double, 4>{1e10, -2e9, std::nan(""), HUGE_VAL}[rng.next() % 4];
-            break;
-          case 2:
-            v[k][0] = {v[k][0].x - 3000, v[k][0].y};  // a large box reaching the canvas
-            break;
-          default:
-            break;
-        }
-        for (Color& col : c[k])
-          col = {rng.uniform(-0.2, 1.2), rng.uniform(0, 1),
-                 rng.next() % 50 == 0 ? std::nan("") : rng.uniform(0, 1)};
-        for (int i = 0; i < 3; ++i) {
-          in.x[i][k] = v[k][i].x, in.y[i][k] = v[k][i].y;
-          in.r[i][k] = c[k][i].r, in.g[i][k] = c[k][i].g, in.b[i][k] = c[k][i].b;
-        }
-      }
+      const RandomBatch faces = random_batch(rng);
       BatchSetup out;
-      kernel.function(in, target, out);
+      kernel.function(faces.in, target, out);
       for (int k = 0; k < kTriangleBatch; ++k) {
-        INFO("batch " << batch << " face " << k << " (" << v[k][0].x << "," << v[k][0].y << ") ("
-                      << v[k][1].x << "," << v[k][1].y << ") (" << v[k][2].x << "," << v[k][2].y
+        const auto& v = faces.v[k];
+        INFO("batch " << batch << " face " << k << " (" << v[0].x << "," << v[0].y << ") ("
+                      << v[1].x << "," << v[1].y << ") (" << v[2].x << "," << v[2].y
                       << "), grid bits " << bits);
-        // The scalar decision, step by step.
-        bool small = std::all_of(v[k].begin(), v[k].end(), SubpixelGrid::representable);
-        if (!small) ++out_of_range;
         std::array<FixedPoint, 3> p{};
         SmallTriangle t;
-        if (small) {
-          for (int i = 0; i < 3; ++i) p[i] = grid.snap(v[k][i]);
-          const i128 area2 = static_cast<i128>(p[1].x - p[0].x) * (p[2].y - p[0].y) -
-                             static_cast<i128>(p[2].x - p[0].x) * (p[1].y - p[0].y);
-          if (area2 == 0) {
-            small = false, ++degenerate;
-          } else if (cull != Cull::none && (cull == Cull::back ? area2 > 0 : area2 < 0)) {
-            small = false, ++culled;
-          } else {
-            const GridBox box = grid_box(p, grid, FillRule::top_left);
-            small = covers_pixels(box, W, band) == SkipReason::none &&
-                    small_triangle(p, box, area2 > 0, grid, W, band, t);
-          }
-        }
+        const bool small = scalar_takes(v, grid, target, p, t, tally);
         REQUIRE((out.small[k] != 0) == small);
         if (!small) {
-          ++declined;
+          ++tally.declined;
           continue;
         }
-        ++taken;
+        ++tally.taken;
         CHECK(out.triangle(k) == t);
-        const Color want = flat_color(p, c[k], order), flat = out.flat(k);
+        const Color want = flat_color(p, faces.c[k], order), flat = out.flat(k);
         for (const auto& [w, g] : {std::pair{want.r, flat.r}, {want.g, flat.g}, {want.b, flat.b}})
           CHECK(std::bit_cast<std::uint64_t>(w) == std::bit_cast<std::uint64_t>(g));
       }
     }
-    UNSCOPED_INFO("taken " << taken << ", declined " << declined << " (culled " << culled
-                           << ", zero area " << degenerate << ", out of range " << out_of_range
-                           << ")");
-    CHECK(taken > 4000);
-    CHECK(declined > 8000);
-    CHECK(culled > 1000);
-    CHECK(degenerate > 1000);
-    CHECK(out_of_range > 1000);
+    UNSCOPED_INFO("taken " << tally.taken << ", declined " << tally.declined << " (culled "
+                           << tally.culled << ", zero area " << tally.degenerate
+                           << ", out of range " << tally.out_of_range << ")");
+    CHECK(tally.taken > 4000);
+    CHECK(tally.declined > 8000);
+    CHECK(tally.culled > 1000);
+    CHECK(tally.degenerate > 1000);
+    CHECK(tally.out_of_range > 1000);
   }
 }
 

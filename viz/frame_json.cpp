@@ -196,6 +196,11 @@ const char* frame_canvas_script() {
     // putImageData ignores the context's transform: an RGBA block goes through it only on an
     // untransformed context (the explorer's), else through a canvas of its own and drawImage.
     const untransformed = ctx.getTransform().isIdentity;
+    // Text ops from bitmaps kept between frames (scantraceTextBitmaps, below) where the context
+    // draws in its canvas's pixels; elsewhere (a scaled page) stroked as they come.
+    const text = untransformed
+      ? (drawScantraceFrame.text || (drawScantraceFrame.text = scantraceTextBitmaps())).frame(frame)
+      : null;
     // One save for the frame (the caller's context comes back as it was), and one more only
     // around an op with a clip: every op sets the colours and widths it draws with, and a save
     // and restore for each of a step frame's ~800 ops was a fifth of drawing it in Chromium.
@@ -255,21 +260,12 @@ const char* frame_canvas_script() {
           for (let i = 2; i < s.length; i += 2) ctx.lineTo(s[i] + 0.5, s[i + 1] + 0.5);
         }
         ctx.stroke();
+      } else if (kind === 'G' && text) {
+        text.draw(ctx, op);
       } else if (kind === 'G') {
-        // Glyphs placed from the frame's table: each stroke point is the glyph's origin plus its
-        // point in the table (what the strokes of a 'T' op hold, summed here).
-        const c = op[4], t = op[5], placed = op[6];
-        ctx.strokeStyle = c;
-        ctx.lineWidth = t;
-        ctx.beginPath();
-        for (let g = 0; g < placed.length; g += 3) {
-          const x = placed[g + 1] + 0.5, y = placed[g + 2] + 0.5;
-          for (const s of frame.glyphs[placed[g]]) {
-            ctx.moveTo(x + s[0], y + s[1]);
-            for (let i = 2; i < s.length; i += 2) ctx.lineTo(x + s[i], y + s[i + 1]);
-          }
-        }
-        ctx.stroke();
+        ctx.strokeStyle = op[4];
+        ctx.lineWidth = op[5];
+        scantraceStrokeGlyphs(ctx, frame.glyphs, op[6], 0.5, 0.5);
       } else if (kind === 'P' && typeof op[7] === 'string') {
         ctx.imageSmoothingEnabled = false;
         ctx.drawImage(images[k++], op[3], op[4]);
@@ -321,6 +317,148 @@ const char* frame_canvas_script() {
     return Promise.resolve();
   }
   return Promise.all(blocks).then(draw);
+}
+
+// A "G" op's glyphs as one path, stroked with the context's colour and width: each stroke point
+// is its glyph's origin plus (ox, oy) plus its point in the frame's table.
+function scantraceStrokeGlyphs(ctx, glyphs, placed, ox, oy) {
+  ctx.beginPath();
+  for (let g = 0; g < placed.length; g += 3) {
+    const x = placed[g + 1] + ox, y = placed[g + 2] + oy;
+    for (const s of glyphs[placed[g]]) {
+      ctx.moveTo(x + s[0], y + s[1]);
+      for (let i = 2; i < s.length; i += 2) ctx.lineTo(x + s[i], y + s[i + 1]);
+    }
+  }
+  ctx.stroke();
+}
+
+// Text ops ("G") drawn from bitmaps kept between frames (docs/design.md §6, "Text"). Stroking a
+// step frame's 1,456 glyphs (27,550 points) was two thirds of drawing it in Chromium's software
+// raster, and a mouse move of the explorer's drag leaves most labels as they were. Each op is
+// stroked once, as one path as above, onto a canvas of its own at the op's phase (the fraction
+// of a pixel of its first glyph's origin), then put on the frame with drawImage at whole pixels.
+// Keyed by everything that decides its pixels: the colour, the width, the phase, and each glyph's
+// strokes and offset from the first glyph, compared exactly (a hash only finds the candidates),
+// so a frame of another size, scale or colour never takes another's bitmap. Bounded: at most
+// `limit` bitmaps of `maxArea` pixels in all, the least recently drawn dropped first. (Per-glyph
+// bitmaps measured slower: a drawImage per glyph cost more than its strokes.)
+function scantraceTextBitmaps(limit = 512, maxArea = 1 << 22) {
+  const mix = (h, v) => {
+    h = Math.imul(h ^ ((v * 4096) | 0), 0x85ebca6b);
+    return h ^ (h >>> 13);
+  };
+  const same = (a, b) => a.length === b.length && a.every((v, i) => v === b[i]);
+  const glyphs = new Map(); // hash of its strokes -> [{strokes, id, box}]
+  const ops = new Map(); // hash of the key -> [bitmap]
+  const recent = new Set(); // bitmaps, least recently drawn first
+  const spare = []; // canvases of dropped bitmaps, reused
+  const stats = { hits: 0, misses: 0, bitmaps: 0, area: 0, glyphs: 0 };
+  let nextGlyph = 0;
+
+  // The registry's glyph with these strokes: ids are never reused, so a key made before the
+  // registry was emptied cannot match a bitmap made after.
+  function glyph(strokes) {
+    let h = strokes.length;
+    for (const s of strokes) {
+      h = mix(h, s.length);
+      for (let i = 0; i < s.length; ++i) h = mix(h, s[i]);
+    }
+    const bucket = glyphs.get(h) || [];
+    for (const g of bucket) if (g.strokes.length === strokes.length && g.strokes.every((s, i) => same(s, strokes[i]))) return g;
+    if (stats.glyphs >= 4 * limit) {
+      glyphs.clear();
+      stats.glyphs = 0;
+    }
+    const box = [Infinity, Infinity, -Infinity, -Infinity];
+    for (const s of strokes)
+      for (let i = 0; i < s.length; i += 2) {
+        box[0] = Math.min(box[0], s[i]);
+        box[1] = Math.min(box[1], s[i + 1]);
+        box[2] = Math.max(box[2], s[i]);
+        box[3] = Math.max(box[3], s[i + 1]);
+      }
+    const g = { strokes, id: nextGlyph++, box };
+    bucket.push(g);
+    glyphs.set(h, bucket);
+    ++stats.glyphs;
+    return g;
+  }
+
+  function drop(b) {
+    recent.delete(b);
+    const bucket = ops.get(b.hash);
+    bucket.splice(bucket.indexOf(b), 1);
+    if (!bucket.length) ops.delete(b.hash);
+    if (!b.image) return;
+    stats.area -= b.image.canvas.width * b.image.canvas.height;
+    if (spare.length < 16) spare.push(b.image.canvas);
+  }
+
+  // The op's glyphs stroked onto a canvas of their box, at phase (fx, fy); null for no strokes.
+  function bitmap(frame, op, fx, fy, used) {
+    const [, , , , colour, t, placed] = op;
+    const box = [Infinity, Infinity, -Infinity, -Infinity];
+    for (let k = 0, j = 0; k < placed.length; k += 3, ++j) {
+      const dx = placed[k + 1] - placed[1], dy = placed[k + 2] - placed[2], b = used[j].box;
+      box[0] = Math.min(box[0], dx + b[0]);
+      box[1] = Math.min(box[1], dy + b[1]);
+      box[2] = Math.max(box[2], dx + b[2]);
+      box[3] = Math.max(box[3], dy + b[3]);
+    }
+    if (!(box[0] <= box[2])) return null;
+    const pad = Math.ceil(t / 2) + 2, left = Math.floor(box[0]) - pad, top = Math.floor(box[1]) - pad;
+    const canvas = spare.pop() || document.createElement('canvas');
+    canvas.width = Math.ceil(box[2]) + pad + 1 - left; // clears it, and its context's state
+    canvas.height = Math.ceil(box[3]) + pad + 1 - top;
+    const g = canvas.getContext('2d');
+    g.strokeStyle = colour;
+    g.lineWidth = t;
+    g.lineCap = 'round';
+    g.lineJoin = 'round';
+    scantraceStrokeGlyphs(g, frame.glyphs, placed, fx - left - placed[1], fy - top - placed[2]);
+    stats.area += canvas.width * canvas.height;
+    return { canvas, left, top };
+  }
+
+  // What a frame's ops draw with: draw(ctx, op) puts a "G" op's bitmap, made if missing.
+  function frame(f) {
+    const seen = []; // the frame's glyph ids -> the registry's glyphs
+    return {
+      draw(ctx, op) {
+        const colour = op[4], t = op[5], placed = op[6];
+        if (!placed.length) return;
+        const x = placed[1] + 0.5, y = placed[2] + 0.5, ix = Math.floor(x), iy = Math.floor(y);
+        const key = [t, x - ix, y - iy], used = [];
+        let h = mix(mix(mix(placed.length, t), x - ix), y - iy);
+        for (let k = 0; k < placed.length; k += 3) {
+          const g = seen[placed[k]] || (seen[placed[k]] = glyph(f.glyphs[placed[k]]));
+          used.push(g);
+          key.push(g.id, placed[k + 1] - placed[1], placed[k + 2] - placed[2]);
+          h = mix(mix(mix(h, g.id), placed[k + 1] - placed[1]), placed[k + 2] - placed[2]);
+        }
+        const bucket = ops.get(h) || [];
+        let b = bucket.find((e) => e.colour === colour && same(e.key, key));
+        if (b) {
+          ++stats.hits;
+          recent.delete(b);
+        } else {
+          ++stats.misses;
+          b = { hash: h, colour, key, image: bitmap(f, op, x - ix, y - iy, used) };
+          bucket.push(b);
+          ops.set(h, bucket);
+        }
+        recent.add(b);
+        if (b.image) ctx.drawImage(b.image.canvas, ix + b.image.left, iy + b.image.top);
+        for (const old of recent) {
+          if (recent.size <= limit && stats.area <= maxArea) break;
+          if (old !== b) drop(old);
+        }
+        stats.bitmaps = recent.size;
+      },
+    };
+  }
+  return { frame, stats: () => ({ ...stats }) };
 }
 )JS";
 }

@@ -1,7 +1,9 @@
 #include "viz/frame_json.hpp"
 
 #include <cstdio>
+#include <initializer_list>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include <spdlog/fmt/fmt.h>
@@ -38,6 +40,13 @@ void put_all(std::string& out, const Parts&... parts) {
 void put_points(std::string& out, const std::vector<Point2d>& stroke) {
   for (std::size_t i = 0; i < stroke.size(); ++i)
     put_all(out, i ? "," : "", number(stroke[i].x), ',', number(stroke[i].y));
+}
+
+// A block of one pixel (a grid's centre dot) is written as a filled rectangle, not an image.
+std::optional<RectOp> as_rect(const PixelsOp& p) {
+  if (p.area.area() != 1) return std::nullopt;
+  const Vec3b& c = p.bgr->front();
+  return RectOp{p.area, Scalar(c[0], c[1], c[2]), FILLED};
 }
 
 struct Writer {
@@ -90,9 +99,8 @@ struct Writer {
     out += ']';
   }
   void operator()(const PixelsOp& p) const {
-    if (p.area.area() == 1) {  // a grid's centre dot: a filled rectangle, not an image
-      const Vec3b& c = p.bgr->front();
-      (*this)(RectOp{p.area, Scalar(c[0], c[1], c[2]), FILLED});
+    if (const auto dot = as_rect(p)) {
+      (*this)(*dot);
       return;
     }
     put_all(out, "\"P\",", p.area.x, ',', p.area.y, ',', p.area.width, ',', p.area.height, ',');
@@ -123,6 +131,11 @@ const std::string& glyph_strokes_json(const GlyphTable::Glyph& g) {
   return at->second;
 }
 
+void put_mark(std::string& out, const Mark& m) {
+  put_all(out, "{\"kind\":\"", to_string(m.kind), "\",\"what\":", json_string(m.what), ",\"box\":",
+          box(m.box), ",\"layer\":", m.layer, '}');
+}
+
 // One op appended to `out`, its text's glyphs (glyph_table) interned in `glyphs`; `b` is scratch
 // space for its body (a frame's ops reuse one: a string per op was a sixth of the JSON's time).
 void op_json(std::string& out, const DrawOp& op, TextForm text, GlyphTable* glyphs,
@@ -137,12 +150,85 @@ void op_json(std::string& out, const DrawOp& op, TextForm text, GlyphTable* glyp
   out += op.clip ? box(*op.clip) : "null";
   out += ',';
   if (op.mark)
-    put_all(out, "{\"kind\":\"", to_string(op.mark->kind), "\",\"what\":", json_string(op.mark->what),
-            ",\"box\":", box(op.mark->box), ",\"layer\":", op.mark->layer, '}');
+    put_mark(out, *op.mark);
   else
     out += "null";
   out.append(b, comma);
   out += ']';
+}
+
+// The strings of a frame's numbers (to_numbers): each once, by index, as a JSON array.
+class StringTable {
+ public:
+  // Appends to `json` (an empty string): assigning a literal drew GCC 12's -Wrestrict false
+  // positive here.
+  explicit StringTable(std::string& json) : json_(json) { json_ += '['; }
+  double operator()(const std::string& s) {
+    const auto [at, added] = index_.try_emplace(s, static_cast<int>(index_.size()));
+    if (added) put_all(json_, at->second ? "," : "", json_string(s));
+    return at->second;
+  }
+  void close() { json_ += ']'; }
+
+ private:
+  std::string& json_;
+  std::map<std::string, int> index_;
+};
+
+// Each op's arguments as the JSON writes them (Writer, glyph_table form), as numbers: the JSON's
+// numbers as a reader of its text gets them (number_value), strings by their index.
+struct NumberWriter {
+  std::vector<double>& out;
+  StringTable& strings;
+  GlyphTable& glyphs;
+  const NumberBlockWriter& block;
+  void put(std::initializer_list<double> values) const { out.insert(out.end(), values); }
+  void operator()(const RectOp& r) const {
+    put({double(r.rect.x), double(r.rect.y), double(r.rect.width), double(r.rect.height),
+         strings(hex_colour(r.colour)), double(r.thickness)});
+  }
+  void operator()(const LineOp& l) const {
+    const double s = 1.0 / (1 << l.shift);
+    put({frame_text::number_value(l.a.x * s), frame_text::number_value(l.a.y * s),
+         frame_text::number_value(l.b.x * s), frame_text::number_value(l.b.y * s),
+         strings(hex_colour(l.colour)), double(l.thickness)});
+  }
+  void operator()(const CircleOp& c) const {
+    put({double(c.centre.x), double(c.centre.y), double(c.radius), strings(hex_colour(c.colour)),
+         double(c.thickness)});
+  }
+  void operator()(const TextOp& t) const {
+    const std::vector<PlacedGlyph> placed = hershey_layout(t.text, t.font, t.scale, t.origin);
+    put({strings(t.text), strings(hex_colour(t.colour)), double(t.thickness), double(placed.size())});
+    const double s = hershey_scale(t.scale);
+    for (const PlacedGlyph& g : placed)
+      put({double(glyphs.id(g.c, t.font, s)), frame_text::number_value(g.origin.x),
+           frame_text::number_value(g.origin.y)});
+  }
+  void operator()(const PixelsOp& p) const {
+    if (const auto dot = as_rect(p)) return (*this)(*dot);
+    put({double(p.area.x), double(p.area.y), double(p.area.width), double(p.area.height)});
+    block(p, out);
+  }
+};
+
+// A glyph's strokes as to_numbers writes them (stroke count, then each stroke's count of numbers
+// and its numbers), kept per thread as glyph_strokes_json keeps its text.
+const std::vector<double>& glyph_strokes_numbers(const GlyphTable::Glyph& g) {
+  thread_local std::map<std::tuple<unsigned char, int, double>, std::vector<double>> written;
+  auto [at, added] = written.try_emplace({g.c, static_cast<int>(g.font), g.scale});
+  if (added) {
+    const auto strokes = hershey_glyph_strokes(g.c, g.font, g.scale);
+    at->second.push_back(static_cast<double>(strokes.size()));
+    for (const auto& stroke : strokes) {
+      at->second.push_back(2.0 * static_cast<double>(stroke.size()));
+      for (const Point2d& p : stroke) {
+        at->second.push_back(frame_text::number_value(p.x));
+        at->second.push_back(frame_text::number_value(p.y));
+      }
+    }
+  }
+  return at->second;
 }
 
 }  // namespace
@@ -176,6 +262,41 @@ std::string to_json(const Frame& frame, TextForm text, const BlockWriter& block)
   }
   out += "}\n";
   return out;
+}
+
+NumberFrame to_numbers(const Frame& frame, const NumberBlockWriter& block) {
+  NumberFrame f;
+  StringTable strings(f.strings);
+  GlyphTable glyphs;
+  std::vector<double>& v = f.numbers;
+  v.push_back(static_cast<double>(frame.ops().size()));
+  f.marks += '[';
+  double marks = 0;
+  for (const DrawOp& op : frame.ops()) {
+    const auto* pixels = std::get_if<PixelsOp>(&op.body);
+    v.push_back(pixels && as_rect(*pixels) ? 0.0 : static_cast<double>(op.body.index()));
+    if (op.clip)
+      v.insert(v.end(), {1.0, double(op.clip->x), double(op.clip->y), double(op.clip->width),
+                         double(op.clip->height)});
+    else
+      v.push_back(0);
+    if (op.mark) {
+      if (marks > 0) f.marks += ',';
+      put_mark(f.marks, *op.mark);
+      v.push_back(marks++);
+    } else {
+      v.push_back(-1);
+    }
+    std::visit(NumberWriter{v, strings, glyphs, block}, op.body);
+  }
+  f.marks += ']';
+  strings.close();
+  v.push_back(static_cast<double>(glyphs.glyphs().size()));
+  for (const GlyphTable::Glyph& g : glyphs.glyphs()) {
+    const std::vector<double>& strokes = glyph_strokes_numbers(g);
+    v.insert(v.end(), strokes.begin(), strokes.end());
+  }
+  return f;
 }
 
 const char* frame_canvas_script() {

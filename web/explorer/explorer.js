@@ -104,11 +104,12 @@ export async function start(st) {
   }
 
   // The plan of steps and the current step's frame from one call (one plan), the frame's pixel
-  // blocks as bytes: nothing waits for an image to load.
+  // blocks as bytes: nothing waits for an image to load. The frame handed over as numbers, not
+  // JSON (writing its numbers as text and parsing them back was a fifth of a drag's move).
   let shownFrame = null;
   function composeStep() {
     const source = s.mode === 'scene' ? scene.name : `the explorer\u2019s ${s.mode}`;
-    const options = { count: 1, source, blocks: 'rgba', ...frameSize() };
+    const options = { count: 1, source, blocks: 'rgba', encoding: 'binary', ...frameSize() };
     let r = st.frames(null, { ...options, first: s.step });
     plan = r.steps;
     if (s.step >= plan.length && plan.length) {

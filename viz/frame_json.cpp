@@ -464,7 +464,7 @@ function scantraceStrokeGlyphs(ctx, glyphs, placed, ox, oy) {
 // so a frame of another size, scale or colour never takes another's bitmap. Bounded: at most
 // `limit` bitmaps of `maxArea` pixels in all, the least recently drawn dropped first. (Per-glyph
 // bitmaps measured slower: a drawImage per glyph cost more than its strokes.)
-function scantraceTextBitmaps(limit = 512, maxArea = 1 << 22) {
+function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
   const mix = (h, v) => {
     h = Math.imul(h ^ ((v * 4096) | 0), 0x85ebca6b);
     return h ^ (h >>> 13);
@@ -473,8 +473,8 @@ function scantraceTextBitmaps(limit = 512, maxArea = 1 << 22) {
   const glyphs = new Map(); // hash of its strokes -> [{strokes, id, box}]
   const ops = new Map(); // hash of the key -> [bitmap]
   const recent = new Set(); // bitmaps, least recently drawn first
-  const spare = []; // canvases of dropped bitmaps, reused
-  const stats = { hits: 0, misses: 0, bitmaps: 0, area: 0, glyphs: 0 };
+  const spare = new Map(); // width * 65536 + height -> canvases of dropped bitmaps, reused
+  const stats = { hits: 0, misses: 0, bitmaps: 0, area: 0, glyphs: 0, spare: 0 };
   let nextGlyph = 0;
 
   // The registry's glyph with these strokes: ids are never reused, so a key made before the
@@ -512,8 +512,31 @@ function scantraceTextBitmaps(limit = 512, maxArea = 1 << 22) {
     bucket.splice(bucket.indexOf(b), 1);
     if (!bucket.length) ops.delete(b.hash);
     if (!b.image) return;
-    stats.area -= b.image.canvas.width * b.image.canvas.height;
-    if (spare.length < 16) spare.push(b.image.canvas);
+    const { canvas } = b.image, size = canvas.width * 65536 + canvas.height;
+    stats.area -= canvas.width * canvas.height;
+    if (stats.spare >= 64) return;
+    if (!spare.has(size)) spare.set(size, []);
+    spare.get(size).push(canvas);
+    ++stats.spare;
+  }
+
+  // A cleared canvas of at least w x h pixels: sizes rounded up to 32 x 8, and a dropped bitmap's
+  // canvas of the size taken again. A new canvas, or a canvas resized, for each bitmap made cost
+  // more than its strokes (Chromium allocates its pixels anew: 1.7-3.5 ms for a drag move's 15
+  // changed labels, against 0.2-0.5 reusing canvases).
+  function blank(w, h) {
+    const width = Math.ceil(w / 32) * 32, height = Math.ceil(h / 8) * 8;
+    const pool = spare.get(width * 65536 + height);
+    if (pool && pool.length) {
+      --stats.spare;
+      const canvas = pool.pop();
+      canvas.getContext('2d').clearRect(0, 0, width, height);
+      return canvas;
+    }
+    const canvas = document.createElement('canvas');
+    canvas.width = width;
+    canvas.height = height;
+    return canvas;
   }
 
   // The op's glyphs stroked onto a canvas of their box, at phase (fx, fy); null for no strokes.
@@ -529,17 +552,15 @@ function scantraceTextBitmaps(limit = 512, maxArea = 1 << 22) {
     }
     if (!(box[0] <= box[2])) return null;
     const pad = Math.ceil(t / 2) + 2, left = Math.floor(box[0]) - pad, top = Math.floor(box[1]) - pad;
-    const canvas = spare.pop() || document.createElement('canvas');
-    canvas.width = Math.ceil(box[2]) + pad + 1 - left; // clears it, and its context's state
-    canvas.height = Math.ceil(box[3]) + pad + 1 - top;
-    const g = canvas.getContext('2d');
+    const width = Math.ceil(box[2]) + pad + 1 - left, height = Math.ceil(box[3]) + pad + 1 - top;
+    const canvas = blank(width, height), g = canvas.getContext('2d');
     g.strokeStyle = colour;
     g.lineWidth = t;
     g.lineCap = 'round';
     g.lineJoin = 'round';
     scantraceStrokeGlyphs(g, frame.glyphs, placed, fx - left - placed[1], fy - top - placed[2]);
     stats.area += canvas.width * canvas.height;
-    return { canvas, left, top };
+    return { canvas, left, top, width, height };
   }
 
   // What a frame's ops draw with: draw(ctx, op) puts a "G" op's bitmap, made if missing.
@@ -570,7 +591,8 @@ function scantraceTextBitmaps(limit = 512, maxArea = 1 << 22) {
           ops.set(h, bucket);
         }
         recent.add(b);
-        if (b.image) ctx.drawImage(b.image.canvas, ix + b.image.left, iy + b.image.top);
+        const m = b.image;
+        if (m) ctx.drawImage(m.canvas, 0, 0, m.width, m.height, ix + m.left, iy + m.top, m.width, m.height);
         for (const old of recent) {
           if (recent.size <= limit && stats.area <= maxArea) break;
           if (old !== b) drop(old);

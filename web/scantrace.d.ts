@@ -126,7 +126,9 @@ export class ScantraceError extends Error {
 
 export class Scantrace {
   render(scene: SceneInput, options?: FillOptions): Rendered;
-  traceText(input: TraceInput, options?: TraceOptions): string;
+  /** into: with options.keep, an ImageData (or Uint8ClampedArray) that takes the kept image's
+   * RGBA bytes when it has their size, and is then lastTraceImage.rgba (no new array a call). */
+  traceText(input: TraceInput, options?: TraceOptions, into?: ImageData | Uint8ClampedArray | null): string;
   trace(input: TraceInput, options?: TraceOptions): TraceEvent[];
   /** trace null: the trace kept by the last traceText/trace call with keep: true. */
   frames(trace: string | TraceEvent[] | null, options?: FrameOptions): { steps: FrameStep[]; frames: CanvasFrame[] };

@@ -159,6 +159,23 @@ check('kept trace and its frames with RGBA blocks', () => {
     assert.ok(blocks > 0, `step ${step} has no pixel block`);
   }
 });
+// traceText's `into`: the kept image copied into the caller's array when it has the image's size
+// (then lastTraceImage's rgba), a new array otherwise.
+check("a kept trace's image copied into the caller's array", () => {
+  const input = { triangle: [[20, 20], [250, 80], [299.5, 371.25]], width: 200, height: 150 };
+  st.traceText(input, { keep: true, text: false });
+  const want = st.lastTraceImage.rgba.slice();
+  const into = new Uint8ClampedArray(200 * 150 * 4).fill(7);
+  st.traceText({ triangle: [[1, 1], [2, 1], [1, 2]], width: 200, height: 150 }, { keep: true, text: false }); // another image first
+  st.traceText(input, { keep: true, text: false }, into);
+  assert.equal(st.lastTraceImage.rgba, into);
+  assert.ok(Buffer.from(into).equals(Buffer.from(want)), 'the array given holds another image');
+  const small = new Uint8ClampedArray(16).fill(7);
+  st.traceText(input, { keep: true, text: false }, small);
+  assert.notEqual(st.lastTraceImage.rgba, small);
+  assert.ok(Buffer.from(st.lastTraceImage.rgba).equals(Buffer.from(want)) && small.every((v) => v === 7));
+});
+
 // The explorer's frames come as numbers (encoding: 'binary': viz::to_numbers, read back by
 // scantrace.mjs's numbersFrame): every step's frame must be the frame JSON.parse gives of its
 // JSON, the same ops, strings, marks, clips and numbers (lists as Float64Arrays, compared as

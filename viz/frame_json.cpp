@@ -330,8 +330,14 @@ const char* frame_canvas_script() {
     ctx.fillRect(0, 0, frame.w, frame.h);
     ctx.lineCap = 'round';
     ctx.lineJoin = 'round';
-    for (const op of frame.ops) {
-      const [kind, clip] = op;
+    const ops = frame.ops;
+    // A run of filled rectangles of one colour (a step frame's 518 are in 40 runs, most of them
+    // a grid's centre dots) as one path where the context draws in whole pixels: rectangles on
+    // whole pixels cover the same pixels filled together or one by one (a rectangle a call was
+    // 0.7 ms of a frame, recorded and rasterised).
+    const sameFill = (o, c) => o && o[0] === 'R' && !o[1] && o[8] < 0 && o[7] === c;
+    for (let n = 0; n < ops.length; ++n) {
+      const op = ops[n], [kind, clip] = op;
       // The op's arguments from index 3 (a copy of them per op, op.slice(3), was a tenth of
       // drawing a step frame's ~800 ops).
       if (clip) {
@@ -343,7 +349,13 @@ const char* frame_canvas_script() {
       }
       if (kind === 'R') {
         const x = op[3], y = op[4], w = op[5], h = op[6], c = op[7], t = op[8];
-        if (t < 0) {
+        if (t < 0 && untransformed && !clip && sameFill(ops[n + 1], c)) {
+          ctx.fillStyle = c;
+          ctx.beginPath();
+          ctx.rect(x, y, w, h);
+          for (let o = ops[n + 1]; sameFill(o, c); o = ops[++n + 1]) ctx.rect(o[3], o[4], o[5], o[6]);
+          ctx.fill();
+        } else if (t < 0) {
           ctx.fillStyle = c;
           ctx.fillRect(x, y, w, h);
         } else {

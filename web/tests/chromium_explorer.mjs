@@ -326,6 +326,33 @@ try {
     }
   });
 
+  await check('runs of filled rectangles drawn as one path are the rectangles filled one by one', async () => {
+    // drawScantraceFrame fills consecutive filled rectangles of one colour as one path on an
+    // untransformed context; an empty rectangle of another colour put between every two ops
+    // breaks every run, so each is filled alone: the pixels must be the same.
+    const r = await b.evaluate(`(() => {
+      const st = explorer.module();
+      const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
+      const f = st.frames(null, { first: explorer.state().step, count: 1, source: 'x', blocks: 'rgba', encoding: 'binary', ...explorer.frameSize() }).frames[0];
+      const apart = { ...f, ops: f.ops.flatMap((op) => [op, ['R', null, null, 0, 0, 0, 0, '#010203', -1]]) };
+      const pixels = (frame) => {
+        const c = document.createElement('canvas');
+        c.width = frame.w;
+        c.height = frame.h;
+        draw(c.getContext('2d'), frame);
+        return c.getContext('2d').getImageData(0, 0, frame.w, frame.h).data;
+      };
+      const [a, b] = [pixels(f), pixels(apart)];
+      let n = 0;
+      for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
+      let runs = 0;
+      f.ops.forEach((op, i) => { const o = f.ops[i + 1]; if (op[0] === 'R' && op[8] < 0 && !op[1] && o && o[0] === 'R' && o[8] < 0 && !o[1] && o[7] === op[7]) ++runs; });
+      return [n, runs];
+    })()`);
+    assert.ok(r[1] > 100, `only ${r[1]} filled rectangles follow one of their colour`);
+    assert.equal(r[0], 0, `${r[0]} channel values differ`);
+  });
+
   await check('a polygon: its trace, a dragged vertex and the winding rule are the native trace --polygon', async () => {
     // A self-crossing pentagon (a star): under non-zero its centre is inside, under even-odd not.
     const star = [[256, 40], [380, 440], [60, 190], [450, 190], [130, 440]];

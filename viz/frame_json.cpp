@@ -1,7 +1,9 @@
 #include "viz/frame_json.hpp"
 
 #include <cstdio>
+#include <initializer_list>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include <spdlog/fmt/fmt.h>
@@ -38,6 +40,13 @@ void put_all(std::string& out, const Parts&... parts) {
 void put_points(std::string& out, const std::vector<Point2d>& stroke) {
   for (std::size_t i = 0; i < stroke.size(); ++i)
     put_all(out, i ? "," : "", number(stroke[i].x), ',', number(stroke[i].y));
+}
+
+// A block of one pixel (a grid's centre dot) is written as a filled rectangle, not an image.
+std::optional<RectOp> as_rect(const PixelsOp& p) {
+  if (p.area.area() != 1) return std::nullopt;
+  const Vec3b& c = p.bgr->front();
+  return RectOp{p.area, Scalar(c[0], c[1], c[2]), FILLED};
 }
 
 struct Writer {
@@ -90,9 +99,8 @@ struct Writer {
     out += ']';
   }
   void operator()(const PixelsOp& p) const {
-    if (p.area.area() == 1) {  // a grid's centre dot: a filled rectangle, not an image
-      const Vec3b& c = p.bgr->front();
-      (*this)(RectOp{p.area, Scalar(c[0], c[1], c[2]), FILLED});
+    if (const auto dot = as_rect(p)) {
+      (*this)(*dot);
       return;
     }
     put_all(out, "\"P\",", p.area.x, ',', p.area.y, ',', p.area.width, ',', p.area.height, ',');
@@ -123,6 +131,11 @@ const std::string& glyph_strokes_json(const GlyphTable::Glyph& g) {
   return at->second;
 }
 
+void put_mark(std::string& out, const Mark& m) {
+  put_all(out, "{\"kind\":\"", to_string(m.kind), "\",\"what\":", json_string(m.what), ",\"box\":",
+          box(m.box), ",\"layer\":", m.layer, '}');
+}
+
 // One op appended to `out`, its text's glyphs (glyph_table) interned in `glyphs`; `b` is scratch
 // space for its body (a frame's ops reuse one: a string per op was a sixth of the JSON's time).
 void op_json(std::string& out, const DrawOp& op, TextForm text, GlyphTable* glyphs,
@@ -137,12 +150,85 @@ void op_json(std::string& out, const DrawOp& op, TextForm text, GlyphTable* glyp
   out += op.clip ? box(*op.clip) : "null";
   out += ',';
   if (op.mark)
-    put_all(out, "{\"kind\":\"", to_string(op.mark->kind), "\",\"what\":", json_string(op.mark->what),
-            ",\"box\":", box(op.mark->box), ",\"layer\":", op.mark->layer, '}');
+    put_mark(out, *op.mark);
   else
     out += "null";
   out.append(b, comma);
   out += ']';
+}
+
+// The strings of a frame's numbers (to_numbers): each once, by index, as a JSON array.
+class StringTable {
+ public:
+  // Appends to `json` (an empty string): assigning a literal drew GCC 12's -Wrestrict false
+  // positive here.
+  explicit StringTable(std::string& json) : json_(json) { json_ += '['; }
+  double operator()(const std::string& s) {
+    const auto [at, added] = index_.try_emplace(s, static_cast<int>(index_.size()));
+    if (added) put_all(json_, at->second ? "," : "", json_string(s));
+    return at->second;
+  }
+  void close() { json_ += ']'; }
+
+ private:
+  std::string& json_;
+  std::map<std::string, int> index_;
+};
+
+// Each op's arguments as the JSON writes them (Writer, glyph_table form), as numbers: the JSON's
+// numbers as a reader of its text gets them (number_value), strings by their index.
+struct NumberWriter {
+  std::vector<double>& out;
+  StringTable& strings;
+  GlyphTable& glyphs;
+  const NumberBlockWriter& block;
+  void put(std::initializer_list<double> values) const { out.insert(out.end(), values); }
+  void operator()(const RectOp& r) const {
+    put({double(r.rect.x), double(r.rect.y), double(r.rect.width), double(r.rect.height),
+         strings(hex_colour(r.colour)), double(r.thickness)});
+  }
+  void operator()(const LineOp& l) const {
+    const double s = 1.0 / (1 << l.shift);
+    put({frame_text::number_value(l.a.x * s), frame_text::number_value(l.a.y * s),
+         frame_text::number_value(l.b.x * s), frame_text::number_value(l.b.y * s),
+         strings(hex_colour(l.colour)), double(l.thickness)});
+  }
+  void operator()(const CircleOp& c) const {
+    put({double(c.centre.x), double(c.centre.y), double(c.radius), strings(hex_colour(c.colour)),
+         double(c.thickness)});
+  }
+  void operator()(const TextOp& t) const {
+    const std::vector<PlacedGlyph> placed = hershey_layout(t.text, t.font, t.scale, t.origin);
+    put({strings(t.text), strings(hex_colour(t.colour)), double(t.thickness), double(placed.size())});
+    const double s = hershey_scale(t.scale);
+    for (const PlacedGlyph& g : placed)
+      put({double(glyphs.id(g.c, t.font, s)), frame_text::number_value(g.origin.x),
+           frame_text::number_value(g.origin.y)});
+  }
+  void operator()(const PixelsOp& p) const {
+    if (const auto dot = as_rect(p)) return (*this)(*dot);
+    put({double(p.area.x), double(p.area.y), double(p.area.width), double(p.area.height)});
+    block(p, out);
+  }
+};
+
+// A glyph's strokes as to_numbers writes them (stroke count, then each stroke's count of numbers
+// and its numbers), kept per thread as glyph_strokes_json keeps its text.
+const std::vector<double>& glyph_strokes_numbers(const GlyphTable::Glyph& g) {
+  thread_local std::map<std::tuple<unsigned char, int, double>, std::vector<double>> written;
+  auto [at, added] = written.try_emplace({g.c, static_cast<int>(g.font), g.scale});
+  if (added) {
+    const auto strokes = hershey_glyph_strokes(g.c, g.font, g.scale);
+    at->second.push_back(static_cast<double>(strokes.size()));
+    for (const auto& stroke : strokes) {
+      at->second.push_back(2.0 * static_cast<double>(stroke.size()));
+      for (const Point2d& p : stroke) {
+        at->second.push_back(frame_text::number_value(p.x));
+        at->second.push_back(frame_text::number_value(p.y));
+      }
+    }
+  }
+  return at->second;
 }
 
 }  // namespace
@@ -178,6 +264,41 @@ std::string to_json(const Frame& frame, TextForm text, const BlockWriter& block)
   return out;
 }
 
+NumberFrame to_numbers(const Frame& frame, const NumberBlockWriter& block) {
+  NumberFrame f;
+  StringTable strings(f.strings);
+  GlyphTable glyphs;
+  std::vector<double>& v = f.numbers;
+  v.push_back(static_cast<double>(frame.ops().size()));
+  f.marks += '[';
+  double marks = 0;
+  for (const DrawOp& op : frame.ops()) {
+    const auto* pixels = std::get_if<PixelsOp>(&op.body);
+    v.push_back(pixels && as_rect(*pixels) ? 0.0 : static_cast<double>(op.body.index()));
+    if (op.clip)
+      v.insert(v.end(), {1.0, double(op.clip->x), double(op.clip->y), double(op.clip->width),
+                         double(op.clip->height)});
+    else
+      v.push_back(0);
+    if (op.mark) {
+      if (marks > 0) f.marks += ',';
+      put_mark(f.marks, *op.mark);
+      v.push_back(marks++);
+    } else {
+      v.push_back(-1);
+    }
+    std::visit(NumberWriter{v, strings, glyphs, block}, op.body);
+  }
+  f.marks += ']';
+  strings.close();
+  v.push_back(static_cast<double>(glyphs.glyphs().size()));
+  for (const GlyphTable::Glyph& g : glyphs.glyphs()) {
+    const std::vector<double>& strokes = glyph_strokes_numbers(g);
+    v.insert(v.end(), strokes.begin(), strokes.end());
+  }
+  return f;
+}
+
 const char* frame_canvas_script() {
   // Coordinates are OpenCV's (pixel centres on integers): strokes are drawn half a pixel right and
   // down, filled rectangles and pixel blocks over the pixels they cover, as the SVG backend does.
@@ -196,6 +317,11 @@ const char* frame_canvas_script() {
     // putImageData ignores the context's transform: an RGBA block goes through it only on an
     // untransformed context (the explorer's), else through a canvas of its own and drawImage.
     const untransformed = ctx.getTransform().isIdentity;
+    // Text ops from bitmaps kept between frames (scantraceTextBitmaps, below) where the context
+    // draws in its canvas's pixels; elsewhere (a scaled page) stroked as they come.
+    const text = untransformed
+      ? (drawScantraceFrame.text || (drawScantraceFrame.text = scantraceTextBitmaps())).frame(frame)
+      : null;
     // One save for the frame (the caller's context comes back as it was), and one more only
     // around an op with a clip: every op sets the colours and widths it draws with, and a save
     // and restore for each of a step frame's ~800 ops was a fifth of drawing it in Chromium.
@@ -204,8 +330,14 @@ const char* frame_canvas_script() {
     ctx.fillRect(0, 0, frame.w, frame.h);
     ctx.lineCap = 'round';
     ctx.lineJoin = 'round';
-    for (const op of frame.ops) {
-      const [kind, clip] = op;
+    const ops = frame.ops;
+    // A run of filled rectangles of one colour (a step frame's 518 are in 40 runs, most of them
+    // a grid's centre dots) as one path where the context draws in whole pixels: rectangles on
+    // whole pixels cover the same pixels filled together or one by one (a rectangle a call was
+    // 0.7 ms of a frame, recorded and rasterised).
+    const sameFill = (o, c) => o && o[0] === 'R' && !o[1] && o[8] < 0 && o[7] === c;
+    for (let n = 0; n < ops.length; ++n) {
+      const op = ops[n], [kind, clip] = op;
       // The op's arguments from index 3 (a copy of them per op, op.slice(3), was a tenth of
       // drawing a step frame's ~800 ops).
       if (clip) {
@@ -217,7 +349,13 @@ const char* frame_canvas_script() {
       }
       if (kind === 'R') {
         const x = op[3], y = op[4], w = op[5], h = op[6], c = op[7], t = op[8];
-        if (t < 0) {
+        if (t < 0 && untransformed && !clip && sameFill(ops[n + 1], c)) {
+          ctx.fillStyle = c;
+          ctx.beginPath();
+          ctx.rect(x, y, w, h);
+          for (let o = ops[n + 1]; sameFill(o, c); o = ops[++n + 1]) ctx.rect(o[3], o[4], o[5], o[6]);
+          ctx.fill();
+        } else if (t < 0) {
           ctx.fillStyle = c;
           ctx.fillRect(x, y, w, h);
         } else {
@@ -255,21 +393,12 @@ const char* frame_canvas_script() {
           for (let i = 2; i < s.length; i += 2) ctx.lineTo(s[i] + 0.5, s[i + 1] + 0.5);
         }
         ctx.stroke();
+      } else if (kind === 'G' && text) {
+        text.draw(ctx, op);
       } else if (kind === 'G') {
-        // Glyphs placed from the frame's table: each stroke point is the glyph's origin plus its
-        // point in the table (what the strokes of a 'T' op hold, summed here).
-        const c = op[4], t = op[5], placed = op[6];
-        ctx.strokeStyle = c;
-        ctx.lineWidth = t;
-        ctx.beginPath();
-        for (let g = 0; g < placed.length; g += 3) {
-          const x = placed[g + 1] + 0.5, y = placed[g + 2] + 0.5;
-          for (const s of frame.glyphs[placed[g]]) {
-            ctx.moveTo(x + s[0], y + s[1]);
-            for (let i = 2; i < s.length; i += 2) ctx.lineTo(x + s[i], y + s[i + 1]);
-          }
-        }
-        ctx.stroke();
+        ctx.strokeStyle = op[4];
+        ctx.lineWidth = op[5];
+        scantraceStrokeGlyphs(ctx, frame.glyphs, op[6], 0.5, 0.5);
       } else if (kind === 'P' && typeof op[7] === 'string') {
         ctx.imageSmoothingEnabled = false;
         ctx.drawImage(images[k++], op[3], op[4]);
@@ -321,6 +450,170 @@ const char* frame_canvas_script() {
     return Promise.resolve();
   }
   return Promise.all(blocks).then(draw);
+}
+
+// A "G" op's glyphs as one path, stroked with the context's colour and width: each stroke point
+// is its glyph's origin plus (ox, oy) plus its point in the frame's table.
+function scantraceStrokeGlyphs(ctx, glyphs, placed, ox, oy) {
+  ctx.beginPath();
+  for (let g = 0; g < placed.length; g += 3) {
+    const x = placed[g + 1] + ox, y = placed[g + 2] + oy;
+    for (const s of glyphs[placed[g]]) {
+      ctx.moveTo(x + s[0], y + s[1]);
+      for (let i = 2; i < s.length; i += 2) ctx.lineTo(x + s[i], y + s[i + 1]);
+    }
+  }
+  ctx.stroke();
+}
+
+// Text ops ("G") drawn from bitmaps kept between frames (docs/design.md §6, "Text"). Stroking a
+// step frame's 1,456 glyphs (27,550 points) was two thirds of drawing it in Chromium's software
+// raster, and a mouse move of the explorer's drag leaves most labels as they were. Each op is
+// stroked once, as one path as above, onto a canvas of its own at the op's phase (the fraction
+// of a pixel of its first glyph's origin), then put on the frame with drawImage at whole pixels.
+// Keyed by everything that decides its pixels: the colour, the width, the phase, and each glyph's
+// strokes and offset from the first glyph, compared exactly (a hash only finds the candidates),
+// so a frame of another size, scale or colour never takes another's bitmap. Bounded: at most
+// `limit` bitmaps of `maxArea` pixels in all, the least recently drawn dropped first. (Per-glyph
+// bitmaps measured slower: a drawImage per glyph cost more than its strokes.)
+function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
+  const mix = (h, v) => {
+    h = Math.imul(h ^ ((v * 4096) | 0), 0x85ebca6b);
+    return h ^ (h >>> 13);
+  };
+  const same = (a, b) => a.length === b.length && a.every((v, i) => v === b[i]);
+  const glyphs = new Map(); // hash of its strokes -> [{strokes, id, box}]
+  const ops = new Map(); // hash of the key -> [bitmap]
+  const recent = new Set(); // bitmaps, least recently drawn first
+  const spare = new Map(); // width * 65536 + height -> canvases of dropped bitmaps, reused
+  const stats = { hits: 0, misses: 0, bitmaps: 0, area: 0, glyphs: 0, spare: 0 };
+  let nextGlyph = 0;
+
+  // The registry's glyph with these strokes: ids are never reused, so a key made before the
+  // registry was emptied cannot match a bitmap made after.
+  function glyph(strokes) {
+    let h = strokes.length;
+    for (const s of strokes) {
+      h = mix(h, s.length);
+      for (let i = 0; i < s.length; ++i) h = mix(h, s[i]);
+    }
+    const bucket = glyphs.get(h) || [];
+    for (const g of bucket) if (g.strokes.length === strokes.length && g.strokes.every((s, i) => same(s, strokes[i]))) return g;
+    if (stats.glyphs >= 4 * limit) {
+      glyphs.clear();
+      stats.glyphs = 0;
+    }
+    const box = [Infinity, Infinity, -Infinity, -Infinity];
+    for (const s of strokes)
+      for (let i = 0; i < s.length; i += 2) {
+        box[0] = Math.min(box[0], s[i]);
+        box[1] = Math.min(box[1], s[i + 1]);
+        box[2] = Math.max(box[2], s[i]);
+        box[3] = Math.max(box[3], s[i + 1]);
+      }
+    const g = { strokes, id: nextGlyph++, box };
+    bucket.push(g);
+    glyphs.set(h, bucket);
+    ++stats.glyphs;
+    return g;
+  }
+
+  function drop(b) {
+    recent.delete(b);
+    const bucket = ops.get(b.hash);
+    bucket.splice(bucket.indexOf(b), 1);
+    if (!bucket.length) ops.delete(b.hash);
+    if (!b.image) return;
+    const { canvas } = b.image, size = canvas.width * 65536 + canvas.height;
+    stats.area -= canvas.width * canvas.height;
+    if (stats.spare >= 64) return;
+    if (!spare.has(size)) spare.set(size, []);
+    spare.get(size).push(canvas);
+    ++stats.spare;
+  }
+
+  // A cleared canvas of at least w x h pixels: sizes rounded up to 32 x 8, and a dropped bitmap's
+  // canvas of the size taken again. A new canvas, or a canvas resized, for each bitmap made cost
+  // more than its strokes (Chromium allocates its pixels anew: 1.7-3.5 ms for a drag move's 15
+  // changed labels, against 0.2-0.5 reusing canvases).
+  function blank(w, h) {
+    const width = Math.ceil(w / 32) * 32, height = Math.ceil(h / 8) * 8;
+    const pool = spare.get(width * 65536 + height);
+    if (pool && pool.length) {
+      --stats.spare;
+      const canvas = pool.pop();
+      canvas.getContext('2d').clearRect(0, 0, width, height);
+      return canvas;
+    }
+    const canvas = document.createElement('canvas');
+    canvas.width = width;
+    canvas.height = height;
+    return canvas;
+  }
+
+  // The op's glyphs stroked onto a canvas of their box, at phase (fx, fy); null for no strokes.
+  function bitmap(frame, op, fx, fy, used) {
+    const [, , , , colour, t, placed] = op;
+    const box = [Infinity, Infinity, -Infinity, -Infinity];
+    for (let k = 0, j = 0; k < placed.length; k += 3, ++j) {
+      const dx = placed[k + 1] - placed[1], dy = placed[k + 2] - placed[2], b = used[j].box;
+      box[0] = Math.min(box[0], dx + b[0]);
+      box[1] = Math.min(box[1], dy + b[1]);
+      box[2] = Math.max(box[2], dx + b[2]);
+      box[3] = Math.max(box[3], dy + b[3]);
+    }
+    if (!(box[0] <= box[2])) return null;
+    const pad = Math.ceil(t / 2) + 2, left = Math.floor(box[0]) - pad, top = Math.floor(box[1]) - pad;
+    const width = Math.ceil(box[2]) + pad + 1 - left, height = Math.ceil(box[3]) + pad + 1 - top;
+    const canvas = blank(width, height), g = canvas.getContext('2d');
+    g.strokeStyle = colour;
+    g.lineWidth = t;
+    g.lineCap = 'round';
+    g.lineJoin = 'round';
+    scantraceStrokeGlyphs(g, frame.glyphs, placed, fx - left - placed[1], fy - top - placed[2]);
+    stats.area += canvas.width * canvas.height;
+    return { canvas, left, top, width, height };
+  }
+
+  // What a frame's ops draw with: draw(ctx, op) puts a "G" op's bitmap, made if missing.
+  function frame(f) {
+    const seen = []; // the frame's glyph ids -> the registry's glyphs
+    return {
+      draw(ctx, op) {
+        const colour = op[4], t = op[5], placed = op[6];
+        if (!placed.length) return;
+        const x = placed[1] + 0.5, y = placed[2] + 0.5, ix = Math.floor(x), iy = Math.floor(y);
+        const key = [t, x - ix, y - iy], used = [];
+        let h = mix(mix(mix(placed.length, t), x - ix), y - iy);
+        for (let k = 0; k < placed.length; k += 3) {
+          const g = seen[placed[k]] || (seen[placed[k]] = glyph(f.glyphs[placed[k]]));
+          used.push(g);
+          key.push(g.id, placed[k + 1] - placed[1], placed[k + 2] - placed[2]);
+          h = mix(mix(mix(h, g.id), placed[k + 1] - placed[1]), placed[k + 2] - placed[2]);
+        }
+        const bucket = ops.get(h) || [];
+        let b = bucket.find((e) => e.colour === colour && same(e.key, key));
+        if (b) {
+          ++stats.hits;
+          recent.delete(b);
+        } else {
+          ++stats.misses;
+          b = { hash: h, colour, key, image: bitmap(f, op, x - ix, y - iy, used) };
+          bucket.push(b);
+          ops.set(h, bucket);
+        }
+        recent.add(b);
+        const m = b.image;
+        if (m) ctx.drawImage(m.canvas, 0, 0, m.width, m.height, ix + m.left, iy + m.top, m.width, m.height);
+        for (const old of recent) {
+          if (recent.size <= limit && stats.area <= maxArea) break;
+          if (old !== b) drop(old);
+        }
+        stats.bitmaps = recent.size;
+      },
+    };
+  }
+  return { frame, stats: () => ({ ...stats }) };
 }
 )JS";
 }

@@ -28,6 +28,7 @@
 // glyphs the composer measured.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "viz/frame.hpp"
 
@@ -50,6 +51,27 @@ std::string to_json(const Frame& frame, TextForm text = TextForm::strokes,
 
 // One OP of the list above (text as strokes or "t"; glyph_table needs the whole frame).
 std::string to_json(const DrawOp& op, TextForm text = TextForm::strokes);
+
+// The same display list as numbers, for a page that reads them with a Float64Array instead of
+// parsing JSON (the WebAssembly module's frames with encoding: 'binary'; web/scantrace.mjs reads
+// them back into the frame JSON.parse would give, its numeric lists as typed arrays). Every number
+// is the one a reader of to_json's text gets (frame_text::number_value); strings and marks are
+// apart, as JSON arrays, referred to by index. Text as its glyphs placed from the frame's table
+// (TextForm::glyph_table). The numbers:
+//   the op count; for each op its kind (0 "R", 1 "L", 2 "C", 3 "G", 4 "P"), its clip (0, or 1
+//   and x, y, w, h), its mark's index (-1: none), then its arguments as the JSON's, a string by
+//   its index: R x y w h colour thickness; L x1 y1 x2 y2 colour thickness; C cx cy radius colour
+//   thickness; G text colour thickness n, then n times id x y; P x y w h, then what `block`
+//   appends;
+//   then the glyph count, and for each glyph its stroke count and for each stroke its count of
+//   numbers and the numbers (dx, dy, ...).
+struct NumberFrame {
+  std::vector<double> numbers;
+  std::string strings;  // ["#ffffff", "scanline 61 of 380", ...]
+  std::string marks;    // [{"kind", "what", "box", "layer"}, ...]
+};
+using NumberBlockWriter = std::function<void(const PixelsOp&, std::vector<double>&)>;
+NumberFrame to_numbers(const Frame& frame, const NumberBlockWriter& block);
 
 // `drawScantraceFrame(ctx, frame)`: draws a parsed to_json() frame on a 2D canvas context of the
 // frame's size; returns a Promise that resolves when the pixel blocks (images) are drawn too.

@@ -3,33 +3,52 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "io/png_writer.hpp"
 
 namespace scantrace::viz::frame_text {
 
+namespace {
+
+// Two decimals by v·100 rounded to the nearest integer, which is what %.2f prints, unless v·100 is
+// within 1e-6 of a tie (there %.2f rounds the exact binary value, half to even) or too large for
+// its rounding error to stay below that (|v·100| < 1e9: below 1.2e-7): false for those.
+bool cents(double v, long long& n) {
+  const double r = v * 100;
+  if (!(std::abs(r) < 1e9 && std::abs(r - std::floor(r) - 0.5) > 1e-6)) return false;
+  n = std::llround(r);
+  return true;
+}
+
+}  // namespace
+
 std::string number(double v) {
   // Two decimals are finer than any backend draws; trailing zeros dropped. A frame's canvas JSON
   // prints thousands of these (the text's strokes), and snprintf of a double is slow where long
-  // double is emulated (emscripten's musl: 43 ms of a frame's 137 in the explorer's module).
-  // Fast path: v·100 rounded to the nearest integer, which is what %.2f prints, unless v·100 is
-  // within 1e-6 of a tie (there %.2f rounds the exact binary value, half to even) or too large
-  // for its rounding error to stay below that (|v·100| < 1e9: below 1.2e-7): those take snprintf.
-  if (const double r = v * 100; std::abs(r) < 1e9 && std::abs(r - std::floor(r) - 0.5) > 1e-6) {
-    const long long n = std::llround(r);
+  // double is emulated (emscripten's musl: 43 ms of a frame's 137 in the explorer's module):
+  // snprintf only where cents() cannot say.
+  if (long long n = 0; cents(v, n)) {
     if (n == 0) return "0";
     const long long m = n < 0 ? -n : n;
     std::string s;  // not "-" + to_string(...): GCC 12's -Wrestrict false positive (frame_json.cpp)
     if (n < 0) s += '-';
     s += std::to_string(m / 100);
-    if (const int cents = static_cast<int>(m % 100); cents != 0) {
+    if (const int c = static_cast<int>(m % 100); c != 0) {
       s += '.';
-      s += static_cast<char>('0' + cents / 10);
-      if (cents % 10) s += static_cast<char>('0' + cents % 10);
+      s += static_cast<char>('0' + c / 10);
+      if (c % 10) s += static_cast<char>('0' + c % 10);
     }
     return s;
   }
   return number_by_printf(v);
+}
+
+double number_value(double v) {
+  // n / 100.0 is the double nearest n/100 (IEEE division rounds correctly), as is what a JSON
+  // reader makes of number()'s digits; "0" for -0.004 too.
+  if (long long n = 0; cents(v, n)) return n == 0 ? 0.0 : static_cast<double>(n) / 100.0;
+  return std::strtod(number_by_printf(v).c_str(), nullptr);
 }
 
 std::string number_by_printf(double v) {

@@ -18,6 +18,7 @@
 #include "trace/record.hpp"
 #include "viz/frame_json.hpp"
 #include "viz/frame_sequence.hpp"
+#include "viz/frame_text.hpp"
 #include "web/bindings.hpp"
 #include "web/step_json.hpp"
 
@@ -198,38 +199,41 @@ std::string trace_in_memory(const nlohmann::json& in, const nlohmann::json& o) {
 // A pixel block as the runs of equal rows and of equal columns it is made of, and one texel per
 // run pair: the magnified canvas cells repeat each canvas pixel over a cell of frame pixels, so a
 // step frame's 1280 × 600 block is some 40 × 40 texels. Lossless: rows are merged only when equal,
-// columns only when equal in every row kept. Its JSON (the op's last element):
-//   {"at": offset of the texels' RGBA bytes, "cols": [run widths], "rows": [run heights]}
-// (web/scantrace.mjs expands it). Writing and copying the 2.3 MB of RGBA bytes of the whole block
-// was a quarter of a drag's mouse move (docs/performance.md).
-std::string block_runs(const viz::PixelsOp& p, std::vector<std::uint8_t>& bytes) {
+// columns only when equal in every row kept. The texels' RGBA bytes are appended to `bytes` from
+// `at`. Writing and copying the 2.3 MB of RGBA bytes of the whole block was a quarter of a drag's
+// mouse move (docs/performance.md).
+struct BlockRuns {
+  std::size_t at = 0;
+  std::vector<std::size_t> cols, rows;  // run widths, run heights
+};
+BlockRuns block_runs(const viz::PixelsOp& p, std::vector<std::uint8_t>& bytes) {
   const std::size_t w = static_cast<std::size_t>(p.area.width), h = static_cast<std::size_t>(p.area.height);
   const viz::Vec3b* px = p.bgr->data();
+  BlockRuns runs;
   // Rows: the first of each run of equal rows.
-  std::vector<std::size_t> row_starts, row_heights;
+  std::vector<std::size_t> row_starts;
   for (std::size_t r = 0; r < h; ++r) {
     if (r > 0 && web::same_bytes(px + r * w, px + (r - 1) * w, w * sizeof(viz::Vec3b))) {
-      ++row_heights.back();
+      ++runs.rows.back();
       continue;
     }
     row_starts.push_back(r);
-    row_heights.push_back(1);
+    runs.rows.push_back(1);
   }
   // Columns: a new run where any kept row changes from the column before.
-  std::vector<std::size_t> col_starts, col_widths;
+  std::vector<std::size_t> col_starts;
   for (std::size_t u = 0; u < w; ++u) {
     bool same = u > 0;
     for (std::size_t k = 0; same && k < row_starts.size(); ++k)
       same = px[row_starts[k] * w + u] == px[row_starts[k] * w + u - 1];
     if (same) {
-      ++col_widths.back();
+      ++runs.cols.back();
       continue;
     }
     col_starts.push_back(u);
-    col_widths.push_back(1);
+    runs.cols.push_back(1);
   }
-  std::size_t at = bytes.size();
-  std::string json = "{\"at\":" + std::to_string(at) + ",\"cols\":[";
+  std::size_t at = runs.at = bytes.size();
   bytes.resize(at + row_starts.size() * col_starts.size() * 4);
   for (const std::size_t r : row_starts)
     for (const std::size_t u : col_starts) {
@@ -239,13 +243,32 @@ std::string block_runs(const viz::PixelsOp& p, std::vector<std::uint8_t>& bytes)
       bytes[at++] = c[0];
       bytes[at++] = 255;
     }
+  return runs;
+}
+
+// The runs as the JSON frame's block (the op's last element; web/scantrace.mjs expands it):
+//   {"at": offset of the texels' RGBA bytes, "cols": [run widths], "rows": [run heights]}
+std::string block_runs_json(const viz::PixelsOp& p, std::vector<std::uint8_t>& bytes) {
+  const BlockRuns runs = block_runs(p, bytes);
+  std::string json = "{\"at\":" + std::to_string(runs.at) + ",\"cols\":[";
   const auto list = [&](const std::vector<std::size_t>& v) {
     for (std::size_t i = 0; i < v.size(); ++i) json += (i ? "," : "") + std::to_string(v[i]);
   };
-  list(col_widths);
+  list(runs.cols);
   json += "],\"rows\":[";
-  list(row_heights);
+  list(runs.rows);
   return json + "]}";
+}
+
+// The runs as a frame's numbers (viz::to_numbers' block): at, the column count and widths, the
+// row count and heights.
+void block_runs_numbers(const viz::PixelsOp& p, std::vector<std::uint8_t>& bytes, std::vector<double>& out) {
+  const BlockRuns runs = block_runs(p, bytes);
+  out.push_back(static_cast<double>(runs.at));
+  for (const auto* v : {&runs.cols, &runs.rows}) {
+    out.push_back(static_cast<double>(v->size()));
+    out.insert(out.end(), v->begin(), v->end());
+  }
 }
 
 // A frame's display list as viz::to_json writes it, its text as glyphs placed from the frame's
@@ -257,7 +280,25 @@ std::string block_runs(const viz::PixelsOp& p, std::vector<std::uint8_t>& bytes)
 std::string frame_json(const viz::Frame& frame, bool raw, std::vector<std::uint8_t>& bytes) {
   if (!raw) return viz::to_json(frame, viz::TextForm::glyph_table);
   return viz::to_json(frame, viz::TextForm::glyph_table,
-                      [&](const viz::PixelsOp& p) { return block_runs(p, bytes); });
+                      [&](const viz::PixelsOp& p) { return block_runs_json(p, bytes); });
+}
+
+// The same frame as numbers (viz::to_numbers), its blocks as runs: the numbers appended to
+// `bytes` (from a multiple of 8, for a Float64Array), the rest as JSON,
+//   {"w", "h", "bg", "at": the numbers' offset, "n": their count, "strings": [...], "marks": [...]}
+// Writing the frame's numbers as text and parsing them back in the page was a fifth of a drag's
+// mouse move (docs/performance.md).
+std::string frame_numbers(const viz::Frame& frame, std::vector<std::uint8_t>& bytes) {
+  viz::NumberFrame f = viz::to_numbers(frame, [&](const viz::PixelsOp& p, std::vector<double>& out) {
+    block_runs_numbers(p, bytes, out);
+  });
+  const std::size_t at = (bytes.size() + 7) / 8 * 8;
+  bytes.resize(at + f.numbers.size() * sizeof(double));
+  std::memcpy(bytes.data() + at, f.numbers.data(), f.numbers.size() * sizeof(double));
+  return "{\"w\":" + std::to_string(frame.size().width) + ",\"h\":" + std::to_string(frame.size().height) +
+         ",\"bg\":\"" + viz::frame_text::hex_colour(frame.background()) + "\",\"at\":" + std::to_string(at) +
+         ",\"n\":" + std::to_string(f.numbers.size()) + ",\"strings\":" + f.strings +
+         ",\"marks\":" + f.marks + "}";
 }
 
 std::string read_file(const char* path) {
@@ -295,7 +336,9 @@ EMSCRIPTEN_KEEPALIVE int st_trace(const char* input_json, const char* options_js
 
 // The display lists of the trace file at `path` (empty: the trace kept by st_trace's "keep"), steps [first, first + count) (all by default):
 // {"steps": [{"kind", "triangle", "first_row", "last_row"}, …], "frames": [frame JSON, …]}
-// at options.width × options.height (1280 × 720), planned as `replay` plans them.
+// at options.width × options.height (1280 × 720), planned as `replay` plans them. With
+// options.encoding "binary" each frame is its numbers in the result's bytes and the rest
+// (frame_numbers), its blocks as runs.
 EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
   return web::run([&] {
     const nlohmann::json o = web::parse_options(options_json);
@@ -319,8 +362,10 @@ EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
     for (std::size_t i = 0; i < n; ++i) out += (i ? "," : "") + web::step_json(s, i).dump();
     out += "],\"frames\":[";
     const bool raw = o.value("blocks", std::string("png")) == "rgba";
+    const bool numbers = o.value("encoding", std::string("json")) == "binary";
     for (std::size_t i = first; i < last; ++i)
-      out += (i > first ? "," : "") + web::frame_json(s.frame(i), raw, web::result().bytes);
+      out += (i > first ? "," : "") + (numbers ? web::frame_numbers(s.frame(i), web::result().bytes)
+                                               : web::frame_json(s.frame(i), raw, web::result().bytes));
     out += "]}";
     web::result().text = std::move(out);
   });

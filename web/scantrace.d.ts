@@ -68,8 +68,9 @@ export interface CanvasFrame {
   h: number;
   bg: string;
   ops: unknown[];
-  /** Text as "G" ops: glyph id's strokes ([dx, dy, dx, dy, …] each) relative to its origin. */
-  glyphs?: number[][][];
+  /** Text as "G" ops: glyph id's strokes ([dx, dy, dx, dy, …] each) relative to its origin
+   * (Float64Arrays with encoding: 'binary'). */
+  glyphs?: (number[] | Float64Array)[][];
 }
 
 export interface FrameOptions {
@@ -82,6 +83,10 @@ export interface FrameOptions {
   /** 'rgba': each pixel block ("P" op) ends with a RunsBlock, which drawScantraceFrame draws at
    * once; 'png' (default): a PNG data URI, loaded asynchronously. */
   blocks?: 'png' | 'rgba';
+  /** 'binary': each frame handed over as numbers, not JSON text, and read back into the same
+   * frame (its blocks as with blocks: 'rgba'; the lists of numbers of its "G" ops, glyphs and
+   * blocks as Float64Arrays); what the explorer does on every mouse move. 'json' (default). */
+  encoding?: 'json' | 'binary';
 }
 
 /** A frames() pixel block with blocks: 'rgba': the runs of equal columns (widths, left to right)
@@ -90,8 +95,8 @@ export interface FrameOptions {
 export interface RunsBlock {
   width: number;
   height: number;
-  cols: number[];
-  rows: number[];
+  cols: number[] | Float64Array;
+  rows: number[] | Float64Array;
   texels: Uint8ClampedArray;
   readonly data: Uint8ClampedArray;
 }
@@ -121,7 +126,9 @@ export class ScantraceError extends Error {
 
 export class Scantrace {
   render(scene: SceneInput, options?: FillOptions): Rendered;
-  traceText(input: TraceInput, options?: TraceOptions): string;
+  /** into: with options.keep, an ImageData (or Uint8ClampedArray) that takes the kept image's
+   * RGBA bytes when it has their size, and is then lastTraceImage.rgba (no new array a call). */
+  traceText(input: TraceInput, options?: TraceOptions, into?: ImageData | Uint8ClampedArray | null): string;
   trace(input: TraceInput, options?: TraceOptions): TraceEvent[];
   /** trace null: the trace kept by the last traceText/trace call with keep: true. */
   frames(trace: string | TraceEvent[] | null, options?: FrameOptions): { steps: FrameStep[]; frames: CanvasFrame[] };

@@ -68,6 +68,40 @@ function runsBlock(w, h, { at, cols, rows }, bytes) {
   };
 }
 
+// A frame written as numbers (frames' encoding: 'binary'; viz/frame_json.hpp's to_numbers):
+// head {w, h, bg, at, n, strings, marks}, its numbers the n doubles from byte `at` of `bytes`
+// (the texels of its blocks are in the same bytes). Gives the frame JSON.parse would give of its
+// JSON (tests/node_compare.mjs holds them equal), each list of numbers of its text ops, glyphs and
+// blocks a Float64Array over the bytes: no number is written as text or parsed back.
+const opKinds = ['R', 'L', 'C', 'G', 'P'];
+function numbersFrame(head, bytes) {
+  const v = new Float64Array(bytes.buffer, bytes.byteOffset + head.at, head.n), s = head.strings;
+  let i = 0;
+  const list = (n) => v.subarray(i, (i += n));
+  const ops = new Array(v[i++]);
+  for (let k = 0; k < ops.length; ++k) {
+    const kind = opKinds[v[i++]];
+    const clip = v[i++] ? Array.from(list(4)) : null;
+    const mark = v[i++];
+    const op = [kind, clip, mark < 0 ? null : head.marks[mark]];
+    if (kind === 'R' || kind === 'L') op.push(v[i++], v[i++], v[i++], v[i++], s[v[i++]], v[i++]);
+    else if (kind === 'C') op.push(v[i++], v[i++], v[i++], s[v[i++]], v[i++]);
+    else if (kind === 'G') op.push(s[v[i++]], s[v[i++]], v[i++], list(3 * v[i++]));
+    else {
+      const [x, y, w, h, at] = list(5);
+      const cols = list(v[i++]), rows = list(v[i++]);
+      op.push(x, y, w, h, runsBlock(w, h, { at, cols, rows }, bytes));
+    }
+    ops[k] = op;
+  }
+  const glyphs = new Array(v[i++]);
+  for (let g = 0; g < glyphs.length; ++g) {
+    const strokes = (glyphs[g] = new Array(v[i++]));
+    for (let k = 0; k < strokes.length; ++k) strokes[k] = list(v[i++]);
+  }
+  return { w: head.w, h: head.h, bg: head.bg, ops, glyphs };
+}
+
 export class Scantrace {
   constructor(module) {
     this.m = module;
@@ -125,6 +159,13 @@ export class Scantrace {
     return {
       text: () => decoder.decode(m.HEAPU8.subarray(m._st_result_text(), m._st_result_text() + m._st_result_size())),
       bytes: () => m.HEAPU8.slice(m._st_result_bytes(), m._st_result_bytes() + m._st_result_bytes_size()),
+      // The bytes copied into `target` (a Uint8ClampedArray of their length): true, else false.
+      bytesInto: (target) => {
+        const at = m._st_result_bytes(), n = m._st_result_bytes_size();
+        if (!target || target.length !== n) return false;
+        target.set(m.HEAPU8.subarray(at, at + n));
+        return true;
+      },
     };
   }
 
@@ -138,13 +179,17 @@ export class Scantrace {
   // The JSON Lines `scantrace trace` writes, as text. input: {scene} | {triangle, colors?,
   // width?, height?} | {polygon, colors?, width?, height?}.
   // With options.keep, lastTraceImage is the image the traced fill drew, {width, height, rgba};
-  // with keep and text: false, the trace is kept but no text written ('' returned).
-  traceText(input, options = {}) {
+  // with keep and text: false, the trace is kept but no text written ('' returned). `into`: an
+  // ImageData (or Uint8ClampedArray) that takes the image's bytes when it has their size, and is
+  // then lastTraceImage's rgba (a drag's moves reuse one: a new 1 MB array and ImageData a move
+  // cost 0.7 ms more in Chromium).
+  traceText(input, options = {}, into = null) {
     const spec = { ...input };
     if ('scene' in spec) spec.scene = this._sceneFile(spec.scene);
     const r = this._call('trace', [JSON.stringify(spec), JSON.stringify(options)]);
     if (options.keep) {
-      const rgba = new Uint8ClampedArray(r.bytes().buffer);
+      const target = into && (into.data || into);
+      const rgba = r.bytesInto(target) ? target : new Uint8ClampedArray(r.bytes().buffer);
       const width = spec.width || (spec.scene ? 0 : 512);
       const height = rgba.length / 4 / (width || 1);
       this.lastTraceImage = width ? { width, height, rgba } : null;
@@ -173,6 +218,9 @@ export class Scantrace {
   // recorded in memory (no text parsed again: what the explorer does on every mouse move). options: width, height (1280 × 720), first, count, rows_per_step;
   // blocks: 'rgba' gives the pixel blocks as {width, height, data} (RGBA bytes), drawn at once,
   // instead of PNG data URIs (the default, what `replay`'s pages and the SVG backend write).
+  // encoding: 'binary' hands each frame over as numbers instead of JSON text (numbersFrame: the
+  // same frame, its lists of numbers as Float64Arrays, its blocks as with blocks: 'rgba'), what
+  // the explorer does on every mouse move.
   frames(trace, options = {}) {
     let file = '';
     if (trace !== null) {
@@ -182,7 +230,10 @@ export class Scantrace {
     }
     const r = this._call('frames', [file, JSON.stringify(options)]);
     const out = JSON.parse(r.text());
-    if (options.blocks === 'rgba') {
+    if (options.encoding === 'binary') {
+      const bytes = new Uint8ClampedArray(r.bytes().buffer);
+      out.frames = out.frames.map((head) => numbersFrame(head, bytes));
+    } else if (options.blocks === 'rgba') {
       // Each pixel block's op ends with its runs of equal columns and rows and the offset of its
       // texels (one RGBA pixel per run pair) in the result's bytes (web/bindings_trace.cpp's
       // block_runs): some kilobytes instead of the block's 2.3 MB.

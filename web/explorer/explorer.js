@@ -12,6 +12,7 @@ export async function start(st) {
   let scene = null; // scene mode: {name, data}
   let sceneObj = null; // the scene the grid shows (triangle mode: the triangle as a one-face scene)
   let traceText = '', plan = [], fill = null, diffPicture = null;
+  let traceImage = null; // the ImageData the traced fill's image is copied into, move after move
   let shown = null; // the module's keptStep of the current step: the tables' events
   let view = { zoom: 1, x: 0, y: 0 }; // canvas pixel (0, 0) at screen (x, y), `zoom` px a pixel
   let drag = null, marked = null;
@@ -61,8 +62,11 @@ export async function start(st) {
       const traced = s.mode === 'triangle'
         ? { triangle: s.triangle, colors: s.colors, width: s.size[0], height: s.size[1] }
         : s.mode === 'polygon' ? { polygon: [s.polygon], width: s.size[0], height: s.size[1] } : { scene };
-      // Kept in the module for the frames of its steps (composeStep).
-      const text = st.traceText(traced, { ...fillOptions(), level: s.mode === 'scene' ? 'triangle' : 'scanline', keep: true, text: !moving });
+      // Kept in the module for the frames of its steps (composeStep); a triangle's or polygon's
+      // image copied into the ImageData kept for it (traceImage).
+      if (s.mode !== 'scene' && !(traceImage && traceImage.width === s.size[0] && traceImage.height === s.size[1]))
+        traceImage = new ImageData(s.size[0], s.size[1]);
+      const text = st.traceText(traced, { ...fillOptions(), level: s.mode === 'scene' ? 'triangle' : 'scanline', keep: true, text: !moving }, s.mode === 'scene' ? null : traceImage);
       traceText = moving ? null : text;
       const traceMs = performance.now() - t0;
       stages.trace = traceMs;
@@ -87,7 +91,8 @@ export async function start(st) {
       fillCanvas.width = fill.width;
       fillCanvas.height = fill.height;
     }
-    fillCanvas.getContext('2d').putImageData(new ImageData(fill.rgba, fill.width, fill.height), 0, 0);
+    const image = traceImage && fill.rgba === traceImage.data ? traceImage : new ImageData(fill.rgba, fill.width, fill.height);
+    fillCanvas.getContext('2d').putImageData(image, 0, 0);
   }
 
   // The frame's size: the canvas's box on the screen in device pixels, 16:9, at most the 1280 x 720
@@ -104,11 +109,12 @@ export async function start(st) {
   }
 
   // The plan of steps and the current step's frame from one call (one plan), the frame's pixel
-  // blocks as bytes: nothing waits for an image to load.
+  // blocks as bytes: nothing waits for an image to load. The frame handed over as numbers, not
+  // JSON (writing its numbers as text and parsing them back was a fifth of a drag's move).
   let shownFrame = null;
   function composeStep() {
     const source = s.mode === 'scene' ? scene.name : `the explorer\u2019s ${s.mode}`;
-    const options = { count: 1, source, blocks: 'rgba', ...frameSize() };
+    const options = { count: 1, source, blocks: 'rgba', encoding: 'binary', ...frameSize() };
     let r = st.frames(null, { ...options, first: s.step });
     plan = r.steps;
     if (s.step >= plan.length && plan.length) {

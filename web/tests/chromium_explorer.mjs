@@ -251,6 +251,108 @@ try {
     assert.equal(differ, 0, `${differ} channel values differ`);
   });
 
+  await check("text bitmaps kept between frames are keyed by what draws them, and bounded", async () => {
+    // drawScantraceFrame draws a "G" op from a bitmap of its glyphs kept from an earlier frame
+    // (viz/frame_json.cpp's scantraceTextBitmaps). Each variant of the step's frame changes one
+    // thing an op's pixels depend on; drawn after the frame itself (its bitmaps kept), it must
+    // give the pixels a fresh drawScantraceFrame (nothing kept) gives, and not the frame's.
+    const r = await b.evaluate(`(() => {
+      const st = explorer.module();
+      const script = st.canvasScript() + '; return [drawScantraceFrame, scantraceTextBitmaps];';
+      const f = st.frames(null, { first: explorer.state().step, count: 1, source: 'the explorer\u2019s triangle', blocks: 'rgba', ...explorer.frameSize() }).frames[0];
+      const pixels = (draw, frame) => {
+        const c = document.createElement('canvas');
+        c.width = frame.w;
+        c.height = frame.h;
+        draw(c.getContext('2d'), frame);
+        return c.getContext('2d').getImageData(0, 0, frame.w, frame.h).data;
+      };
+      const differ = (a, b) => { let n = 0; for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n; return n; };
+      const at = f.ops.findIndex((op) => op[0] === 'G' && op[6].length >= 9);
+      // The variants: each a copy of the frame with op \`at\` changed.
+      const variant = (change) => {
+        const g = { ...f, ops: f.ops.slice(), glyphs: f.glyphs.slice() };
+        g.ops[at] = f.ops[at].slice();
+        g.ops[at][6] = Array.from(f.ops[at][6]);
+        change(g.ops[at], g);
+        return g;
+      };
+      const placed = (op) => op[6];
+      const variants = {
+        colour: variant((op) => { op[4] = op[4] === '#ff0000' ? '#0000ff' : '#ff0000'; }),
+        width: variant((op) => { op[5] += 1; }),
+        'a quarter pixel right': variant((op) => { for (let k = 1; k < placed(op).length; k += 3) placed(op)[k] += 0.25; }),
+        'a quarter pixel down': variant((op) => { for (let k = 2; k < placed(op).length; k += 3) placed(op)[k] += 0.25; }),
+        'three pixels right': variant((op) => { for (let k = 1; k < placed(op).length; k += 3) placed(op)[k] += 3; }),
+        'its second glyph half a pixel right': variant((op) => { placed(op)[4] += 0.5; }),
+        'its first glyph another': variant((op, g) => {
+          const other = placed(op).findIndex((id, k) => k % 3 === 0 && JSON.stringify(g.glyphs[id]) !== JSON.stringify(g.glyphs[placed(op)[0]]));
+          g.glyphs[placed(op)[0]] = g.glyphs[placed(op)[other]];
+        }),
+        'the strokes of its first glyph a tenth of a pixel right': variant((op, g) => {
+          g.glyphs[placed(op)[0]] = g.glyphs[placed(op)[0]].map((s) => s.map((v, i) => (i % 2 ? v : v + 0.1)));
+        }),
+      };
+      const [kept] = new Function(script)();
+      const original = pixels(kept, f);
+      const out = {};
+      for (const [name, g] of Object.entries(variants)) {
+        pixels(kept, f); // the frame's bitmaps kept
+        const [fresh] = new Function(script)();
+        const want = pixels(fresh, g);
+        out[name] = [differ(pixels(kept, g), want), differ(original, want)];
+      }
+      // Bounded: at most 8 bitmaps, then at most 4000 pixels of them (unless one alone is more);
+      // the frame drawn under those bounds is the frame drawn fresh.
+      const bounded = {};
+      for (const [limit, area] of [[8, 1 << 22], [512, 4000]]) {
+        const [draw, bitmaps] = new Function(script)();
+        draw.text = bitmaps(limit, area);
+        const a = pixels(draw, f), b = pixels(draw, f);
+        bounded[limit + ' bitmaps, ' + area + ' pixels'] = [differ(a, original), differ(b, original), draw.text.stats()];
+      }
+      return { out, bounded, stats: kept.text.stats() };
+    })()`);
+    for (const [name, [kept, changed]] of Object.entries(r.out)) {
+      assert.ok(changed > 0, `${name}: the variant draws the frame's pixels (the check would be void)`);
+      assert.equal(kept, 0, `${name}: drawn after the frame, ${kept} channel values differ from the variant drawn fresh`);
+    }
+    assert.ok(r.stats.hits > 0, `no bitmap was drawn again: ${JSON.stringify(r.stats)}`);
+    for (const [name, [first, again, stats]] of Object.entries(r.bounded)) {
+      assert.equal(first + again, 0, `${name}: ${first} and ${again} channel values differ from the frame drawn fresh`);
+      const [limit, area] = name.match(/\d+/g).map(Number);
+      assert.ok(stats.bitmaps <= limit && (stats.area <= area || stats.bitmaps === 1), `${name}: ${JSON.stringify(stats)}`);
+      assert.ok(stats.misses > 85, `${name}: the frame's second drawing took its ops from bitmaps that had been dropped: ${JSON.stringify(stats)}`);
+    }
+  });
+
+  await check('runs of filled rectangles drawn as one path are the rectangles filled one by one', async () => {
+    // drawScantraceFrame fills consecutive filled rectangles of one colour as one path on an
+    // untransformed context; an empty rectangle of another colour put between every two ops
+    // breaks every run, so each is filled alone: the pixels must be the same.
+    const r = await b.evaluate(`(() => {
+      const st = explorer.module();
+      const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
+      const f = st.frames(null, { first: explorer.state().step, count: 1, source: 'x', blocks: 'rgba', encoding: 'binary', ...explorer.frameSize() }).frames[0];
+      const apart = { ...f, ops: f.ops.flatMap((op) => [op, ['R', null, null, 0, 0, 0, 0, '#010203', -1]]) };
+      const pixels = (frame) => {
+        const c = document.createElement('canvas');
+        c.width = frame.w;
+        c.height = frame.h;
+        draw(c.getContext('2d'), frame);
+        return c.getContext('2d').getImageData(0, 0, frame.w, frame.h).data;
+      };
+      const [a, b] = [pixels(f), pixels(apart)];
+      let n = 0;
+      for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
+      let runs = 0;
+      f.ops.forEach((op, i) => { const o = f.ops[i + 1]; if (op[0] === 'R' && op[8] < 0 && !op[1] && o && o[0] === 'R' && o[8] < 0 && !o[1] && o[7] === op[7]) ++runs; });
+      return [n, runs];
+    })()`);
+    assert.ok(r[1] > 100, `only ${r[1]} filled rectangles follow one of their colour`);
+    assert.equal(r[0], 0, `${r[0]} channel values differ`);
+  });
+
   await check('a polygon: its trace, a dragged vertex and the winding rule are the native trace --polygon', async () => {
     // A self-crossing pentagon (a star): under non-zero its centre is inside, under even-odd not.
     const star = [[256, 40], [380, 440], [60, 190], [450, 190], [130, 440]];

@@ -159,6 +159,60 @@ check('kept trace and its frames with RGBA blocks', () => {
     assert.ok(blocks > 0, `step ${step} has no pixel block`);
   }
 });
+// traceText's `into`: the kept image copied into the caller's array when it has the image's size
+// (then lastTraceImage's rgba), a new array otherwise.
+check("a kept trace's image copied into the caller's array", () => {
+  const input = { triangle: [[20, 20], [250, 80], [299.5, 371.25]], width: 200, height: 150 };
+  st.traceText(input, { keep: true, text: false });
+  const want = st.lastTraceImage.rgba.slice();
+  const into = new Uint8ClampedArray(200 * 150 * 4).fill(7);
+  st.traceText({ triangle: [[1, 1], [2, 1], [1, 2]], width: 200, height: 150 }, { keep: true, text: false }); // another image first
+  st.traceText(input, { keep: true, text: false }, into);
+  assert.equal(st.lastTraceImage.rgba, into);
+  assert.ok(Buffer.from(into).equals(Buffer.from(want)), 'the array given holds another image');
+  const small = new Uint8ClampedArray(16).fill(7);
+  st.traceText(input, { keep: true, text: false }, small);
+  assert.notEqual(st.lastTraceImage.rgba, small);
+  assert.ok(Buffer.from(st.lastTraceImage.rgba).equals(Buffer.from(want)) && small.every((v) => v === 7));
+});
+
+// The explorer's frames come as numbers (encoding: 'binary': viz::to_numbers, read back by
+// scantrace.mjs's numbersFrame): every step's frame must be the frame JSON.parse gives of its
+// JSON, the same ops, strings, marks, clips and numbers (lists as Float64Arrays, compared as
+// arrays), and blocks of the same runs and texels; for a triangle at two sizes, a polygon with a
+// hole and the demo scene.
+check('frames as numbers are the frames as JSON', () => {
+  const plain = (x) => {
+    if (ArrayBuffer.isView(x)) return Array.from(x);
+    if (Array.isArray(x)) return x.map(plain);
+    if (x && typeof x === 'object' && 'texels' in x) return { width: x.width, height: x.height, cols: plain(x.cols), rows: plain(x.rows), texels: plain(x.texels) };
+    if (x && typeof x === 'object') return Object.fromEntries(Object.entries(x).map(([k, v]) => [k, plain(v)]));
+    return x;
+  };
+  const inputs = [
+    [{ triangle: [[20, 20], [250, 80], [300, 400]] }, { shading: 'gouraud' }, [[688, 387], [1280, 720]]],
+    [{ polygon: [[[50, 50], [400, 60], [300, 300], [60, 420]], [[100, 100], [200, 110], [150, 200]]] }, { winding: 'non-zero' }, [[960, 540]]],
+    [{ scene: st.demoScene() }, { level: 'triangle' }, [[1280, 720]]],
+  ];
+  let frames = 0;
+  for (const [input, o, sizes] of inputs) {
+    st.traceText(input, { ...o, keep: true, text: false });
+    for (const [width, height] of sizes)
+      // The first steps (the title cards), a few scanline steps and the last (1 s for all steps).
+      for (const first of [0, 1, 3, 6, 12, 20, 30, 46]) {
+        const json = st.frames(null, { blocks: 'rgba', width, height, source: 'x', first, count: 1 });
+        const numbers = st.frames(null, { blocks: 'rgba', encoding: 'binary', width, height, source: 'x', first, count: 1 });
+        assert.deepStrictEqual(numbers.steps, json.steps);
+        assert.equal(numbers.frames.length, json.frames.length);
+        json.frames.forEach((f, i) => {
+          assert.ok(numbers.frames[i].ops.some((op) => op[0] === 'G' && op[6] instanceof Float64Array), 'no text op read as numbers');
+          assert.deepStrictEqual(plain(numbers.frames[i]), plain(f), `${JSON.stringify(input).slice(0, 40)} at ${width}x${height}, step ${first + 1}`);
+          ++frames;
+        });
+      }
+  }
+  assert.ok(frames > 20, `${frames} frames compared`);
+});
 // A kept trace's image is made from the trace's own spans (web/bindings_trace.cpp) when the trace
 // holds all of them; a trace capped by max_events (never reached here) takes the conversion of
 // every pixel instead. Both must be the image the fill drew, for the methods, rules and shadings,

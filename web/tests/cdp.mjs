@@ -6,11 +6,34 @@ import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 
+// Sends SIGKILL to the process group `pgid` until none of it is left (at most about 3 s).
+async function endGroup(pgid) {
+  for (let i = 0; i < 60; ++i) {
+    try {
+      process.kill(-pgid, 'SIGKILL');
+    } catch {
+      return;  // ESRCH: the group is empty
+    }
+    await new Promise((r) => setTimeout(r, 50));
+  }
+}
+
 export async function launch() {
   const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'scantrace-cdp-'));
   const proc = spawn('chromium', ['--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars',
     '--force-device-scale-factor=1', '--remote-debugging-port=0', `--user-data-dir=${profile}`,
-    '--window-size=1400,1000', 'about:blank'], { stdio: 'ignore' });
+    '--window-size=1400,1000', 'about:blank'], { stdio: 'ignore', detached: true });
+  // Its own process group does not get the terminal's Ctrl-C, nor dies with this process: both
+  // are passed on to it (the group, helpers included) here, and undone by close().
+  const endNow = () => { try { process.kill(-proc.pid, 'SIGKILL'); } catch { /* gone */ } };
+  const interrupted = (signal) => {
+    endNow();
+    try { fs.rmSync(profile, { recursive: true, force: true, maxRetries: 20, retryDelay: 100 }); } catch { /* said nowhere: exiting */ }
+    process.exit(signal === 'SIGINT' ? 130 : 143);
+  };
+  process.on('exit', endNow);
+  process.on('SIGINT', interrupted);
+  process.on('SIGTERM', interrupted);
   const portFile = path.join(profile, 'DevToolsActivePort');
   for (let i = 0; i < 300 && !fs.existsSync(portFile); ++i) await new Promise((r) => setTimeout(r, 100));
   let lines = [];
@@ -55,10 +78,16 @@ export async function launch() {
         proc.kill();
         await new Promise((r) => proc.once('exit', r));
       }
-      // Chromium's helper processes may still write into the profile after the browser exits
-      // (a clean clone's CI run failed on ENOTEMPTY): retry the removal a while.
-      // Still failing after that (seen at a load of 8 on 2 cores): a leftover temporary profile
-      // is said, not a failure of the checks that ran.
+      // Chromium's helper processes (renderer, zygote, utilities) may still write into the
+      // profile after the browser exits (a clean clone's CI run failed on ENOTEMPTY, and bench
+      // runs left dozens of profiles behind): the browser was started as the leader of a process
+      // group of its own (detached), so the whole group is ended and waited for before the
+      // profile is removed. What is still in the way after that (seen at a load of 8 on 2 cores)
+      // is retried a while, then said, not a failure of the checks that ran.
+      await endGroup(proc.pid);
+      process.off('exit', endNow);
+      process.off('SIGINT', interrupted);
+      process.off('SIGTERM', interrupted);
       try {
         fs.rmSync(profile, { recursive: true, force: true, maxRetries: 20, retryDelay: 100 });
       } catch (e) {

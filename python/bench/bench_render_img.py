@@ -57,20 +57,24 @@ def main():
     ap.add_argument("--rounds", type=int, default=30)
     ap.add_argument("--numpy-rounds", type=int, default=3)
     ap.add_argument("--scale", type=float, default=1.0,
-                    help="the scene's coordinates and canvas multiplied by K (0.5: a 256 x 256 "
-                         "canvas, whose float64 image fits this machine's 2 MiB L2)")
+                    help="the scene's coordinates and canvas multiplied by K, in (0, 16] (0.5: a "
+                         "256 x 256 canvas, whose float64 image fits this machine's 2 MiB L2); "
+                         "off 512 x 512, the render_img column is render(size=...) in float64, "
+                         "the same C++ render at the other size")
     ap.add_argument("--clock", choices=sorted(CLOCKS), default="cpu",
                     help="cpu (default): the rendering thread's CPU time, user and system "
                          "(time.thread_time; in C++ CLOCK_THREAD_CPUTIME_ID), which leaves out "
                          "the time a render waited for a core on a shared machine; wall: "
                          "elapsed time")
     args = ap.parse_args()
+    if not 0 < args.scale <= 16:
+        ap.error(f"--scale: expected a factor in (0, 16], got {args.scale:g}")
     global clock
     clock = CLOCKS[args.clock]
 
     s = scantrace.load_scene(args.scene)
     f, v, c, d = s["faces"], s["vertices"] * args.scale, s["vcolors"], s["depth"]
-    size = round(512 * args.scale)
+    size = max(1, round(512 * args.scale))
     with tempfile.TemporaryDirectory() as tmp:
         scene = args.scene
         if args.scale != 1.0:  # the C++ renders read a file: the scaled scene written as one

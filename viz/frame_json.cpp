@@ -336,16 +336,26 @@ const char* frame_canvas_script() {
     // whole pixels cover the same pixels filled together or one by one (a rectangle a call was
     // 0.7 ms of a frame, recorded and rasterised).
     const sameFill = (o, c) => o && o[0] === 'R' && !o[1] && o[8] < 0 && o[7] === c;
+    // Consecutive ops of one clip drawn under one save, clip and restore (a step frame's 172
+    // clipped ops are in 10 such groups): each op sets what it draws with, so an op draws the same
+    // pixels after another of its group as alone, and a save, clip and restore an op was a tenth
+    // of drawing the frame in Chromium.
+    const sameClip = (a, b) => a === b || (!!a && !!b && a[0] === b[0] && a[1] === b[1] && a[2] === b[2] && a[3] === b[3]);
+    let clipped = null;
     for (let n = 0; n < ops.length; ++n) {
       const op = ops[n], [kind, clip] = op;
       // The op's arguments from index 3 (a copy of them per op, op.slice(3), was a tenth of
       // drawing a step frame's ~800 ops).
-      if (clip) {
-        ctx.save();
-        ctx.beginPath();
-        ctx.rect(clip[0], clip[1], clip[2], clip[3]);
-        ctx.clip();
-        ctx.translate(clip[0], clip[1]);
+      if (!sameClip(clip, clipped)) {
+        if (clipped) ctx.restore();
+        clipped = clip;
+        if (clip) {
+          ctx.save();
+          ctx.beginPath();
+          ctx.rect(clip[0], clip[1], clip[2], clip[3]);
+          ctx.clip();
+          ctx.translate(clip[0], clip[1]);
+        }
       }
       if (kind === 'R') {
         const x = op[3], y = op[4], w = op[5], h = op[6], c = op[7], t = op[8];
@@ -402,12 +412,13 @@ const char* frame_canvas_script() {
       } else if (kind === 'P' && typeof op[7] === 'string') {
         ctx.imageSmoothingEnabled = false;
         ctx.drawImage(images[k++], op[3], op[4]);
-      } else if (kind === 'P' && op[7].cols) {
+      } else if (kind === 'P' && op[7].cols && !(untransformed && scantraceOpaque(op[7].texels))) {
         // Runs of equal columns and rows and one texel each ({width, height, cols, rows, texels}:
-        // the WebAssembly module's magnified cells): the texels stretched over each column run
-        // into one row per row run, then each of those rows stretched over its run's height. A
-        // source one texel wide or one row tall is sampled at that texel whatever the scale, so
-        // this draws the block's own pixels, as putImageData of the whole block would.
+        // the WebAssembly module's magnified cells) on a scaled context, or with a texel not
+        // opaque (drawn over what is below it): the texels stretched over each column run into
+        // one row per row run, then each of those rows stretched over its run's height. A source
+        // one texel wide or one row tall is sampled at that texel whatever the scale, so this
+        // draws the block's own pixels, as putImageData of the whole block would.
         const b = op[7], n = b.rows.length, row = new Uint32Array(b.width * n);
         const texel = new Uint32Array(b.texels.buffer, b.texels.byteOffset, b.cols.length * n);
         // A plain loop: runs are a few pixels wide, and a fill() per run cost more than its pixels.
@@ -432,17 +443,19 @@ const char* frame_canvas_script() {
         ctx.imageSmoothingEnabled = false;
         ctx.drawImage(c, op[3], op[4]);
       } else if (kind === 'P') {
-        // putImageData ignores the clip too: the clip's corner and the clip itself (as the
-        // block's dirty rectangle) applied here.
-        const b = op[7], ox = clip ? clip[0] : 0, oy = clip ? clip[1] : 0;
+        // An RGBA block, or opaque runs spelled out into one (scantraceRunsPixels): a drag's frame
+        // put its runs' rows with a drawImage each (65 of them), which cost three times putting
+        // the whole blocks' pixels. putImageData ignores the clip too: the clip's corner and the
+        // clip itself (as the block's dirty rectangle) applied here.
+        const b = op[7].cols ? scantraceRunsPixels(op[7]) : op[7], ox = clip ? clip[0] : 0, oy = clip ? clip[1] : 0;
         const dx = clip ? Math.max(0, -op[3]) : 0, dy = clip ? Math.max(0, -op[4]) : 0;
         const dw = (clip ? Math.min(b.width, clip[2] - op[3]) : b.width) - dx;
         const dh = (clip ? Math.min(b.height, clip[3] - op[4]) : b.height) - dy;
         if (dw > 0 && dh > 0)
           ctx.putImageData(new ImageData(b.data, b.width, b.height), ox + op[3], oy + op[4], dx, dy, dw, dh);
       }
-      if (clip) ctx.restore();
     }
+    if (clipped) ctx.restore();
     ctx.restore();
   };
   if (!blocks.length) {
@@ -450,6 +463,32 @@ const char* frame_canvas_script() {
     return Promise.resolve();
   }
   return Promise.all(blocks).then(draw);
+}
+
+// Whether every texel of RGBA bytes is opaque.
+function scantraceOpaque(texels) {
+  for (let i = 3; i < texels.length; i += 4) if (texels[i] !== 255) return false;
+  return true;
+}
+
+// A block of runs ({width, height, cols, rows, texels}) as its RGBA pixels {width, height,
+// data}: each row run's first row spelled out from its texels, the run's other rows copies of it.
+// The pixels are written into one buffer kept for every block drawn (a new one per block was
+// garbage to collect on every mouse move): good until the next block is spelled out.
+function scantraceRunsPixels(b) {
+  const size = b.width * b.height * 4;
+  let keep = scantraceRunsPixels.keep;
+  if (!keep || keep.length < size) keep = scantraceRunsPixels.keep = new Uint8ClampedArray(Math.max(size, 2 * (keep ? keep.length : 0)));
+  const data = size === keep.length ? keep : new Uint8ClampedArray(keep.buffer, 0, size);
+  const out = new Uint32Array(keep.buffer, 0, b.width * b.height);
+  const texel = new Uint32Array(b.texels.buffer, b.texels.byteOffset, b.cols.length * b.rows.length);
+  const w = b.width, cols = b.cols;
+  for (let r = 0, y = 0, t = 0; r < b.rows.length; y += b.rows[r++]) {
+    // A plain loop: runs are a few pixels wide, and a fill() per run cost more than its pixels.
+    for (let c = 0, i = y * w; c < cols.length; ++c, ++t) for (let k = cols[c], v = texel[t]; k > 0; --k) out[i++] = v;
+    for (let k = 1; k < b.rows[r]; ++k) out.copyWithin((y + k) * w, y * w, (y + 1) * w);
+  }
+  return { width: b.width, height: b.height, data };
 }
 
 // A "G" op's glyphs as one path, stroked with the context's colour and width: each stroke point

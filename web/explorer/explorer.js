@@ -21,7 +21,11 @@ export async function start(st) {
 
   const grid = $('grid'), gctx = grid.getContext('2d');
   const frame = $('frame'), fctx = frame.getContext('2d');
-  const fillCanvas = document.createElement('canvas');
+  // The fill is shown in its own pixels on a canvas of its own under the grid's, scaled and moved
+  // by the browser (a CSS transform: the view's zoom and offset), the grid's canvas holding only
+  // what is drawn over it. Drawn into the grid's canvas, 512 x 512 pixels scaled to 720 x 720 on
+  // every mouse move, the fill was a tenth of a drag move's time rasterised (docs/performance.md).
+  const fillCanvas = $('fill');
 
   function showError(e) {
     $('error').textContent = e ? `error: ${e.message || e}` : '';
@@ -102,7 +106,7 @@ export async function start(st) {
   // text and grid are drawn sharp, not resampled.
   // The box's width is kept from the last layout (a ResizeObserver, below): reading clientWidth
   // in a mouse move made the browser lay the page out there and then (the tables had changed).
-  let frameBoxWidth = frame.clientWidth;
+  let frameBoxWidth = frame.clientWidth, gridBoxWidth = grid.clientWidth;
   function frameSize() {
     const w = Math.round(Math.max(320, Math.min(1280, frameBoxWidth * (window.devicePixelRatio || 1))));
     return { width: w, height: Math.max(180, Math.round((w * 9) / 16)) };
@@ -154,24 +158,28 @@ export async function start(st) {
     return plan[s.step] || null;
   }
 
+  // The fill canvas placed where the view puts the image: grid canvas pixels to CSS pixels (the
+  // grid's box over its 720 pixels), then the view's offset and zoom. Set only when it changes (a
+  // pan, a zoom, a resize): a drag's move leaves it.
+  let placed = '';
+  function placeFill() {
+    const k = gridBoxWidth / grid.width;
+    const transform = `scale(${k}) translate(${view.x}px, ${view.y}px) scale(${view.zoom})`;
+    if (transform !== placed) fillCanvas.style.transform = placed = transform;
+    fillCanvas.hidden = !fill;
+  }
+
   function drawGrid() {
     gctx.setTransform(1, 0, 0, 1, 0, 0);
-    // The grey around the image only where the image leaves some of the grid uncovered: its
-    // opaque pixels, sampled nearest, replace every pixel they cover (the course triangle's
-    // default view covers it all, and the fill of 720 x 720 pixels was a third of the grid's
-    // rasterising in a drag's move).
+    gctx.clearRect(0, 0, grid.width, grid.height);
+    placeFill();
     const z = view.zoom;
-    if (!fill || view.x > 0 || view.y > 0 || view.x + fillCanvas.width * z < grid.width || view.y + fillCanvas.height * z < grid.height) {
-      gctx.fillStyle = '#ddd';
-      gctx.fillRect(0, 0, grid.width, grid.height);
-    }
-    gctx.imageSmoothingEnabled = false;
-    gctx.drawImage(fillCanvas, view.x, view.y, fillCanvas.width * view.zoom, fillCanvas.height * view.zoom);
     if (diffPicture) {
       const c = document.createElement('canvas');
       c.width = diffPicture.width;
       c.height = diffPicture.height;
       c.getContext('2d').putImageData(new ImageData(diffPicture.rgba, diffPicture.width, diffPicture.height), 0, 0);
+      gctx.imageSmoothingEnabled = false;
       gctx.drawImage(c, view.x, view.y, c.width * view.zoom, c.height * view.zoom);
     }
     if (z >= 6) {
@@ -470,6 +478,10 @@ export async function start(st) {
   });
   // The frame's box resized (a window resized, a projector, a scroll bar come or gone): the frame
   // composed again at its new size.
+  new ResizeObserver((entries) => {
+    gridBoxWidth = entries[entries.length - 1].contentRect.width;
+    placeFill();
+  }).observe(grid);
   new ResizeObserver((entries) => {
     frameBoxWidth = entries[entries.length - 1].contentRect.width;
     const { width, height } = frameSize();

@@ -326,10 +326,11 @@ try {
     }
   });
 
-  await check('runs of filled rectangles drawn as one path are the rectangles filled one by one', async () => {
+  await check('runs of filled rectangles drawn as one path, and ops of one clip under one clip, are the ops drawn one by one', async () => {
     // drawScantraceFrame fills consecutive filled rectangles of one colour as one path on an
-    // untransformed context; an empty rectangle of another colour put between every two ops
-    // breaks every run, so each is filled alone: the pixels must be the same.
+    // untransformed context, and draws consecutive ops of one clip under one save and clip; an
+    // empty rectangle of another colour and no clip put between every two ops breaks every run
+    // and every group, so each op is drawn alone: the pixels must be the same.
     const r = await b.evaluate(`(() => {
       const st = explorer.module();
       const draw = new Function(st.canvasScript() + '; return drawScantraceFrame;')();
@@ -347,9 +348,13 @@ try {
       for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) ++n;
       let runs = 0;
       f.ops.forEach((op, i) => { const o = f.ops[i + 1]; if (op[0] === 'R' && op[8] < 0 && !op[1] && o && o[0] === 'R' && o[8] < 0 && !o[1] && o[7] === op[7]) ++runs; });
-      return [n, runs];
+      // Clipped ops that follow one of the same clip, and clips that change from one op to the next.
+      let grouped = 0, changed = 0;
+      f.ops.forEach((op, i) => { const o = f.ops[i + 1]; if (op[1] && o && o[1]) (String(o[1]) === String(op[1]) ? ++grouped : ++changed); });
+      return [n, runs, grouped, changed];
     })()`);
     assert.ok(r[1] > 100, `only ${r[1]} filled rectangles follow one of their colour`);
+    assert.ok(r[2] > 100 && r[3] > 0, `${r[2]} clipped ops follow one of their clip, ${r[3]} one of another clip`);
     assert.equal(r[0], 0, `${r[0]} channel values differ`);
   });
 
@@ -397,21 +402,49 @@ try {
     assert.ok(got.every((v, i) => v === want.rgba[i]), 'pixels differ');
   });
 
-  await check('the grid is grey where the fill image leaves it uncovered, after a pan too', async () => {
-    // The grid's pixel at (x, y) of its canvas, RGB.
-    const gridPixel = (x, y) => b.evaluate(`Array.from(document.getElementById('grid').getContext('2d').getImageData(${x}, ${y}, 1, 1).data.slice(0, 3))`);
-    // The default view: the 512 x 512 fill scaled over the whole 720 x 720 grid, its white
-    // background in the corner (the grey is drawn only where the image leaves some uncovered).
+  await check('the grid shows the fill where the view puts it, grey where it leaves the grid uncovered, after a pan too', async () => {
+    // What a person sees (a screenshot of one CSS pixel): the fill is its own canvas under the
+    // grid's drawing, scaled and moved by the browser (explorer.js's placeFill).
+    const r = await b.evaluate("(() => { const r = document.getElementById('grid').getBoundingClientRect(); return [r.left, r.top, r.width / 720]; })()");
+    const seenAt = async ([x, y]) => {
+      const shot = await b.page('Page.captureScreenshot', { format: 'png', clip: { x: Math.floor(x), y: Math.floor(y), width: 1, height: 1, scale: 1 } });
+      return Array.from(decodePng(Buffer.from(shot.data, 'base64')).rgba.slice(0, 3));
+    };
+    // At the grid canvas's pixel (x, y), and at the centre of the image's pixel (x, y).
+    const gridPixel = (x, y) => seenAt([r[0] + (x + 0.5) * r[2], r[1] + (y + 0.5) * r[2]]);
+    const imagePixel = async (x, y) => seenAt(await b.evaluate(`explorer.pixelOnScreen(${x}, ${y})`));
+    // Three image pixels either side of both ends of the triangle's span on rows 100 and 300: a
+    // view placed or scaled a few pixels off shows the other side's colour there (the right edge
+    // does not pass near the image's corner, where a wrong scale moves nothing).
+    const fill = await b.evaluate('explorer.fillPixels()');
+    const rgb = (x, y) => fill.slice((y * 512 + x) * 4, (y * 512 + x) * 4 + 3);
+    const white = (x, y) => rgb(x, y).every((v) => v === 255);
+    const span = (y) => {
+      let x0 = 0;
+      while (white(x0, y)) ++x0;
+      let x1 = x0;
+      while (!white(x1 + 1, y)) ++x1;
+      return [x0, x1];
+    };
+    const edgesSeen = async (y, when) => {
+      const [x0, x1] = span(y);
+      assert.ok(x1 - x0 > 8, `row ${y}: a span of ${x1 - x0 + 1} pixels`);
+      for (const [x, want] of [[x0 - 3, [255, 255, 255]], [x0 + 3, rgb(x0 + 3, y)], [x1 - 3, rgb(x1 - 3, y)], [x1 + 3, [255, 255, 255]]])
+        assert.deepStrictEqual(await imagePixel(x, y), want, `${when}: row ${y}, pixel ${x} (the span is ${x0}..${x1})`);
+    };
+    for (const y of [100, 300]) await edgesSeen(y, 'the default view');
+    // The default view: the 512 x 512 fill over the whole 720 x 720 grid, its white background in
+    // the corner.
     assert.deepStrictEqual(await gridPixel(2, 2), [255, 255, 255]);
     // Panned 60 pixels right and down (a drag off the vertices): the strip it uncovers is grey,
-    // not what the grid showed there before.
-    const r = await b.evaluate("(() => { const r = document.getElementById('grid').getBoundingClientRect(); return [r.left, r.top, r.width / 720]; })()");
+    // and the fill moved with the view.
     const from = [r[0] + 200 * r[2], r[1] + 40 * r[2]], to = [from[0] + 60 * r[2], from[1] + 60 * r[2]];
     await mouse('mousePressed', from);
     await mouse('mouseMoved', to);
     await mouse('mouseReleased', to);
     assert.deepStrictEqual(await gridPixel(20, 20), [221, 221, 221]);
     assert.deepStrictEqual(await gridPixel(700, 700), [255, 255, 255]);
+    await edgesSeen(300, 'after the pan');
     await mouse('mousePressed', to);
     await mouse('mouseMoved', from);
     await mouse('mouseReleased', from);

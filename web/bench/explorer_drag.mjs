@@ -44,14 +44,16 @@ await openTimes(other ? [explorer, other] : [explorer], opens);
 // Chromium records a canvas's drawing calls and rasterises them later, when the frame is
 // presented (in software here, --disable-gpu): the handler's time leaves that out. A drag with
 // `rastered` measures, on either page alike, from a capturing listener (which runs before the
-// page's handler) to one that runs after it and reads a pixel of both canvases, which makes Skia
-// rasterise everything drawn: the move's whole cost, the handler and its pixels.
+// page's handler) to one that runs after it and reads a pixel of every canvas the page shows
+// (the grid, the frame, and since the ninth round the fill's own canvas under the grid), which
+// makes Skia rasterise everything drawn: the move's whole cost, the handler and its pixels.
 const rasterHooks = `(() => {
   window.rasteredTimes = [];
   let t0 = 0;
+  const shown = ['grid', 'frame', 'fill'].map((id) => document.getElementById(id)).filter((c) => c).map((c) => c.getContext('2d'));
   window.addEventListener('mousemove', () => { t0 = performance.now(); }, true);
   window.addEventListener('mousemove', () => {
-    for (const id of ['grid', 'frame']) document.getElementById(id).getContext('2d').getImageData(0, 0, 1, 1);
+    for (const g of shown) g.getImageData(0, 0, 1, 1);
     window.rasteredTimes.push(performance.now() - t0);
   });
 })()`;

@@ -84,9 +84,10 @@ TEST_CASE("integral floats are accepted as face indices and canvas sizes", "[sce
   CHECK(s.faces[0] == std::array<int, 3>{0, 1, 2});
 }
 
-TEST_CASE("scene errors name the file and the element", "[scene_json][errors]") {
-  const std::string three_vertices = R"("vertices": [[0,0],[10,0],[0,10]], )";
+// The start of a scene of three vertices, for the errors of what follows them.
+const std::string three_vertices = R"("vertices": [[0,0],[10,0],[0,10]], )";
 
+TEST_CASE("scene errors name the file: syntax and missing keys", "[scene_json][errors]") {
   SECTION("JSON syntax errors give line and column") {
     CHECK(load_error("{\n  \"vertices\": [[0, 0]],\n  \"faces\": [[0, 0, tru]]\n}")
               .rfind("scene.json:3:23: JSON syntax error: ", 0) == 0);
@@ -104,6 +105,9 @@ TEST_CASE("scene errors name the file and the element", "[scene_json][errors]") 
     CHECK_THAT(load_error("[1, 2, 3]"), Catch::StartsWith("scene.json: expected a JSON object") &&
                                             Catch::EndsWith("got [1,2,3]"));
   }
+}
+
+TEST_CASE("scene errors name the file and the element of a wrong shape", "[scene_json][errors]") {
   SECTION("wrong shape of an element") {
     CHECK(load_error(R"({"vertices": [[0,0],[1,1],[2,2],[3,3],[1,2,3]], "faces": [], )" +
                      kValidTail + "}") ==
@@ -139,6 +143,9 @@ TEST_CASE("scene errors name the file and the element", "[scene_json][errors]") 
     CHECK(message.size() < 140);
     CHECK_THAT(message, Catch::EndsWith("..."));
   }
+}
+
+TEST_CASE("scene errors name the file and the element of a wrong meaning", "[scene_json][errors]") {
   SECTION("problems of meaning, found by validate()") {
     CHECK(load_error("{" + three_vertices + R"("faces": [[0,1,2],[0,7,1]], )" + kValidTail + "}") ==
           "scene.json: faces[1]: vertex index 7 is out of range (3 vertices)");

@@ -63,6 +63,80 @@ std::vector<viz::Mark> main_view(const std::vector<viz::Mark>& marks, viz::MarkK
   return out;
 }
 
+// One vertex mark per vertex the view shows, centred on it, named after it.
+void check_vertex_marks(const std::vector<viz::Mark>& marks, const viz::ViewGeometry& g,
+                        const std::vector<Vec2>& corners, const viz::Typography& type) {
+  const viz::Rect& view = g.view();
+  const std::vector<viz::Mark> vertices = main_view(marks, viz::MarkKind::vertex);
+  std::size_t visible = 0;
+  for (std::size_t v = 0; v < corners.size(); ++v) {
+    const viz::Point q = rounded(g.to_frame(corners[v].x, corners[v].y));
+    if (!view.contains(q)) continue;
+    ++visible;
+    const std::string name = fmt::format("v{}", v);
+    INFO("vertex " << name << " at " << q.x << "," << q.y);
+    const auto it = std::find_if(vertices.begin(), vertices.end(),
+                                 [&](const viz::Mark& m) { return m.what == name; });
+    REQUIRE(it != vertices.end());
+    const int ring = type.px(7) + type.px(2);
+    // The box is the marker's, clipped to the view: inside, its centre is the vertex.
+    if ((viz::Rect(q.x - ring, q.y - ring, 2 * ring + 1, 2 * ring + 1) & view) ==
+        viz::Rect(q.x - ring, q.y - ring, 2 * ring + 1, 2 * ring + 1)) {
+      CHECK(std::abs(centre(it->box).x - (q.x + 0.5)) <= 0.5);
+      CHECK(std::abs(centre(it->box).y - (q.y + 0.5)) <= 0.5);
+    }
+  }
+  CHECK(vertices.size() == visible);
+}
+
+// One mark per visible active point of the row, named after its edge, on the point.
+void check_active_point_marks(const std::vector<viz::Mark>& marks, const viz::ViewGeometry& g,
+                              const trace::Scanline& row) {
+  const std::vector<viz::Mark> points = main_view(marks, viz::MarkKind::active_point);
+  std::size_t shown = 0;
+  for (const trace::ActivePoint& p : row.active_points) {
+    const viz::Point q = rounded(g.to_frame(p.x, double(row.y)));
+    if (!g.view().contains(q)) continue;
+    ++shown;
+    INFO("active point of edge " << p.edge << " at x = " << p.x);
+    const bool found = std::any_of(points.begin(), points.end(), [&](const viz::Mark& m) {
+      return m.what == fmt::format("e{}", p.edge) && m.box.contains(q);
+    });
+    CHECK(found);
+  }
+  CHECK(points.size() == shown);
+}
+
+// The scanline, once, on the row; one box per span (or per inside interval), around its cells.
+void check_row_marks(const std::vector<viz::Mark>& marks, const viz::ViewGeometry& g,
+                     const trace::Scanline& row) {
+  const std::vector<viz::Mark> lines = main_view(marks, viz::MarkKind::scanline);
+  REQUIRE(lines.size() == 1);
+  CHECK(lines[0].what == fmt::format("y = {}", row.y));
+  const double y = g.to_frame(0, double(row.y)).y;
+  CHECK(std::abs(centre(lines[0].box).y - y) <= 1.5);
+  std::vector<trace::Span> spans;
+  if (row.intervals)
+    for (const trace::Interval& iv : *row.intervals) spans.push_back(iv.pixels);
+  else if (row.span)
+    spans.push_back(*row.span);
+  std::erase_if(spans, [](const trace::Span& sp) { return sp.size() <= 0; });
+  const std::vector<viz::Mark> boxes = main_view(marks, viz::MarkKind::span);
+  CHECK(boxes.size() == spans.size());
+  for (const trace::Span& sp : spans) {
+    const std::string name = fmt::format("[{}, {})", sp.x_begin, sp.x_end);
+    INFO("span " << name);
+    const auto it = std::find_if(boxes.begin(), boxes.end(),
+                                 [&](const viz::Mark& m) { return m.what == name; });
+    REQUIRE(it != boxes.end());
+    // The span's first and last cells' centres lie inside the box (where the view shows them).
+    for (std::int64_t x : {sp.x_begin, sp.x_end - 1}) {
+      const viz::Point q = rounded(g.to_frame(double(x), double(row.y)));
+      if (g.view().contains(q)) CHECK(it->box.contains(q));
+    }
+  }
+}
+
 }  // namespace
 
 TEST_CASE("every frame of a replay has the marks its trace implies", "[viz][display-list]") {
@@ -83,30 +157,7 @@ TEST_CASE("every frame of a replay has the marks its trace implies", "[viz][disp
       const std::vector<viz::Mark> marks = f.marks();
       const std::optional<viz::ViewGeometry> g = s.geometry(i);
       if (!g) continue;
-      const viz::Rect& view = g->view();
-
-      // One vertex mark per vertex the view shows, centred on it, named after it.
-      const std::vector<viz::Mark> vertices = main_view(marks, viz::MarkKind::vertex);
-      std::size_t visible = 0;
-      for (std::size_t v = 0; v < corners.size(); ++v) {
-        const viz::Point q = rounded(g->to_frame(corners[v].x, corners[v].y));
-        if (!view.contains(q)) continue;
-        ++visible;
-        const std::string name = fmt::format("v{}", v);
-        INFO("vertex " << name << " at " << q.x << "," << q.y);
-        const auto it = std::find_if(vertices.begin(), vertices.end(),
-                                     [&](const viz::Mark& m) { return m.what == name; });
-        REQUIRE(it != vertices.end());
-        const int ring = type.px(7) + type.px(2);
-        // The box is the marker's, clipped to the view: inside, its centre is the vertex.
-        if ((viz::Rect(q.x - ring, q.y - ring, 2 * ring + 1, 2 * ring + 1) & view) ==
-            viz::Rect(q.x - ring, q.y - ring, 2 * ring + 1, 2 * ring + 1)) {
-          CHECK(std::abs(centre(it->box).x - (q.x + 0.5)) <= 0.5);
-          CHECK(std::abs(centre(it->box).y - (q.y + 0.5)) <= 0.5);
-        }
-      }
-      CHECK(vertices.size() == visible);
-
+      check_vertex_marks(marks, *g, corners, type);
       const trace::Scanline* row = step.kind == viz::StepKind::scanlines
                                        ? viz::find_scanline(c.trace, step.triangle, step.last_row)
                                        : nullptr;
@@ -116,47 +167,8 @@ TEST_CASE("every frame of a replay has the marks its trace implies", "[viz][disp
         continue;
       }
       ++scanline_frames;
-      // One mark per visible active point, named after its edge, on the point.
-      const std::vector<viz::Mark> points = main_view(marks, viz::MarkKind::active_point);
-      std::size_t shown = 0;
-      for (const trace::ActivePoint& p : row->active_points) {
-        const viz::Point q = rounded(g->to_frame(p.x, double(row->y)));
-        if (!view.contains(q)) continue;
-        ++shown;
-        INFO("active point of edge " << p.edge << " at x = " << p.x);
-        const bool found = std::any_of(points.begin(), points.end(), [&](const viz::Mark& m) {
-          return m.what == fmt::format("e{}", p.edge) && m.box.contains(q);
-        });
-        CHECK(found);
-      }
-      CHECK(points.size() == shown);
-      // The scanline, once, on the row.
-      const std::vector<viz::Mark> lines = main_view(marks, viz::MarkKind::scanline);
-      REQUIRE(lines.size() == 1);
-      CHECK(lines[0].what == fmt::format("y = {}", row->y));
-      const double y = g->to_frame(0, double(row->y)).y;
-      CHECK(std::abs(centre(lines[0].box).y - y) <= 1.5);
-      // One box per span (or per inside interval), around its cells.
-      std::vector<trace::Span> spans;
-      if (row->intervals)
-        for (const trace::Interval& iv : *row->intervals) spans.push_back(iv.pixels);
-      else if (row->span)
-        spans.push_back(*row->span);
-      std::erase_if(spans, [](const trace::Span& sp) { return sp.size() <= 0; });
-      const std::vector<viz::Mark> boxes = main_view(marks, viz::MarkKind::span);
-      CHECK(boxes.size() == spans.size());
-      for (const trace::Span& sp : spans) {
-        const std::string name = fmt::format("[{}, {})", sp.x_begin, sp.x_end);
-        INFO("span " << name);
-        const auto it = std::find_if(boxes.begin(), boxes.end(),
-                                     [&](const viz::Mark& m) { return m.what == name; });
-        REQUIRE(it != boxes.end());
-        // The span's first and last cells' centres lie inside the box (where the view shows them).
-        for (std::int64_t x : {sp.x_begin, sp.x_end - 1}) {
-          const viz::Point q = rounded(g->to_frame(double(x), double(row->y)));
-          if (view.contains(q)) CHECK(it->box.contains(q));
-        }
-      }
+      check_active_point_marks(marks, *g, *row);
+      check_row_marks(marks, *g, *row);
     }
     CHECK(scanline_frames > 0);
   }

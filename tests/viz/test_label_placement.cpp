@@ -104,6 +104,90 @@ std::vector<Case> cases() {
   return out;
 }
 
+// The marks a frame's labels must keep off (computed from the trace through the view, with the
+// markers' documented sizes) and the label texts (prefixes) it must show: every visible vertex,
+// and on a scanline step every visible active point and the row.
+struct Expected {
+  std::vector<Disc> marks;
+  std::vector<std::string> wanted;
+};
+
+Expected expected_marks(const viz::ViewGeometry& g, const std::vector<Vec2>& corners,
+                        const trace::Scanline* row, const viz::Typography& type) {
+  const cv::Rect& view = g.view();
+  const auto shown = [&](const cv::Point2d& p) {
+    return view.contains(cv::Point(int(std::lround(p.x)), int(std::lround(p.y))));
+  };
+  Expected e;
+  for (std::size_t v = 0; v < corners.size(); ++v) {
+    const cv::Point2d p = g.to_frame(corners[v].x, corners[v].y);
+    if (!shown(p)) continue;
+    e.marks.push_back({p, double(type.px(7) + type.px(2)), fmt::format("vertex v{}", v)});
+    e.wanted.push_back(fmt::format("v{} ", v));
+  }
+  if (!row) return e;
+  for (const trace::ActivePoint& p : row->active_points) {
+    const cv::Point2d q = g.to_frame(p.x, double(row->y));
+    if (!shown(q)) continue;
+    e.marks.push_back({q, double(type.px(6) + type.px(2)), fmt::format("x = {}", p.x)});
+    // The label says the trace's x to two decimals.
+    e.wanted.push_back(fmt::format("x = {:.2f}", p.x));
+  }
+  e.wanted.push_back(fmt::format("y = {}", row->y));
+  return e;
+}
+
+// Every wanted text is a label's (an x to within its two decimals).
+void check_labels_shown(const std::vector<const viz::PlacedBox*>& covering,
+                        const std::vector<std::string>& wanted) {
+  for (const std::string& w : wanted) {
+    INFO("label wanted: " << w);
+    const bool found = std::any_of(covering.begin(), covering.end(), [&](const auto* p) {
+      if (p->kind != viz::PlacedKind::label) return false;
+      if (w.rfind("x = ", 0) == 0 && p->text.rfind("x = ", 0) == 0)
+        return std::abs(std::stod(p->text.substr(4)) - std::stod(w.substr(4))) < 0.0051;
+      return p->text.rfind(w, 0) == 0;
+    });
+    CHECK(found);
+  }
+}
+
+// The main view's labels and insets lie inside it, over no mark and no other of them.
+void check_nothing_covered(const std::vector<const viz::PlacedBox*>& covering,
+                           const std::vector<Disc>& marks, const cv::Rect& view) {
+  for (std::size_t k = 0; k < covering.size(); ++k) {
+    const viz::PlacedBox& p = *covering[k];
+    INFO((p.kind == viz::PlacedKind::inset ? "inset " : "label ") << p.text << " at "
+                                                                  << describe(p.box));
+    CHECK((p.box & view) == p.box);
+    for (const Disc& d : marks) {
+      INFO("over " << d.what);
+      CHECK_FALSE(overlaps(p.box, d));
+    }
+    for (std::size_t j = k + 1; j < covering.size(); ++j) {
+      INFO("and " << covering[j]->text << " at " << describe(covering[j]->box));
+      CHECK((p.box & covering[j]->box).empty());
+    }
+  }
+}
+
+// Inside an inset, its own x labels keep off its points and its title.
+void check_inset_layers(const std::vector<viz::PlacedBox>& placed) {
+  for (const int layer : {1, 2}) {
+    std::vector<const viz::PlacedBox*> in;
+    for (const viz::PlacedBox& p : placed)
+      if (p.layer == layer) in.push_back(&p);
+    for (std::size_t k = 0; k < in.size(); ++k)
+      for (std::size_t j = k + 1; j < in.size(); ++j) {
+        if (in[k]->kind != viz::PlacedKind::label && in[j]->kind != viz::PlacedKind::label)
+          continue;  // two markers may touch: the points of a row meeting at a vertex
+        INFO("inset " << layer << ": " << in[k]->text << " " << describe(in[k]->box) << " and "
+                      << in[j]->text << " " << describe(in[j]->box));
+        CHECK((in[k]->box & in[j]->box).empty());
+      }
+  }
+}
+
 }  // namespace
 
 TEST_CASE("labels and zoom insets cover no marker and no other label", "[viz][placement]") {
@@ -126,78 +210,23 @@ TEST_CASE("labels and zoom insets cover no marker and no other label", "[viz][pl
         const bool shows_vertices = g && step.kind != viz::StepKind::painter_batch &&
                                     step.kind != viz::StepKind::scene_done;
         if (!shows_vertices) continue;
-        const cv::Rect& view = g->view();
-
-        std::vector<Disc> marks;
-        std::vector<std::string> wanted;  // label texts (prefixes) the frame must show
-        for (std::size_t v = 0; v < corners.size(); ++v) {
-          const cv::Point2d p = g->to_frame(corners[v].x, corners[v].y);
-          if (!view.contains(cv::Point(int(std::lround(p.x)), int(std::lround(p.y))))) continue;
-          marks.push_back({p, double(type.px(7) + type.px(2)), fmt::format("vertex v{}", v)});
-          wanted.push_back(fmt::format("v{} ", v));
-        }
         const trace::Scanline* row = step.kind == viz::StepKind::scanlines
                                          ? viz::find_scanline(c.trace, step.triangle, step.last_row)
                                          : nullptr;
-        if (row) {
-          for (const trace::ActivePoint& p : row->active_points) {
-            const cv::Point2d q = g->to_frame(p.x, double(row->y));
-            if (!view.contains(cv::Point(int(std::lround(q.x)), int(std::lround(q.y))))) continue;
-            marks.push_back({q, double(type.px(6) + type.px(2)), fmt::format("x = {}", p.x)});
-            // The label says the trace's x to two decimals.
-            wanted.push_back(fmt::format("x = {:.2f}", p.x));
-          }
-          wanted.push_back(fmt::format("y = {}", row->y));
-        }
-
+        const Expected e = expected_marks(*g, corners, row, type);
         std::vector<const viz::PlacedBox*> covering;  // labels and insets of the main view
         for (const viz::PlacedBox& p : placed)
           if (p.layer == 0 &&
               (p.kind == viz::PlacedKind::label || p.kind == viz::PlacedKind::inset))
             covering.push_back(&p);
-        for (const std::string& w : wanted) {
-          INFO("label wanted: " << w);
-          const bool found = std::any_of(covering.begin(), covering.end(), [&](const auto* p) {
-            if (p->kind != viz::PlacedKind::label) return false;
-            if (w.rfind("x = ", 0) == 0 && p->text.rfind("x = ", 0) == 0)
-              return std::abs(std::stod(p->text.substr(4)) - std::stod(w.substr(4))) < 0.0051;
-            return p->text.rfind(w, 0) == 0;
-          });
-          CHECK(found);
-        }
-        for (std::size_t k = 0; k < covering.size(); ++k) {
-          const viz::PlacedBox& p = *covering[k];
-          INFO((p.kind == viz::PlacedKind::inset ? "inset " : "label ")
-               << p.text << " at " << describe(p.box));
-          CHECK((p.box & view) == p.box);
-          for (const Disc& d : marks) {
-            INFO("over " << d.what);
-            CHECK_FALSE(overlaps(p.box, d));
-          }
-          for (std::size_t j = k + 1; j < covering.size(); ++j) {
-            INFO("and " << covering[j]->text << " at " << describe(covering[j]->box));
-            CHECK((p.box & covering[j]->box).empty());
-          }
-        }
+        check_labels_shown(covering, e.wanted);
+        check_nothing_covered(covering, e.marks, g->view());
         // Cells too small for a grid: the span's ends are shown in insets, which found room.
         if (row && !row->active_points.empty() && g->cell() < viz::GridView::kMinGridCell)
           CHECK(std::count_if(covering.begin(), covering.end(), [](const auto* p) {
                   return p->kind == viz::PlacedKind::inset;
                 }) >= 1);
-        // Inside an inset, its own x labels keep off its points and its title.
-        for (const int layer : {1, 2}) {
-          std::vector<const viz::PlacedBox*> in;
-          for (const viz::PlacedBox& p : placed)
-            if (p.layer == layer) in.push_back(&p);
-          for (std::size_t k = 0; k < in.size(); ++k)
-            for (std::size_t j = k + 1; j < in.size(); ++j) {
-              if (in[k]->kind != viz::PlacedKind::label && in[j]->kind != viz::PlacedKind::label)
-                continue;  // two markers may touch: the points of a row meeting at a vertex
-              INFO("inset " << layer << ": " << in[k]->text << " " << describe(in[k]->box)
-                            << " and " << in[j]->text << " " << describe(in[j]->box));
-              CHECK((in[k]->box & in[j]->box).empty());
-            }
-        }
+        check_inset_layers(placed);
       }
     }
 }

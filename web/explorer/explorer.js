@@ -27,9 +27,16 @@ export async function start(st) {
   // every mouse move, the fill was a tenth of a drag move's time rasterised (docs/performance.md).
   const fillCanvas = $('fill');
 
+  // A text shown, set only when it changed: every text set makes the browser lay the page out
+  // again before the next mouse move is dispatched (its hit test), and a drag's move sets seven.
+  function show(id, text) {
+    const el = $(id);
+    if (el.textContent !== text) el.textContent = text;
+  }
+
   function showError(e) {
-    $('error').textContent = e ? `error: ${e.message || e}` : '';
-    $('error').hidden = !e;
+    show('error', e ? `error: ${e.message || e}` : '');
+    if ($('error').hidden !== !e) $('error').hidden = !e;
   }
 
   function fillOptions() {
@@ -79,7 +86,7 @@ export async function start(st) {
       stages.fill = performance.now() - t0;
       composeStep();
       stages.frame = performance.now() - t0;
-      $('fill-ms').textContent = s.mode === 'scene' ? `render ${fill.ms.toFixed(2)} ms` : `fill and trace ${fill.ms.toFixed(1)} ms`;
+      show('fill-ms', s.mode === 'scene' ? `render ${fill.ms.toFixed(2)} ms` : `fill and trace ${fill.ms.toFixed(1)} ms`);
     } catch (e) {
       showError(e);
     }
@@ -242,34 +249,34 @@ export async function start(st) {
 
   function drawStep() {
     const n = plan.length;
-    $('step-no').textContent = n ? `step ${s.step + 1} / ${n}` : 'no steps';
+    show('step-no', n ? `step ${s.step + 1} / ${n}` : 'no steps');
     if (!n || !shownFrame) return;
     if (frame.width !== shownFrame.w || frame.height !== shownFrame.h) {
       frame.width = shownFrame.w;
       frame.height = shownFrame.h;
     }
     drawFrame(fctx, shownFrame);
-    frame.dataset.step = String(s.step);
+    if (frame.dataset.step !== String(s.step)) frame.dataset.step = String(s.step);
   }
 
   function showTables() {
     const step = currentStep();
-    $('step-kind').textContent = step ? `${step.kind}${step.kind === 'scanlines' ? ` rows ${step.first_row}..${step.last_row}` : ''}` : '';
+    show('step-kind', step ? `${step.kind}${step.kind === 'scanlines' ? ` rows ${step.first_row}..${step.last_row}` : ''}` : '');
     const table = shown && shown.edge_table;
-    $('edge-table').textContent = table
+    show('edge-table', table
       ? table.edges.map((e) => `edge ${e.edge}: (${e.from}) -> (${e.to})  rows ${e.first_row}..${e.last_row}  x@ymin ${e.x_at_y_min}  dx/dy ${e.dx_dy}`).join('\n')
-      : '(none: the trace is at triangle level, or no edge)';
+      : '(none: the trace is at triangle level, or no edge)');
     const row = step && step.kind === 'scanlines' && shown ? shown.scanline : null;
-    $('active').textContent = row
+    show('active', row
       ? [`y = ${row.y}  entered [${row.entered}]  retired [${row.retired}]`,
         ...row.active_edges.map((a) => `edge ${a.edge}  x = ${a.x}`),
         ...(row.active_points || []).map((p) => `point x = ${p.x}  colour (${p.color.map((c) => c.toFixed(3)).join(', ')})`),
         ...(row.span ? [`span [${row.span.x_begin}, ${row.span.x_end})`] : []),
         ...((row.spans || []).map((sp) => `span [${sp.x_begin}, ${sp.x_end})`))].join('\n')
-      : '(choose a scanline step: \u2192 \u2190)';
-    $('events').textContent = !shown ? ''
+      : '(choose a scanline step: \u2192 \u2190)');
+    show('events', !shown ? ''
       : traceText === null ? `${shown.events} events (their JSON Lines written when the vertex is let go)`
-        : `${shown.events} events, ${traceText.length} bytes of JSON Lines`;
+        : `${shown.events} events, ${traceText.length} bytes of JSON Lines`);
   }
 
   function setStep(k) {

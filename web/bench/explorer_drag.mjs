@@ -6,14 +6,15 @@
 // returns once the renderer has handled the event); and, in drags of their own, the move with its
 // pixels rasterised (rasterHooks below). Medians; nothing is asserted.
 //
-//   node --experimental-websocket web/bench/explorer_drag.mjs EXPLORER.html [OPENS] [MOVES] [OTHER.html]
+//   node --experimental-websocket web/bench/explorer_drag.mjs EXPLORER.html [OPENS] [MOVES] [OTHER.html] [ROUNDS]
 // With OTHER.html (another build's explorer, e.g. main's), the opens alternate between the two
-// pages, each in a fresh browser, and so do the drags (four rounds, each page first in two); both medians printed.
+// pages, each in a fresh browser, and so do the drags (ROUNDS rounds, four unless given, an even
+// number: each page first in half of them); both medians printed.
 import path from 'node:path';
 
 import { launch, until } from '../tests/cdp.mjs';
 
-const [explorer, opensArg, movesArg, other] = process.argv.slice(2);
+const [explorer, opensArg, movesArg, other, roundsArg] = process.argv.slice(2);
 const opens = Number(opensArg || 7), moves = Number(movesArg || 200);
 const median = (v) => [...v].sort((a, b) => a - b)[v.length >> 1];
 const quartiles = (v) => { const s = [...v].sort((a, b) => a - b); return [s[s.length >> 2], s[(3 * s.length) >> 2]]; };
@@ -93,12 +94,16 @@ async function dragTimes(page, moves, rastered = false) {
   }
 }
 
-// With OTHER.html, the drags alternate between the two pages in four rounds of MOVES / 4 moves
+// With OTHER.html, the drags alternate between the two pages in ROUNDS rounds of MOVES / ROUNDS moves
 // (the machine's load shifts over a run: each page gets its share of every period), each page
 // first in two of them: whichever page went first in every round came out 1-2.5 ms slower a
 // move, the same page listed first or second (docs/performance.md).
 const pages = other ? [explorer, other] : [explorer];
-const rounds = other ? 4 : 1;
+const rounds = other ? Number(roundsArg || 4) : 1;
+if (!(Number.isInteger(rounds) && rounds > 0 && (rounds === 1 || rounds % 2 === 0))) {
+  console.error(`explorer_drag.mjs: ROUNDS must be an even number of rounds (each page first in half of them), got ${roundsArg}`);
+  process.exit(2);
+}
 const times = pages.map(() => ({ handler: [], trip: [], stages: [], rastered: [], rounds: [] }));
 for (let r = 0; r < rounds; ++r)
   for (const [k, page] of (r % 2 ? [...pages.entries()].reverse() : [...pages.entries()])) {

@@ -16,6 +16,11 @@ import { launch, until } from '../tests/cdp.mjs';
 
 const [explorer, opensArg, movesArg, other, roundsArg] = process.argv.slice(2);
 const opens = Number(opensArg || 7), moves = Number(movesArg || 200);
+const rounds = other ? Number(roundsArg || 4) : 1;
+if (!(Number.isInteger(rounds) && rounds > 0 && (rounds === 1 || rounds % 2 === 0))) {
+  console.error(`explorer_drag.mjs: ROUNDS must be an even number of rounds (each page first in half of them), got ${roundsArg}`);
+  process.exit(2);
+}
 const median = (v) => [...v].sort((a, b) => a - b)[v.length >> 1];
 const quartiles = (v) => { const s = [...v].sort((a, b) => a - b); return [s[s.length >> 2], s[(3 * s.length) >> 2]]; };
 
@@ -96,14 +101,9 @@ async function dragTimes(page, moves, rastered = false) {
 
 // With OTHER.html, the drags alternate between the two pages in ROUNDS rounds of MOVES / ROUNDS moves
 // (the machine's load shifts over a run: each page gets its share of every period), each page
-// first in two of them: whichever page went first in every round came out 1-2.5 ms slower a
+// first in half of them: whichever page went first in every round came out 1-2.5 ms slower a
 // move, the same page listed first or second (docs/performance.md).
 const pages = other ? [explorer, other] : [explorer];
-const rounds = other ? Number(roundsArg || 4) : 1;
-if (!(Number.isInteger(rounds) && rounds > 0 && (rounds === 1 || rounds % 2 === 0))) {
-  console.error(`explorer_drag.mjs: ROUNDS must be an even number of rounds (each page first in half of them), got ${roundsArg}`);
-  process.exit(2);
-}
 const times = pages.map(() => ({ handler: [], trip: [], stages: [], rastered: [], rounds: [] }));
 for (let r = 0; r < rounds; ++r)
   for (const [k, page] of (r % 2 ? [...pages.entries()].reverse() : [...pages.entries()])) {

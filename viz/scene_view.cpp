@@ -100,94 +100,98 @@ void draw_scene_view(FrameView& frame, const ViewGeometry& geometry, const Typog
   }
 }
 
-void draw_scene_panel(FrameView& frame, const Rect& area, const Typography& type,
-                      const trace::Trace& trace, const StepPlan& plan, const SceneSummary& scene,
-                      const Step& step, const CanvasState& state) {
-  PanelWriter w(frame, area, type);
-  const std::size_t n = plan.order.size();
-  const bool zbuffer = uses_zbuffer(trace.header());
+namespace {
+
+// The panel's heading: the finished image, or which triangles of the order this step draws.
+void scene_panel_heading(PanelWriter& w, const Step& step, std::size_t n, bool zbuffer,
+                         const SceneSummary& scene) {
   const char* order = zbuffer ? "scene order" : "drawing order";
   if (step.kind == StepKind::scene_done) {
     w.heading("The finished image");
     w.paragraph(fmt::format("{} triangles drawn, {} skipped.",
                             integer(static_cast<std::int64_t>(n - scene.skipped)),
                             integer(static_cast<std::int64_t>(scene.skipped))));
-  } else {
-    w.heading(zbuffer ? "Z-buffer: a depth test per pixel" : "Painter's algorithm: far to near");
-    const auto count = [](std::size_t v) { return integer(static_cast<std::int64_t>(v)); };
-    // Positions in the order drawn, 1-based; the table below lists the faces by their index.
-    w.line(step.first == step.last
-               ? fmt::format("Drawn: number {} of {} in {}", count(step.first + 1), count(n), order)
-               : fmt::format("Drawn: numbers {} .. {} of {} in {}", count(step.first + 1),
-                             count(step.last + 1), count(n), order),
-           TextStyle::strong);
+    return;
   }
-  w.gap(6);
+  w.heading(zbuffer ? "Z-buffer: a depth test per pixel" : "Painter's algorithm: far to near");
+  const auto count = [](std::size_t v) { return integer(static_cast<std::int64_t>(v)); };
+  // Positions in the order drawn, 1-based; the table below lists the faces by their index.
+  w.line(step.first == step.last
+             ? fmt::format("Drawn: number {} of {} in {}", count(step.first + 1), count(n), order)
+             : fmt::format("Drawn: numbers {} .. {} of {} in {}", count(step.first + 1),
+                           count(step.last + 1), count(n), order),
+         TextStyle::strong);
+}
+
+// How the scene's triangles are ordered (a depth test, or the painter's sort with its depth bar).
+void scene_panel_method(PanelWriter& w, const Typography& type, const SceneSummary& scene,
+                        const Step& step, bool zbuffer) {
   if (zbuffer) {
     w.paragraph(
         "The triangles are drawn in the order of the scene. At every pixel a triangle covers, "
         "its depth there (the plane through its snapped vertices and their depths) is compared "
         "with the depth stored for that pixel: if nearer (smaller), the pixel is written and its "
         "depth stored; otherwise it is rejected (x). Equal depths keep the first triangle.");
-  } else {
-    w.paragraph(
-        "A triangle's depth is the mean of its three vertex depths. The largest depth (farthest) "
-        "is drawn first; nearer triangles come later and paint over what lies behind them. Equal "
-        "depths keep the order of the faces.");
-    w.gap(8);
-    const std::optional<double> current =
-        step.kind == StepKind::painter_batch && step.last < scene.depth.size()
-            ? scene.depth[step.last]
-            : scene.min_depth;
-    depth_bar(w, type, scene, current);
+    return;
   }
+  w.paragraph(
+      "A triangle's depth is the mean of its three vertex depths. The largest depth (farthest) "
+      "is drawn first; nearer triangles come later and paint over what lies behind them. Equal "
+      "depths keep the order of the faces.");
   w.gap(8);
+  const std::optional<double> current =
+      step.kind == StepKind::painter_batch && step.last < scene.depth.size()
+          ? scene.depth[step.last]
+          : scene.min_depth;
+  depth_bar(w, type, scene, current);
+}
 
-  if (step.kind == StepKind::painter_batch) {
-    if (const trace::TriangleBegin* b = find_begin(trace, step.triangle)) {
-      w.line(b->depth ? fmt::format("Highlighted: face {}, depth {}", step.triangle,
-                                    number(*b->depth, 4))
-                      : fmt::format("Highlighted: face {}", step.triangle),
-             TextStyle::strong);
-      std::string vs = "vertices";
-      for (const Vec2& v : b->vertices) {
-        vs += "  ";
-        vs += point(v, 1);
-      }
-      w.line(vs);
-      for (std::size_t i = 0; i < b->colors.size(); ++i)
-        w.swatch(b->colors[i], fmt::format("v{}  {}", i, colour(b->colors[i])), TextStyle::small);
-      w.gap(6);
+// A painter's batch: the highlighted face, then the batch's last triangles as a table.
+void scene_panel_batch(PanelWriter& w, const trace::Trace& trace, const StepPlan& plan,
+                       const SceneSummary& scene, const Step& step) {
+  const std::size_t n = plan.order.size();
+  if (const trace::TriangleBegin* b = find_begin(trace, step.triangle)) {
+    w.line(b->depth ? fmt::format("Highlighted: face {}, depth {}", step.triangle,
+                                  number(*b->depth, 4))
+                    : fmt::format("Highlighted: face {}", step.triangle),
+           TextStyle::strong);
+    std::string vs = "vertices";
+    for (const Vec2& v : b->vertices) {
+      vs += "  ";
+      vs += point(v, 1);
     }
-    std::vector<TableRow> rows;
-    const std::size_t first = step.last + 1 - step.first > kListedTriangles
-                                  ? step.last + 1 - kListedTriangles
-                                  : step.first;
-    if (first > step.first)
-      w.line(fmt::format("... {} more triangles earlier in this step",
-                         integer(static_cast<std::int64_t>(first - step.first))),
-             TextStyle::small, palette::kMutedText);
-    for (std::size_t i = first; i <= step.last && i < n; ++i) {
-      const int t = plan.order[i];
-      TableRow r;
-      const auto end = trace.triangle_end(t);
-      const auto skipped = trace.skipped(t);
-      r.cells = {std::to_string(t), depth_text(scene.depth[i]), end ? integer(end->rows) : "-",
-                 skipped ? skipped->reason
-                 : end   ? integer(end->pixels)
-                         : "-"};
-      r.highlighted = t == step.triangle;
-      r.muted = skipped.has_value();
-      rows.push_back(r);
-    }
-    w.table({{"face"}, {"depth"}, {"rows"}, {"pixels"}}, rows);
-    w.gap(8);
+    w.line(vs);
+    for (std::size_t i = 0; i < b->colors.size(); ++i)
+      w.swatch(b->colors[i], fmt::format("v{}  {}", i, colour(b->colors[i])), TextStyle::small);
+    w.gap(6);
   }
-  if (trace.header().level == "triangle")
-    w.paragraph(
-        "This trace holds no scanlines (level triangle): the pixels shown are filled again "
-        "from each triangle's recorded vertices and colours by the same fill.",
-        TextStyle::small, palette::kMutedText);
+  std::vector<TableRow> rows;
+  const std::size_t first = step.last + 1 - step.first > kListedTriangles
+                                ? step.last + 1 - kListedTriangles
+                                : step.first;
+  if (first > step.first)
+    w.line(fmt::format("... {} more triangles earlier in this step",
+                       integer(static_cast<std::int64_t>(first - step.first))),
+           TextStyle::small, palette::kMutedText);
+  for (std::size_t i = first; i <= step.last && i < n; ++i) {
+    const int t = plan.order[i];
+    TableRow r;
+    const auto end = trace.triangle_end(t);
+    const auto skipped = trace.skipped(t);
+    r.cells = {std::to_string(t), depth_text(scene.depth[i]), end ? integer(end->rows) : "-",
+               skipped ? skipped->reason
+               : end   ? integer(end->pixels)
+                       : "-"};
+    r.highlighted = t == step.triangle;
+    r.muted = skipped.has_value();
+    rows.push_back(r);
+  }
+  w.table({{"face"}, {"depth"}, {"rows"}, {"pixels"}}, rows);
+  w.gap(8);
+}
+
+// The pixels written so far (and rejected, or written over) and the method's formulas.
+void scene_panel_counts(PanelWriter& w, bool zbuffer, const CanvasState& state) {
   if (zbuffer) {
     w.line(fmt::format("Pixels written (depth test passed): {}", integer(state.writes())),
            TextStyle::body);
@@ -197,14 +201,34 @@ void draw_scene_panel(FrameView& frame, const Rect& area, const Typography& type
     w.formula({"depth(x, y) = d0 + a (x - x0) + b (y - y0)",
                "write if depth(x, y) < stored(x, y), then stored(x, y) = depth(x, y)",
                "triangles in scene order, no sort"});
-  } else {
-    w.line(fmt::format("Pixels written so far: {}", integer(state.writes())), TextStyle::body);
-    w.line(fmt::format("of them over a farther triangle's pixel: {}", integer(state.overwrites())),
-           TextStyle::body);
-    w.gap(8);
-    w.formula({"depth(T) = (z0 + z1 + z2) / 3", "draw in order of decreasing depth (stable sort)",
-               "each triangle: the edge-table scanline fill"});
+    return;
   }
+  w.line(fmt::format("Pixels written so far: {}", integer(state.writes())), TextStyle::body);
+  w.line(fmt::format("of them over a farther triangle's pixel: {}", integer(state.overwrites())),
+         TextStyle::body);
+  w.gap(8);
+  w.formula({"depth(T) = (z0 + z1 + z2) / 3", "draw in order of decreasing depth (stable sort)",
+             "each triangle: the edge-table scanline fill"});
+}
+
+}  // namespace
+
+void draw_scene_panel(FrameView& frame, const Rect& area, const Typography& type,
+                      const trace::Trace& trace, const StepPlan& plan, const SceneSummary& scene,
+                      const Step& step, const CanvasState& state) {
+  PanelWriter w(frame, area, type);
+  const bool zbuffer = uses_zbuffer(trace.header());
+  scene_panel_heading(w, step, plan.order.size(), zbuffer, scene);
+  w.gap(6);
+  scene_panel_method(w, type, scene, step, zbuffer);
+  w.gap(8);
+  if (step.kind == StepKind::painter_batch) scene_panel_batch(w, trace, plan, scene, step);
+  if (trace.header().level == "triangle")
+    w.paragraph(
+        "This trace holds no scanlines (level triangle): the pixels shown are filled again "
+        "from each triangle's recorded vertices and colours by the same fill.",
+        TextStyle::small, palette::kMutedText);
+  scene_panel_counts(w, zbuffer, state);
 }
 
 }  // namespace scantrace::viz

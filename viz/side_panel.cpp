@@ -251,19 +251,9 @@ void polygon_scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& s
              "per pixel:  c(x) = c_L + (x - x_L) / (x_R - x_L) * (c_R - c_L)"});
 }
 
-void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, const TriangleBegin* b,
-                    const EdgeTableEvent* table, const Scanline& row) {
-  if (row.intervals) return polygon_scanline_panel(w, t, step, b, table, row);
-  w.heading(step.first_row == step.last_row
-                ? fmt::format("3  Scanline y = {}", row.y)
-                : fmt::format("3  Scanlines y = {} .. {}", step.first_row, step.last_row));
-  w.paragraph(narrative(t, step, row, table));
-  w.gap(6);
-  if (table) {
-    w.line("Edge table", TextStyle::strong);
-    edge_table(w, *table, b, -1, -1, &row);
-    w.gap(6);
-  }
+// The active edge table of the row: each edge's x on it, dx/dy and y_max.
+void active_edge_table(PanelWriter& w, const EdgeTableEvent* table, const TriangleBegin* b,
+                       const Scanline& row) {
   w.line(fmt::format("Active edge table at y = {}", row.y), TextStyle::strong);
   std::vector<TableRow> aet;
   for (const trace::EdgeCrossing& a : row.active_edges) {
@@ -275,8 +265,12 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
     aet.push_back(r);
   }
   w.table({{"edge", false}, {"x on this row"}, {"dx/dy"}, {"y_max"}}, aet);
-  w.gap(8);
+}
 
+// The row's active points with their colours, and its span: its pixels, the rule that bounds
+// them and the colours of its end pixels.
+void span_lines(PanelWriter& w, const trace::Trace& t, const TriangleBegin* b,
+                const Scanline& row) {
   const std::size_t np = row.active_points.size();
   for (std::size_t i = 0; i < np; ++i) {
     const trace::ActivePoint& p = row.active_points[i];
@@ -284,33 +278,37 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
     w.swatch(p.color,
              fmt::format("{} = {} (e{})   c = {}", name, fixed(p.x, 3), p.edge, colour(p.color)));
   }
-  const bool tl = top_left_rule(t);
-  if (row.span && row.span->size() > 0) {
-    const trace::Span& s = *row.span;
-    // The rule's bounds, unless the canvas edge cut the span (the trace holds the clipped one).
-    const double xl = row.active_points.front().x, xr = row.active_points.back().x;
-    const int width = t.header().canvas.width;
-    const bool clipped = (s.x_begin == 0 && xl < -1) || (s.x_end == width && xr > width + 1);
-    w.line(fmt::format("Span: x = {} .. {}  ({} {}) = {}", s.x_begin, s.x_end - 1,
-                       integer(s.size()), s.size() == 1 ? "pixel" : "pixels",
-                       clipped ? "clipped to the canvas"
-                       : tl    ? "ceil(x_L) .. ceil(x_R) - 1"
-                               : "ceil(x_L) .. floor(x_R)"),
-           TextStyle::body);
-    std::optional<Color> flat = b ? b->flat_color : std::nullopt;
-    if (row.span_colors) {
-      w.swatch(row.span_colors->begin,
-               fmt::format("pixel {}: {}", s.x_begin, colour(row.span_colors->begin)));
-      if (s.size() > 1)
-        w.swatch(row.span_colors->end,
-                 fmt::format("pixel {}: {}", s.x_end - 1, colour(row.span_colors->end)));
-    } else if (flat) {
-      w.swatch(*flat, fmt::format("every pixel: the flat colour {}", colour(*flat)));
-    }
-  } else {
+  if (!row.span || row.span->size() <= 0) {
     w.line("Span: empty", TextStyle::body);
+    return;
   }
-  w.gap(10);
+  const trace::Span& s = *row.span;
+  // The rule's bounds, unless the canvas edge cut the span (the trace holds the clipped one).
+  const double xl = row.active_points.front().x, xr = row.active_points.back().x;
+  const int width = t.header().canvas.width;
+  const bool clipped = (s.x_begin == 0 && xl < -1) || (s.x_end == width && xr > width + 1);
+  w.line(fmt::format("Span: x = {} .. {}  ({} {}) = {}", s.x_begin, s.x_end - 1,
+                     integer(s.size()), s.size() == 1 ? "pixel" : "pixels",
+                     clipped            ? "clipped to the canvas"
+                     : top_left_rule(t) ? "ceil(x_L) .. ceil(x_R) - 1"
+                                        : "ceil(x_L) .. floor(x_R)"),
+         TextStyle::body);
+  std::optional<Color> flat = b ? b->flat_color : std::nullopt;
+  if (row.span_colors) {
+    w.swatch(row.span_colors->begin,
+             fmt::format("pixel {}: {}", s.x_begin, colour(row.span_colors->begin)));
+    if (s.size() > 1)
+      w.swatch(row.span_colors->end,
+               fmt::format("pixel {}: {}", s.x_end - 1, colour(row.span_colors->end)));
+  } else if (flat) {
+    w.swatch(*flat, fmt::format("every pixel: the flat colour {}", colour(*flat)));
+  }
+}
+
+// The per-row and per-pixel formulas, each with a worked instance from this row's numbers.
+std::vector<std::string> scanline_formulas(const trace::Trace& t, const Step& step,
+                                           const TriangleBegin* b, const EdgeTableEvent* table,
+                                           const Scanline& row) {
   std::vector<std::string> f{"per row:    x += dx/dy  for each active edge"};
   // A worked instance with this row's numbers: the previous row's x plus dx/dy.
   if (!row.active_edges.empty())
@@ -324,19 +322,39 @@ void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, con
     }
   if (b && b->flat_color) {
     f.push_back("per pixel:  c = flat colour = (c0 + c1 + c2) / 3");
-  } else {
-    f.push_back("per pixel:  c(x) = c_L + t * (c_R - c_L)");
-    f.push_back("      t = (x - x_L) / (x_R - x_L)");
-    if (row.span && row.span->size() > 0 && np >= 2) {
-      const double xl = row.active_points.front().x, xr = row.active_points.back().x;
-      const double t0 = xr > xl ? (static_cast<double>(row.span->x_begin) - xl) / (xr - xl) : 0;
-      f.push_back(fmt::format("      t({}) = ({} {}) / ({} {}) = {}", row.span->x_begin,
-                              row.span->x_begin, minus_term(xl, 2), number(xr, 2),
-                              minus_term(xl, 2), fixed(t0, 4)));
-    }
-    f.push_back("c_L, c_R: interpolated the same way along their edges, in y");
+    return f;
   }
-  w.formula(f);
+  f.push_back("per pixel:  c(x) = c_L + t * (c_R - c_L)");
+  f.push_back("      t = (x - x_L) / (x_R - x_L)");
+  if (row.span && row.span->size() > 0 && row.active_points.size() >= 2) {
+    const double xl = row.active_points.front().x, xr = row.active_points.back().x;
+    const double t0 = xr > xl ? (static_cast<double>(row.span->x_begin) - xl) / (xr - xl) : 0;
+    f.push_back(fmt::format("      t({}) = ({} {}) / ({} {}) = {}", row.span->x_begin,
+                            row.span->x_begin, minus_term(xl, 2), number(xr, 2),
+                            minus_term(xl, 2), fixed(t0, 4)));
+  }
+  f.push_back("c_L, c_R: interpolated the same way along their edges, in y");
+  return f;
+}
+
+void scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step, const TriangleBegin* b,
+                    const EdgeTableEvent* table, const Scanline& row) {
+  if (row.intervals) return polygon_scanline_panel(w, t, step, b, table, row);
+  w.heading(step.first_row == step.last_row
+                ? fmt::format("3  Scanline y = {}", row.y)
+                : fmt::format("3  Scanlines y = {} .. {}", step.first_row, step.last_row));
+  w.paragraph(narrative(t, step, row, table));
+  w.gap(6);
+  if (table) {
+    w.line("Edge table", TextStyle::strong);
+    edge_table(w, *table, b, -1, -1, &row);
+    w.gap(6);
+  }
+  active_edge_table(w, table, b, row);
+  w.gap(8);
+  span_lines(w, t, b, row);
+  w.gap(10);
+  w.formula(scanline_formulas(t, step, b, table, row));
 }
 
 void done_panel(PanelWriter& w, const trace::Trace& t, const TriangleBegin* b,

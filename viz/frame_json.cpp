@@ -520,7 +520,13 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
     h = Math.imul(h ^ ((v * 4096) | 0), 0x85ebca6b);
     return h ^ (h >>> 13);
   };
-  const same = (a, b) => a.length === b.length && a.every((v, i) => v === b[i]);
+  // Arrays of equal numbers (a plain loop: every() with a closure cost 0.1 ms of a 3.5 ms frame,
+  // the two scripts alternated frame by frame along a drag).
+  const same = (a, b) => {
+    if (a.length !== b.length) return false;
+    for (let i = 0; i < a.length; ++i) if (a[i] !== b[i]) return false;
+    return true;
+  };
   const glyphs = new Map(); // hash of its strokes -> [{strokes, id, box}]
   const ops = new Map(); // hash of the key -> [bitmap]
   const recent = new Set(); // bitmaps, least recently drawn first

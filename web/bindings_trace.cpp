@@ -344,9 +344,7 @@ EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
     const std::size_t n = s.steps().size();
     const std::size_t first = std::min<std::size_t>(o.value("first", std::size_t{0}), n);
     const std::size_t last = std::min<std::size_t>(first + o.value("count", n), n);
-    std::string out = "{\"steps\":[";
-    for (std::size_t i = 0; i < n; ++i) out += (i ? "," : "") + web::step_json(s, i).dump();
-    out += "],\"frames\":[";
+    std::string out = "{\"steps\":" + web::StepsJson()(s) + ",\"frames\":[";
     const bool raw = o.value("blocks", std::string("png")) == "rgba";
     const bool numbers = o.value("encoding", std::string("json")) == "binary";
     for (std::size_t i = first; i < last; ++i)

@@ -7,32 +7,38 @@
 #include "src/winding_fill.hpp"
 
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 
 namespace scantrace::trace {
 namespace {
 
-// The two places that run the fill under a tracer: every entry point goes through them, so the
-// trace always narrates the real fill of the real image.
+// The places that run the fill under a tracer: every entry point goes through them, so the
+// trace always narrates the real fill of the real image. A triangle or a polygon is drawn onto
+// `canvas`, which holds its background (or, for the *_onto entry points, what the caller left
+// there).
 template <class Tracer>
-void fill_traced(Tracer& tracer, const TriangleInput& t, const FillOptions& options,
-                 RgbImage* image) {
-  RgbImage canvas(t.width, t.height, Rgb32f::from(t.background));
+void fill_onto(Tracer& tracer, RgbImage& canvas, const TriangleInput& t, const FillOptions& options) {
   fill_triangle(canvas, t.vertices, t.colors, options, tracer);
+}
+
+template <class Tracer>
+void fill_onto(Tracer& tracer, RgbImage& canvas, const GeneralPolygonInput& p,
+               const FillOptions& options) {
+  fill_polygon_contours(canvas, std::span(p.contours), std::span(p.colors), options, tracer);
+}
+
+template <class Tracer, class Input>
+void fill_traced(Tracer& tracer, const Input& input, const FillOptions& options, RgbImage* image) {
+  RgbImage canvas(input.width, input.height, Rgb32f::from(input.background));
+  fill_onto(tracer, canvas, input, options);
   if (image) *image = std::move(canvas);
 }
 
 template <class Tracer>
 void fill_traced(Tracer& tracer, const Scene& scene, const FillOptions& options, RgbImage* image) {
   RgbImage canvas = render(scene, options, tracer);
-  if (image) *image = std::move(canvas);
-}
-
-template <class Tracer>
-void fill_traced(Tracer& tracer, const GeneralPolygonInput& p, const FillOptions& options,
-                 RgbImage* image) {
-  RgbImage canvas(p.width, p.height, Rgb32f::from(p.background));
-  fill_polygon_contours(canvas, std::span(p.contours), std::span(p.colors), options, tracer);
   if (image) *image = std::move(canvas);
 }
 
@@ -62,6 +68,19 @@ Trace record(const Input& input, const FillOptions& options, const TraceFilter& 
 }
 
 template <class Input>
+Trace record_onto(RgbImage& canvas, const Input& input, const FillOptions& options,
+                  const TraceFilter& filter) {
+  if (canvas.width() != input.width || canvas.height() != input.height)
+    throw std::invalid_argument("record onto a canvas of " + std::to_string(canvas.width()) + "x" +
+                                std::to_string(canvas.height()) + " for an input of " +
+                                std::to_string(input.width) + "x" + std::to_string(input.height));
+  EventTracer<Recorder> tracer(Recorder(header_for(input, options, filter.level), filter.columns),
+                               filter);
+  fill_onto(tracer, canvas, input, options);
+  return tracer.finish();
+}
+
+template <class Input>
 Footer write(const std::filesystem::path& path, const Input& input, const FillOptions& options,
              const TraceFilter& filter, RgbImage* image) {
   EventTracer<JsonlFileWriter> tracer(
@@ -81,6 +100,16 @@ Trace record_triangle(const TriangleInput& t, const FillOptions& options, const 
 Trace record_scene(const Scene& scene, const FillOptions& options, const TraceFilter& filter,
                    RgbImage* image) {
   return record(scene, options, filter, image);
+}
+
+Trace record_triangle_onto(RgbImage& canvas, const TriangleInput& t, const FillOptions& options,
+                           const TraceFilter& filter) {
+  return record_onto(canvas, t, options, filter);
+}
+
+Trace record_polygon_onto(RgbImage& canvas, const GeneralPolygonInput& p,
+                          const FillOptions& options, const TraceFilter& filter) {
+  return record_onto(canvas, p, options, filter);
 }
 
 Footer write_triangle_trace(const std::filesystem::path& path, const TriangleInput& t,

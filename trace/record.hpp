@@ -35,6 +35,16 @@ Trace record_triangle(const TriangleInput& triangle, const FillOptions& options,
 Trace record_scene(const Scene& scene, const FillOptions& options, const TraceFilter& filter = {},
                    RgbImage* image = nullptr);
 
+// The same drawn onto `canvas`, which must be the input's size (else std::invalid_argument) and
+// is drawn on as it is: the caller has set it to the input's background, or to that background
+// but for pixels it knows the fill writes. A caller that traces again and again (the explorer's
+// drag: web/bindings_trace.cpp) keeps one canvas and restores only the pixels the last fill wrote,
+// instead of allocating and clearing a new one each time.
+Trace record_triangle_onto(RgbImage& canvas, const TriangleInput& triangle,
+                           const FillOptions& options, const TraceFilter& filter = {});
+Trace record_polygon_onto(RgbImage& canvas, const GeneralPolygonInput& polygon,
+                          const FillOptions& options, const TraceFilter& filter = {});
+
 // To a .jsonl file (written under a temporary name, renamed into place when complete).
 Footer write_triangle_trace(const std::filesystem::path& path, const TriangleInput& triangle,
                             const FillOptions& options, const TraceFilter& filter = {},

@@ -380,32 +380,40 @@ class Checker {
            std::to_string(s.y_last) + " its edge table gives (clipped to the canvas)");
     s.last_y = r.y;
     // The active set is what the edge table says for this row; entered/retired are its changes.
-    std::vector<int> active, want_active, want_entered, want_retired;
+    // Compared sorted, in vectors kept for the next row: allocating and copying them for every
+    // row was a tenth of recording a triangle's trace in the explorer's module (on every mouse
+    // move of a drag; docs/performance.md, "Ninth round").
+    RowSets& sets = row_sets_;
+    for (std::vector<int>* v : {&sets.active, &sets.want_active, &sets.want_entered,
+                                &sets.want_retired, &sets.entered, &sets.retired})
+      v->clear();
     for (const EdgeEntry& e : s.edges) {
       if (e.first_row > e.last_row) continue;
       if (e.first_row <= r.y && r.y <= e.last_row) {
-        want_active.push_back(e.edge);
-        if (e.first_row == r.y || r.y == s.y_first) want_entered.push_back(e.edge);
+        sets.want_active.push_back(e.edge);
+        if (e.first_row == r.y || r.y == s.y_first) sets.want_entered.push_back(e.edge);
       }
-      if (e.last_row == r.y - 1 && r.y - 1 >= s.y_first) want_retired.push_back(e.edge);
+      if (e.last_row == r.y - 1 && r.y - 1 >= s.y_first) sets.want_retired.push_back(e.edge);
     }
     for (const EdgeCrossing& a : r.active_edges) {
       finite(a.x, [&] { return row() + ": active edge " + std::to_string(a.edge) + " x"; });
-      active.push_back(a.edge);
+      sets.active.push_back(a.edge);
     }
-    auto sorted = [](std::vector<int> v) {
-      std::sort(v.begin(), v.end());
-      return v;
-    };
-    if (sorted(active) != sorted(want_active))
-      fail(row() + ": active edges " + ids(sorted(active)) + ", but the edge table makes " +
-           ids(sorted(want_active)) + " active on this row");
-    if (sorted(r.entered) != sorted(want_entered))
-      fail(row() + ": entered " + ids(sorted(r.entered)) + " disagrees with the active set (edges " +
-           ids(sorted(want_entered)) + " join it on this row)");
-    if (sorted(r.retired) != sorted(want_retired))
-      fail(row() + ": retired " + ids(sorted(r.retired)) + " disagrees with the active set (edges " +
-           ids(sorted(want_retired)) + " leave it on this row)");
+    sets.entered.assign(r.entered.begin(), r.entered.end());
+    sets.retired.assign(r.retired.begin(), r.retired.end());
+    for (std::vector<int>* v : {&sets.active, &sets.want_active, &sets.want_entered,
+                                &sets.want_retired, &sets.entered, &sets.retired})
+      std::sort(v->begin(), v->end());
+    const std::vector<int>& active = sets.active;
+    if (active != sets.want_active)
+      fail(row() + ": active edges " + ids(active) + ", but the edge table makes " +
+           ids(sets.want_active) + " active on this row");
+    if (sets.entered != sets.want_entered)
+      fail(row() + ": entered " + ids(sets.entered) + " disagrees with the active set (edges " +
+           ids(sets.want_entered) + " join it on this row)");
+    if (sets.retired != sets.want_retired)
+      fail(row() + ": retired " + ids(sets.retired) + " disagrees with the active set (edges " +
+           ids(sets.want_retired) + " leave it on this row)");
     if (r.active_points.size() != r.active_edges.size())
       fail(row() + ": " + std::to_string(r.active_points.size()) + " active points for " +
            std::to_string(r.active_edges.size()) + " active edges");
@@ -612,6 +620,10 @@ class Checker {
   i64 scale_ = 256;
   std::unordered_map<int, TriangleState> state_;
   CheckSummary summary_;
+  // A scanline's edge sets, sorted for comparing (check(const Scanline&)), kept from row to row.
+  struct RowSets {
+    std::vector<int> active, want_active, want_entered, want_retired, entered, retired;
+  } row_sets_;
 };
 
 }  // namespace

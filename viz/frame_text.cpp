@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 
@@ -11,13 +12,39 @@ namespace scantrace::viz::frame_text {
 
 namespace {
 
-// Two decimals by v·100 rounded to the nearest integer, which is what %.2f prints, unless v·100 is
-// within 1e-6 of a tie (there %.2f rounds the exact binary value, half to even) or too large for
-// its rounding error to stay below that (|v·100| < 1e9: below 1.2e-7): false for those.
+// The cents %.2f prints of v at a tie's neighbourhood: v·100 rounded (r) is within 1e-6 of the
+// tie t = floor(r) + 0.5, where rounding r says nothing, and %.2f rounds v's exact binary value,
+// half to even on the tie itself. Decided exactly, in integers: with |v| = m / 2^s (m below 2^53),
+// 200·|v| = 200·m / 2^s (200·m below 2^61) against the odd integer |2t|. (These were printed and,
+// for the canvas's numbers, parsed back, by emscripten's snprintf and strtod, whose long double is
+// emulated: a tenth of a drag move's frame in the explorer's module, docs/performance.md.)
+long long cents_at_tie(double v, double r) {
+  const auto k = static_cast<std::uint64_t>(std::llabs(2 * static_cast<long long>(std::floor(r)) + 1));
+  const std::uint64_t below = (k - 1) / 2, above = below + 1;  // |cents| on either side
+  int e = 0;
+  const double f = std::frexp(std::abs(v), &e);  // |v| = f·2^e, f in [0.5, 1)
+  const auto m = static_cast<std::uint64_t>(std::ldexp(f, 53));
+  const int shift = 53 - e;  // |v| = m / 2^shift; shift > 0 since |v| < 1e7
+  std::uint64_t magnitude = below;
+  if (shift < 64) {
+    const std::uint64_t scaled = 200 * m, whole = scaled >> shift;
+    const std::uint64_t rest = scaled & ((std::uint64_t{1} << shift) - 1);
+    if (whole > k || (whole == k && rest != 0))
+      magnitude = above;
+    else if (whole == k)  // exactly the tie: to the even one
+      magnitude = below % 2 == 0 ? below : above;
+  }
+  const auto n = static_cast<long long>(magnitude);
+  return v < 0 ? -n : n;
+}
+
+// Two decimals by v·100 rounded to the nearest integer, which is what %.2f prints, decided
+// exactly within 1e-6 of a tie (cents_at_tie); false when v·100 is too large for its rounding
+// error to stay below that (|v·100| < 1e9: below 1.2e-7), or not finite.
 bool cents(double v, long long& n) {
   const double r = v * 100;
-  if (!(std::abs(r) < 1e9 && std::abs(r - std::floor(r) - 0.5) > 1e-6)) return false;
-  n = std::llround(r);
+  if (!(std::abs(r) < 1e9)) return false;
+  n = std::abs(r - std::floor(r) - 0.5) > 1e-6 ? std::llround(r) : cents_at_tie(v, r);
   return true;
 }
 
@@ -27,7 +54,7 @@ std::string number(double v) {
   // Two decimals are finer than any backend draws; trailing zeros dropped. A frame's canvas JSON
   // prints thousands of these (the text's strokes), and snprintf of a double is slow where long
   // double is emulated (emscripten's musl: 43 ms of a frame's 137 in the explorer's module):
-  // snprintf only where cents() cannot say.
+  // snprintf only where cents() cannot say (|v| of 10^7 or more, or not finite).
   if (long long n = 0; cents(v, n)) {
     if (n == 0) return "0";
     const long long m = n < 0 ? -n : n;

@@ -5,8 +5,7 @@
 // 90 % of a frame's canvas JSON). A backend asks the table for the id of each glyph it places and
 // writes the table once: the glyph's strokes relative to its origin (hershey_glyph_strokes), the
 // SVG's <defs> placed by <use>, the canvas JSON's "glyphs" placed by a "G" op.
-#include <map>
-#include <tuple>
+#include <array>
 #include <vector>
 
 #include "viz/hershey.hpp"
@@ -21,12 +20,29 @@ class GlyphTable {
     double scale;  // quantised (hershey_scale)
   };
 
-  // The id of the glyph (ids count from 0 in the order first asked for).
+  // The id of the glyph (ids count from 0 in the order first asked for). A frame's glyphs come in
+  // a few fonts and scales: each pair has the ids of its characters in a table, found by a short
+  // scan (a std::map keyed by the triple was a twentieth of composing the explorer's step frame
+  // as numbers, in its module on every mouse move of a drag; docs/performance.md, "Ninth round").
   int id(unsigned char c, HersheyFont font, double quantised_scale) {
-    const auto [at, added] = ids_.try_emplace({c, static_cast<int>(font), quantised_scale},
-                                              static_cast<int>(glyphs_.size()));
-    if (added) glyphs_.push_back({c, font, quantised_scale});
-    return at->second;
+    Ids* ids = nullptr;
+    for (Ids& t : ids_)
+      if (t.font == font && t.scale == quantised_scale) {
+        ids = &t;
+        break;
+      }
+    if (!ids) {
+      ids = &ids_.emplace_back();
+      ids->font = font;
+      ids->scale = quantised_scale;
+      ids->of.fill(-1);
+    }
+    int& id = ids->of[c];
+    if (id < 0) {
+      id = static_cast<int>(glyphs_.size());
+      glyphs_.push_back({c, font, quantised_scale});
+    }
+    return id;
   }
   // The glyphs by id.
   const std::vector<Glyph>& glyphs() const { return glyphs_; }
@@ -37,7 +53,12 @@ class GlyphTable {
   }
 
  private:
-  std::map<std::tuple<unsigned char, int, double>, int> ids_;
+  struct Ids {
+    HersheyFont font{};
+    double scale = 0;
+    std::array<int, 256> of{};  // by character; -1: not asked for yet
+  };
+  std::vector<Ids> ids_;
   std::vector<Glyph> glyphs_;
 };
 

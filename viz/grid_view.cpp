@@ -52,8 +52,7 @@ std::vector<Rect> GridView::around(const std::string& text, TextStyle style, boo
 
 void GridView::cells(const CanvasState& state, std::optional<Color> background) {
   const Rect& v = geometry_.view();
-  std::vector<std::int64_t> columns(v.width);
-  for (int u = 0; u < v.width; ++u) columns[u] = geometry_.pixel_x(v.x + u);
+  const std::size_t w = static_cast<std::size_t>(v.width);
   const Scalar bg = background ? to_scalar(*background) : Scalar{};
   const Vec3b empty =
       background ? Vec3b(static_cast<std::uint8_t>(bg[0]), static_cast<std::uint8_t>(bg[1]),
@@ -61,13 +60,25 @@ void GridView::cells(const CanvasState& state, std::optional<Color> background) 
                  : Vec3b(palette::kEmptyCell[0], palette::kEmptyCell[1], palette::kEmptyCell[2]);
   const Vec3b outside(palette::kOutsideCanvas[0], palette::kOutsideCanvas[1],
                       palette::kOutsideCanvas[2]);
-  auto cells = std::make_shared<std::vector<Vec3b>>(static_cast<std::size_t>(v.width) *
-                                                    static_cast<std::size_t>(v.height));
+  // Per column of the view, once: a row of the canvas as it shows unwritten (`blank`: outside
+  // the canvas or empty), and the window's column it shows, or -1 (outside the window). Each row
+  // is then its blank row copied, and the written pixels of the window put on it: deciding
+  // every frame pixel in turn from its canvas coordinates was a fifth of the explorer's step
+  // frame in its module (docs/performance.md, "Ninth round").
   const std::int64_t wx0 = state.window().x, wx1 = wx0 + state.window().width;
+  std::vector<Vec3b> blank(w);
+  std::vector<int> window_column(w, -1);
+  for (std::size_t u = 0; u < w; ++u) {
+    const std::int64_t x = geometry_.pixel_x(v.x + static_cast<int>(u));
+    const bool on_canvas = x >= 0 && x < canvas_.width;
+    blank[u] = on_canvas ? empty : outside;
+    if (on_canvas && x >= wx0 && x < wx1) window_column[u] = static_cast<int>(x - wx0);
+  }
+  auto cells = std::make_shared<std::vector<Vec3b>>(w * static_cast<std::size_t>(v.height));
   std::int64_t previous_y = 0;
   for (int r = 0; r < v.height; ++r) {
     const std::int64_t y = geometry_.pixel_y(v.y + r);
-    Vec3b* out = cells->data() + static_cast<std::size_t>(r) * static_cast<std::size_t>(v.width);
+    Vec3b* out = cells->data() + static_cast<std::size_t>(r) * w;
     // A row of the same canvas row as the one above: a copy of it (a cell is many frame rows;
     // this loop was a sixth of a browser's drag move, docs/performance.md).
     if (r > 0 && y == previous_y) {
@@ -75,19 +86,17 @@ void GridView::cells(const CanvasState& state, std::optional<Color> background) 
       continue;
     }
     previous_y = y;
-    const bool row_on_canvas = y >= 0 && y < canvas_.height;
-    // Whole rows of the state at once: a view has hundreds of thousands of frame pixels.
-    const Vec3b* pixels = row_on_canvas ? state.row_pixels(y) : nullptr;
-    const std::uint8_t* written = row_on_canvas ? state.row_mask(y) : nullptr;
-    for (int u = 0; u < v.width; ++u) {
-      const std::int64_t x = columns[u];
-      if (!row_on_canvas || x < 0 || x >= canvas_.width)
-        out[u] = outside;
-      else if (written && x >= wx0 && x < wx1 && written[x - wx0])
-        out[u] = pixels[x - wx0];
-      else
-        out[u] = empty;
+    if (y < 0 || y >= canvas_.height) {
+      std::fill(out, out + v.width, outside);
+      continue;
     }
+    std::copy(blank.begin(), blank.end(), out);
+    // Whole rows of the state at once: a view has hundreds of thousands of frame pixels.
+    const Vec3b* pixels = state.row_pixels(y);
+    const std::uint8_t* written = state.row_mask(y);
+    if (!written) continue;
+    for (std::size_t u = 0; u < w; ++u)
+      if (const int i = window_column[u]; i >= 0 && written[i]) out[u] = pixels[i];
   }
   cells_ = cells;
   // One block for the view; the backends crop it to the frame, as writing pixels did.

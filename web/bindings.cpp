@@ -152,8 +152,8 @@ extern "C" {
 
 EMSCRIPTEN_KEEPALIVE const char* st_result_text() { return web::result().text.c_str(); }
 EMSCRIPTEN_KEEPALIVE std::size_t st_result_size() { return web::result().text.size(); }
-EMSCRIPTEN_KEEPALIVE const std::uint8_t* st_result_bytes() { return web::result().bytes.data(); }
-EMSCRIPTEN_KEEPALIVE std::size_t st_result_bytes_size() { return web::result().bytes.size(); }
+EMSCRIPTEN_KEEPALIVE const std::uint8_t* st_result_bytes() { return web::result().bytes_out().data(); }
+EMSCRIPTEN_KEEPALIVE std::size_t st_result_bytes_size() { return web::result().bytes_out().size(); }
 EMSCRIPTEN_KEEPALIVE const char* st_error() { return web::result().error.c_str(); }
 
 // The scene file at `path` rendered as `scantrace render` renders it (one thread): the result's

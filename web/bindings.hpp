@@ -20,7 +20,11 @@ namespace scantrace::web {
 struct Result {
   std::string text;                // JSON or JSON Lines
   std::vector<std::uint8_t> bytes;  // pixels
+  // When set, the result's bytes are these instead of `bytes`: a buffer the module keeps between
+  // calls (st_trace's image, web/traced_image.hpp), handed over without a copy.
+  const std::vector<std::uint8_t>* kept_bytes = nullptr;
   std::string error;
+  const std::vector<std::uint8_t>& bytes_out() const { return kept_bytes ? *kept_bytes : bytes; }
 };
 Result& result();
 

@@ -13,7 +13,6 @@
 #include "demo/demo_scene.hpp"
 #include "io/obj_loader.hpp"
 #include "io/scene_json.hpp"
-#include "src/flat_span.hpp"
 #include "trace/event_json.hpp"
 #include "trace/record.hpp"
 #include "viz/frame_json.hpp"
@@ -21,6 +20,7 @@
 #include "viz/frame_text.hpp"
 #include "web/bindings.hpp"
 #include "web/step_json.hpp"
+#include "web/traced_image.hpp"
 
 namespace scantrace::web {
 namespace {
@@ -116,78 +116,64 @@ std::optional<trace::Trace>& kept_trace() {
   return t;
 }
 
-// `image` as RGBA bytes (as put_rgba writes them) from the pixels the trace says were written:
-// the canvas's background everywhere, then each scanline's span (or inside intervals) converted
-// from the image. Only for a whole trace of one triangle or polygon at scanline level or finer,
-// by an edge-table method, where the fill writes exactly those pixels onto a canvas of its
-// background (the trace's checks hold each row's pixel events to its span); a drag's traced fill was a tenth of its mouse move in
-// Chromium converting 512 x 512 pixels, most of them background in the triangle's rows.
-void put_rgba_of_spans(const trace::Trace& t, const RgbImage& image, const Color& background,
-                       std::vector<std::uint8_t>& bytes) {
-  const std::size_t w = static_cast<std::size_t>(image.width());
-  bytes.resize(w * static_cast<std::size_t>(image.height()) * 4);
-  // The background by fill_pixels (src/flat_span.hpp): a few pixels, then copied onto the rest in
-  // doubling blocks, which emscripten hands to the engine's own copy, where a 4-byte copy per
-  // pixel of the 512 x 512 canvas was a tenth of a drag move's module time in Node.
-  struct Rgba8 {
-    std::uint8_t r, g, b, a;
-  };
-  const Rgb32f bg = Rgb32f::from(background);
-  auto* pixels = reinterpret_cast<Rgba8*>(bytes.data());
-  fill_pixels(pixels, pixels + bytes.size() / 4,
-              Rgba8{to_byte(bg.r), to_byte(bg.g), to_byte(bg.b), 255});
-  const auto put = [&](i64 y, const trace::Span& span) {
-    const Rgb32f* row = image.row(static_cast<int>(y));
-    std::uint8_t* out = bytes.data() + (static_cast<std::size_t>(y) * w + static_cast<std::size_t>(span.x_begin)) * 4;
-    for (i64 x = span.x_begin; x < span.x_end; ++x, out += 4) {
-      const Rgb32f& p = row[x];
-      out[0] = to_byte(p.r);
-      out[1] = to_byte(p.g);
-      out[2] = to_byte(p.b);
-    }
-  };
-  for (const trace::Event& e : t.events())
-    if (const auto* row = std::get_if<trace::Scanline>(&e)) {
-      if (row->intervals)
-        for (const trace::Interval& iv : *row->intervals) put(row->y, iv.pixels);
-      else if (row->span)
-        put(row->y, *row->span);
-    }
+// The image of the kept trace of a triangle or polygon, kept from call to call with its bytes.
+TracedImage& traced_image() {
+  static TracedImage image;
+  return image;
 }
 
 // The same events as trace_to_file writes, recorded in memory and kept; their JSON Lines text
-// (each line as the file writer writes it: event_to_json(e).dump()); the fill's image, RGBA, in
-// the result's bytes.
+// (each line as the file writer writes it: event_to_json(e).dump()); the fill's image, RGBA, as
+// the result's bytes (a scene's in result().bytes, a triangle's or polygon's those traced_image()
+// keeps).
 std::string trace_in_memory(const nlohmann::json& in, const nlohmann::json& o) {
   require_input(in);
   const trace::TraceFilter filter = filter_of(o);
-  kept_trace().reset();
-  RgbImage image;
-  std::optional<Color> background;  // a triangle's or polygon's canvas (a scene's is rendered)
   if (in.contains("scene")) {
+    traced_image().forget();
+    kept_trace().reset();
+    RgbImage image;
     const std::string path = in["scene"].get<std::string>();
     kept_trace() = trace::record_scene(load_scene(path, o), fill_options(o, is_obj_file(path)), filter, &image);
-  } else if (in.contains("triangle")) {
-    const trace::TriangleInput t = triangle_input(in);
-    background = t.background;
-    kept_trace() = trace::record_triangle(t, fill_options(o, false), filter, &image);
-  } else {
-    const trace::GeneralPolygonInput p = polygon_input(in);
-    background = p.background;
-    kept_trace() = trace::record_polygon(p, fill_options(o, false), filter, &image);
-  }
-  // The image the traced fill drew, for a page to show (a polygon has no render of its own):
-  // from the trace's spans when they are all of its pixels (no filter, none cut off).
-  const trace::Trace& t = *kept_trace();
-  // Not the halfspace method: it fills pixel by pixel and its trace has no scanline events.
-  const bool whole = fill_options(o, false).method != Method::halfspace && !filter.triangles &&
-                     !filter.rows && !filter.max_events &&
-                     filter.level >= TraceLevel::scanline && t.footer() &&
-                     !t.footer()->truncated;
-  if (background && whole)
-    put_rgba_of_spans(t, image, *background, result().bytes);
-  else
     put_rgba(image, result().bytes);
+  } else {
+    // The last trace says which pixels its fill wrote onto the kept canvas (canvas_for), so it
+    // goes only once the new canvas is ready.
+    FillOptions options;
+    const auto fill = [&](const auto& input, auto record) {
+      options = fill_options(o, false);
+      RgbImage& canvas = traced_image().canvas_for(input.width, input.height, input.background,
+                                                   kept_trace() ? &*kept_trace() : nullptr);
+      kept_trace().reset();
+      kept_trace() = record(canvas, input, options, filter);
+    };
+    try {
+      if (in.contains("triangle"))
+        fill(triangle_input(in), trace::record_triangle_onto);
+      else
+        fill(polygon_input(in), trace::record_polygon_onto);
+    } catch (...) {
+      // Bad input keeps no trace (st_frames then says so), and leaves the canvas half drawn.
+      kept_trace().reset();
+      traced_image().forget();
+      throw;
+    }
+    // The image the traced fill drew, for a page to show (a polygon has no render of its own):
+    // from the trace's spans when they are all of its pixels (no filter, none cut off), where the
+    // fill writes exactly those pixels onto a canvas of its background (the trace's checks hold
+    // each row's pixel events to its span); a drag's traced fill was a tenth of its mouse move in
+    // Chromium converting 512 x 512 pixels, most of them background in the triangle's rows.
+    // Not the halfspace method: it fills pixel by pixel and its trace has no scanline events.
+    const trace::Trace& t = *kept_trace();
+    const bool whole = options.method != Method::halfspace && !filter.triangles && !filter.rows &&
+                       !filter.max_events && filter.level >= TraceLevel::scanline && t.footer() &&
+                       !t.footer()->truncated;
+    if (whole)
+      traced_image().set_from_spans(t);
+    else
+      traced_image().set_from_every_pixel();
+    result().kept_bytes = &traced_image().rgba();
+  }
   // Without the text (options.text false: a drag's mouse move, which reads the step's events
   // with st_kept_step): the events' JSON was half of the call's time.
   if (!o.value("text", true)) return {};
@@ -358,9 +344,7 @@ EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
     const std::size_t n = s.steps().size();
     const std::size_t first = std::min<std::size_t>(o.value("first", std::size_t{0}), n);
     const std::size_t last = std::min<std::size_t>(first + o.value("count", n), n);
-    std::string out = "{\"steps\":[";
-    for (std::size_t i = 0; i < n; ++i) out += (i ? "," : "") + web::step_json(s, i).dump();
-    out += "],\"frames\":[";
+    std::string out = "{\"steps\":" + web::StepsJson()(s) + ",\"frames\":[";
     const bool raw = o.value("blocks", std::string("png")) == "rgba";
     const bool numbers = o.value("encoding", std::string("json")) == "binary";
     for (std::size_t i = first; i < last; ++i)

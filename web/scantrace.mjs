@@ -81,14 +81,16 @@ function numbersFrame(head, bytes) {
   const ops = new Array(v[i++]);
   for (let k = 0; k < ops.length; ++k) {
     const kind = opKinds[v[i++]];
-    const clip = v[i++] ? Array.from(list(4)) : null;
+    // Read number by number: Array.from of a subarray, and destructuring one (its iterator), were
+    // most of this function's time (docs/performance.md, "Ninth round").
+    const clip = v[i++] ? [v[i++], v[i++], v[i++], v[i++]] : null;
     const mark = v[i++];
     const op = [kind, clip, mark < 0 ? null : head.marks[mark]];
     if (kind === 'R' || kind === 'L') op.push(v[i++], v[i++], v[i++], v[i++], s[v[i++]], v[i++]);
     else if (kind === 'C') op.push(v[i++], v[i++], v[i++], s[v[i++]], v[i++]);
     else if (kind === 'G') op.push(s[v[i++]], s[v[i++]], v[i++], list(3 * v[i++]));
     else {
-      const [x, y, w, h, at] = list(5);
+      const x = v[i++], y = v[i++], w = v[i++], h = v[i++], at = v[i++];
       const cols = list(v[i++]), rows = list(v[i++]);
       op.push(x, y, w, h, runsBlock(w, h, { at, cols, rows }, bytes));
     }

@@ -247,6 +247,51 @@ check("a kept trace's image from its spans is the fill's image", () => {
     }
   }
 });
+// A kept trace's image is drawn on a canvas the module keeps from call to call
+// (web/traced_image.hpp), put back to the background only where the last fill wrote. Every image
+// of a drag (a vertex moved a little at a time, rows gained and lost; then far, the triangle turned
+// over and cut by the canvas's edges), with the method, level, size and input switched between
+// moves and calls that fail in between, must be the image of that input traced alone: traced by
+// another module right after an input of another size, which clears its whole canvas.
+const reference = await load();
+check("kept traces one after another: each image the input's alone", () => {
+  const star = [[256, 40], [380, 440], [60, 190], [450, 190], [130, 440]];
+  const moved = (i, far = 1) => {
+    const k = far * 27 * (1 - Math.cos(i * 0.1));
+    return { triangle: [[20, 20], [250, 80], [300 - k, 400 - 0.6 * k]] };
+  };
+  const calls = [];
+  for (let i = 1; i <= 40; ++i) calls.push([moved(i), { shading: 'gouraud' }]);
+  for (let i = 1; i <= 6; ++i) calls.push([moved(5 * i, 12), { shading: 'flat' }]);
+  calls.push([moved(3), { method: 'halfspace' }], [moved(4), {}], [moved(5), { level: 'triangle' }], [moved(6), {}]);
+  calls.push([{ ...moved(7), width: 300, height: 200 }, {}], [moved(8), {}], [{ polygon: [star] }, { winding: 'non-zero' }], [moved(9), {}]);
+  calls.push(['bad', {}], [moved(10), {}], [{ triangle: [[20, 20], [250, 80], [NaN, 400]] }, {}], [moved(11), { method: 'float' }]);
+  let compared = 0;
+  for (const [input, options] of calls) {
+    const what = JSON.stringify([input, options]);
+    const o = { ...options, keep: true, text: false };
+    if (input === 'bad') {
+      assert.throws(() => st.traceText({ triangle: [[0, 0], [1, 1]] }, o), ScantraceError);
+      continue;
+    }
+    let image;
+    try {
+      st.traceText(input, o);
+      image = st.lastTraceImage;
+    } catch (e) {
+      // The input the module refuses must be refused alone too.
+      assert.throws(() => reference.traceText(input, o), ScantraceError, what);
+      continue;
+    }
+    reference.traceText({ triangle: [[0, 0], [2, 0], [0, 2]], width: 3, height: 3 }, { keep: true, text: false });
+    reference.traceText(input, o);
+    const alone = reference.lastTraceImage;
+    assert.deepStrictEqual([image.width, image.height], [alone.width, alone.height], what);
+    assert.ok(Buffer.from(image.rgba).equals(Buffer.from(alone.rgba)), `${what}: the image differs from the input's traced alone`);
+    ++compared;
+  }
+  assert.ok(compared >= 50, `${compared} images compared`);
+});
 // The course scene's first 300 faces (its whole trace is 49 MB, a minute to decode twice here).
 for (const [name, file] of scenes.filter(([n]) => n !== 'many_faces'))
   check(`trace scene ${name}`, () => {

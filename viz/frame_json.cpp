@@ -530,7 +530,7 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
   const glyphs = new Map(); // hash of its strokes -> [{strokes, id, box}]
   const ops = new Map(); // hash of the key -> [bitmap]
   const recent = new Set(); // bitmaps, least recently drawn first
-  const spare = new Map(); // width * 65536 + height -> {canvas, g} of dropped bitmaps, reused
+  const spare = new Map(); // width * 65536 + height -> canvases of dropped bitmaps, reused
   const stats = { hits: 0, misses: 0, bitmaps: 0, area: 0, glyphs: 0, spare: 0 };
   let nextGlyph = 0;
 
@@ -569,11 +569,11 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
     bucket.splice(bucket.indexOf(b), 1);
     if (!bucket.length) ops.delete(b.hash);
     if (!b.image) return;
-    const { canvas, g } = b.image, size = canvas.width * 65536 + canvas.height;
+    const { canvas } = b.image, size = canvas.width * 65536 + canvas.height;
     stats.area -= canvas.width * canvas.height;
     if (stats.spare >= 64) return;
     if (!spare.has(size)) spare.set(size, []);
-    spare.get(size).push({ canvas, g });
+    spare.get(size).push(canvas);
     ++stats.spare;
   }
 
@@ -581,21 +581,19 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
   // canvas of the size taken again. A new canvas, or a canvas resized, for each bitmap made cost
   // more than its strokes (Chromium allocates its pixels anew: 1.7-3.5 ms for a drag move's 15
   // changed labels, against 0.2-0.5 reusing canvases).
-  // Each canvas is kept with its context ({canvas, g}): getContext on every bitmap made, twice
-  // for a reused canvas, was a tenth of making them.
   function blank(w, h) {
     const width = Math.ceil(w / 32) * 32, height = Math.ceil(h / 8) * 8;
     const pool = spare.get(width * 65536 + height);
     if (pool && pool.length) {
       --stats.spare;
-      const kept = pool.pop();
-      kept.g.clearRect(0, 0, width, height);
-      return kept;
+      const canvas = pool.pop();
+      canvas.getContext('2d').clearRect(0, 0, width, height);
+      return canvas;
     }
     const canvas = document.createElement('canvas');
     canvas.width = width;
     canvas.height = height;
-    return { canvas, g: canvas.getContext('2d') };
+    return canvas;
   }
 
   // The op's glyphs stroked onto a canvas of their box, at phase (fx, fy); null for no strokes.
@@ -612,14 +610,14 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
     if (!(box[0] <= box[2])) return null;
     const pad = Math.ceil(t / 2) + 2, left = Math.floor(box[0]) - pad, top = Math.floor(box[1]) - pad;
     const width = Math.ceil(box[2]) + pad + 1 - left, height = Math.ceil(box[3]) + pad + 1 - top;
-    const { canvas, g } = blank(width, height);
+    const canvas = blank(width, height), g = canvas.getContext('2d');
     g.strokeStyle = colour;
     g.lineWidth = t;
     g.lineCap = 'round';
     g.lineJoin = 'round';
     scantraceStrokeGlyphs(g, frame.glyphs, placed, fx - left - placed[1], fy - top - placed[2]);
     stats.area += canvas.width * canvas.height;
-    return { canvas, g, left, top, width, height };
+    return { canvas, left, top, width, height };
   }
 
   // What a frame's ops draw with: draw(ctx, op) puts a "G" op's bitmap, made if missing.

@@ -72,7 +72,16 @@ export async function launch() {
       return r.result.value;
     },
     async close() {
-      try { await send('Browser.close'); } catch { /* gone already */ }
+      // The browser may end before it answers (seen under load: the socket closed first, the
+      // answer never came, and Node exited with 13 on the await left unsettled): the answer, the
+      // socket's close or 5 s, whichever comes first.
+      let waited;
+      const closed = new Promise((r) => {
+        ws.addEventListener('close', r);
+        waited = setTimeout(r, 5000);
+      });
+      try { await Promise.race([send('Browser.close'), closed]); } catch { /* gone already */ }
+      clearTimeout(waited);
       ws.close();
       if (proc.exitCode === null) {
         proc.kill();

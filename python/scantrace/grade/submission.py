@@ -4,14 +4,19 @@ course's functions by name."""
 
 import ast
 import dataclasses
+import errno
+import os
 import pathlib
 import shutil
+import stat
 import tempfile
 import zipfile
+import zlib
 
 FUNCTIONS = ("vector_interp", "f_shading", "g_shading", "render_img")
 MAX_FILES = 200
 MAX_BYTES = 2_000_000
+MAX_TOTAL = 20_000_000
 
 
 class SubmissionError(ValueError):
@@ -29,40 +34,115 @@ class Submission:
         shutil.rmtree(self.root.parent, ignore_errors=True)
 
 
-def _stage_zip(path, root):
+def _skip_dir(name):
+    # Hidden folders, caches, and folders named like a module file (pkg.py/): staging one would
+    # give a module and a folder of one name (a zip holding hw1.py and hw1.py/extra.py).
+    return name.startswith(".") or name == "__pycache__" or name == "__MACOSX" \
+        or name.endswith(".py")
+
+
+def _write_new(target, data, budget):
+    budget[0] -= len(data)
+    if budget[0] < 0:
+        raise SubmissionError(f"more than {MAX_TOTAL} bytes of .py files in all")
+    target.parent.mkdir(parents=True, exist_ok=True)
+    with open(target, "xb") as f:   # x: never through a link, never over another file
+        f.write(data)
+
+
+def _zip_kind(member):
+    """What a zip member is by its Unix mode (external_attr's high bits): zip tools store links
+    (unzip -y / zip --symlinks) as members whose data is the link's target."""
+    mode = member.external_attr >> 16
+    if stat.S_IFMT(mode) == 0 or stat.S_ISREG(mode):   # 0: no type stored (Windows zips)
+        return None
+    return "a symbolic link" if stat.S_ISLNK(mode) else "not a regular file"
+
+
+def _stage_zip(path, root, notes):
     try:
         archive = zipfile.ZipFile(path)
-    except (zipfile.BadZipFile, OSError) as e:
+    except (zipfile.BadZipFile, OSError, ValueError, EOFError) as e:
         raise SubmissionError(f"{path}: not a readable zip file ({e})") from None
+    budget = [MAX_TOTAL]
     with archive:
-        members = [m for m in archive.infolist() if m.filename.endswith(".py")
-                   and not m.is_dir() and "__MACOSX" not in m.filename]
+        members = [m for m in archive.infolist() if m.filename.endswith(".py") and not m.is_dir()]
         if len(members) > MAX_FILES:
             raise SubmissionError(f"{path}: {len(members)} .py files (at most {MAX_FILES})")
         for m in members:
             parts = pathlib.PurePosixPath(m.filename).parts
             if m.filename.startswith("/") or ".." in parts:
                 raise SubmissionError(f"{path}: {m.filename}: a path outside the archive")
+            if any(_skip_dir(part) for part in parts[:-1]) or parts[-1].startswith("."):
+                if any(part.endswith(".py") for part in parts[:-1]):
+                    notes.append(f"{m.filename}: in a folder named like a module, not staged")
+                continue
+            if _zip_kind(m):
+                notes.append(f"{m.filename}: {_zip_kind(m)}, not staged")
+                continue
             if m.file_size > MAX_BYTES:
                 raise SubmissionError(f"{path}: {m.filename}: {m.file_size} bytes (at most "
                                       f"{MAX_BYTES})")
-            target = root.joinpath(*parts)
-            target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_bytes(archive.read(m))
+            try:
+                data = archive.read(m)
+            except (zipfile.BadZipFile, zlib.error, OSError, EOFError, ValueError,
+                    NotImplementedError, RuntimeError) as e:
+                # A bad CRC, an unknown compression, an encrypted member.
+                raise SubmissionError(f"{path}: {m.filename}: cannot be read ({e})") from None
+            try:
+                _write_new(root.joinpath(*parts), data, budget)
+            except FileExistsError:
+                notes.append(f"{m.filename}: in the zip twice; the first is staged")
 
 
-def _stage_dir(path, root):
-    files = [p for p in path.rglob("*.py") if not any(part.startswith(".") or part ==
-                                                       "__pycache__" for part in
-                                                       p.relative_to(path).parts)]
-    if len(files) > MAX_FILES:
-        raise SubmissionError(f"{path}: {len(files)} .py files (at most {MAX_FILES})")
-    for p in files:
-        if p.stat().st_size > MAX_BYTES:
-            raise SubmissionError(f"{p}: {p.stat().st_size} bytes (at most {MAX_BYTES})")
-        target = root / p.relative_to(path)
-        target.parent.mkdir(parents=True, exist_ok=True)
-        shutil.copyfile(p, target)
+def _read_regular(name, dir_fd, shown):
+    """A file's bytes, if it is a regular file: opened without following a link and without
+    blocking on a FIFO, checked with fstat, read no further than the limit."""
+    try:
+        fd = os.open(name, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK, dir_fd=dir_fd)
+    except OSError as e:
+        return None, ("a symbolic link" if e.errno == errno.ELOOP else
+                      f"cannot be opened ({e.strerror})")
+    with os.fdopen(fd, "rb") as f:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            return None, "not a regular file"
+        if info.st_size > MAX_BYTES:
+            raise SubmissionError(f"{shown}: {info.st_size} bytes (at most {MAX_BYTES})")
+        data = f.read(MAX_BYTES + 1)
+    if len(data) > MAX_BYTES:
+        raise SubmissionError(f"{shown}: more than {MAX_BYTES} bytes")
+    return data, None
+
+
+def _stage_dir(path, root, notes):
+    """The folder's .py files, walked without following links (os.fwalk: every name is opened
+    relative to its folder's descriptor, so no path is followed twice)."""
+    budget, count = [MAX_TOTAL], 0
+    for folder, dirs, files, dir_fd in os.fwalk(path, follow_symlinks=False):
+        rel = pathlib.Path(folder).relative_to(path)
+        notes += [f"{rel / d}/: a folder named like a module, not staged" for d in dirs
+                  if d.endswith(".py")]
+        dirs[:] = [d for d in dirs if not _skip_dir(d)]
+        for name in sorted(files):
+            if not name.endswith(".py") or name.startswith("."):
+                continue
+            count += 1
+            if count > MAX_FILES:
+                raise SubmissionError(f"{path}: more than {MAX_FILES} .py files")
+            data, why = _read_regular(name, dir_fd, path / rel / name)
+            if why:
+                notes.append(f"{rel / name}: {why}, not staged")
+                continue
+            _write_new(root / rel / name, data, budget)
+
+
+def _stage_file(path, root):
+    """One .py file given as the submission: a regular file, not a link."""
+    data, why = _read_regular(str(path), None, path)
+    if why:
+        raise SubmissionError(f"{path}: {why}")
+    _write_new(root / path.name, data, [MAX_TOTAL])
 
 
 def _common_root(root):
@@ -89,8 +169,11 @@ def _find(root, module_override):
         except SyntaxError as e:
             notes.append(f"{rel}:{e.lineno}: syntax error ({e.msg}); this file is not used")
             continue
-        except ValueError as e:
-            notes.append(f"{rel}: cannot be parsed ({e}); this file is not used")
+        except (ValueError, RecursionError, MemoryError) as e:
+            # A NUL byte; an expression nested too deep for the parser (10 KB: RecursionError,
+            # 200 KB: MemoryError).
+            notes.append(f"{rel}: cannot be parsed ({type(e).__name__}: {str(e)[:200]}); this "
+                         "file is not used")
             continue
         for node in tree.body:
             if isinstance(node, ast.FunctionDef) and node.name in FUNCTIONS:
@@ -115,28 +198,37 @@ def _find(root, module_override):
 
 
 def stage(path, module=None):
+    """Copies the submission's .py files (regular files only: no link, FIFO or device is followed
+    or read) into a new temporary folder, and finds the functions in them."""
     path = pathlib.Path(path)
-    if not path.exists():
-        raise SubmissionError(f"{path}: no such file or directory")
+    try:
+        kind = os.lstat(path).st_mode
+    except OSError:
+        raise SubmissionError(f"{path}: no such file or directory") from None
+    if stat.S_ISLNK(kind):
+        raise SubmissionError(f"{path}: a symbolic link (give the file or folder itself)")
     tmp = pathlib.Path(tempfile.mkdtemp(prefix="scantrace-submission-"))
     root = tmp / "submission"
     root.mkdir()
+    notes = []
     try:
-        if path.is_dir():
-            _stage_dir(path, root)
-        elif path.suffix == ".zip":
-            _stage_zip(path, root)
+        if stat.S_ISDIR(kind):
+            _stage_dir(path, root, notes)
+        elif path.suffix == ".zip" and stat.S_ISREG(kind):
+            _stage_zip(path, root, notes)
         elif path.suffix == ".py":
-            shutil.copyfile(path, root / path.name)
+            _stage_file(path, root)
         else:
             raise SubmissionError(f"{path}: expected a directory, a .py file or a .zip")
         root = _common_root(root)
         if not any(root.rglob("*.py")):
-            raise SubmissionError(f"{path}: no .py file in the submission")
+            raise SubmissionError(f"{path}: no .py file in the submission"
+                                  + "".join(f"; {n}" for n in notes[:5]))
         for p in [root, *root.rglob("*")]:
             p.chmod(0o755 if p.is_dir() else 0o644)
         tmp.chmod(0o755)
-        functions, notes = _find(root, module)
+        functions, found = _find(root, module)
+        notes += found
         if not functions or (module is None and not set(functions) & set(FUNCTIONS)):
             raise SubmissionError(f"{path}: none of {', '.join(FUNCTIONS)} is defined in its "
                                   ".py files" + "".join(f"; {n}" for n in notes
@@ -144,5 +236,5 @@ def stage(path, module=None):
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
-    name = path.stem if path.suffix in (".zip", ".py") else path.name
+    name = path.stem if path.suffix in (".zip", ".py") and not stat.S_ISDIR(kind) else path.name
     return Submission(name, root, functions, notes)

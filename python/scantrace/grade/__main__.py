@@ -3,9 +3,10 @@
 import argparse
 import math
 import pathlib
+import signal
 import sys
 
-from . import classmode, rubric as rubric_module
+from . import classmode, rubric as rubric_module, untrusted
 from .grader import Options, course_arrays, grade
 from .sandbox import Limits, sandbox_problem
 
@@ -85,8 +86,24 @@ def _gradescope_zip(args):
     return 0
 
 
+def _terminated(signum, frame):
+    # SIGTERM as an exception: every `finally` runs, so the temporary folders (the staged
+    # submission, the session's inputs) are removed and the sandboxes killed, and class mode
+    # stops its workers and still writes class.csv; exit status 143.
+    signal.signal(signum, signal.SIG_DFL)   # a second SIGTERM ends the grader at once
+    raise SystemExit(128 + signum)
+
+
 def main(argv=None):
     args = _parser().parse_args(argv)
+    previous = signal.signal(signal.SIGTERM, _terminated)
+    try:
+        return _main(args)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _main(args):
     if bool(args.gradescope_zip) == bool(args.submissions):
         _parser().error("give SUBMISSION... to grade, or --gradescope-zip OUT.zip alone")
     if args.source and not args.gradescope_zip:
@@ -106,8 +123,8 @@ def main(argv=None):
         problem = sandbox_problem()
         if problem:
             print(f"scantrace grade: refusing to run student code without a sandbox: {problem}. "
-                  "Install bubblewrap, allow user namespaces, or pass --no-sandbox for code "
-                  "you trust.", file=sys.stderr)
+                  "Or pass --no-sandbox, for code you trust only (docs/grading.md says what it "
+                  "leaves unprotected).", file=sys.stderr)
             return 1
     scene = None
     if args.scene:
@@ -123,12 +140,13 @@ def main(argv=None):
     if len(args.submissions) == 1:
         graded = grade(args.submissions[0], out, options)
         if graded.error:
-            print(f"scantrace grade: {graded.error}", file=sys.stderr)
+            print(f"scantrace grade: {untrusted.terminal(graded.error)}", file=sys.stderr)
             return 1
         if not args.quiet:
-            print(f"{graded.name}: {graded.score:g} / {graded.max_score:g}"
-                  + "".join(f"\n  {c.id}: {c.sentence}" for c in graded.causes)
-                  + f"\nreport: {out / 'report.md'}")
+            print(untrusted.terminal(f"{graded.name}: {graded.score:g} / {graded.max_score:g}"
+                                     + "".join(f"\n  {c.id}: {c.sentence}"
+                                               for c in graded.causes)
+                                     + f"\nreport: {out / 'report.md'}"))
         return 0
     return classmode.run(args.submissions, out, options, args.jobs, progress=not args.quiet)
 

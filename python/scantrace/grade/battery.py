@@ -10,7 +10,7 @@ import numpy as np
 
 import scantrace
 
-from . import diagnose, fill_models, hidden
+from . import diagnose, fill_models, hidden, untrusted
 from .probes import (COLOURS, GOURAUD, PAIR_REGIONS, PAIRS, PAIRS_CORNER, PROBES,
                      SHARED_EDGE_FACES, SHARED_EDGE_SIZE)
 
@@ -164,8 +164,8 @@ class Battery:
                                      verdict="missing"))
 
     def _failed_call(self, result):
-        text = f"**{result.status}**: {result.detail}"
-        return text if len(text) < 3000 else text[:3000] + " …"
+        detail = result.detail if len(result.detail) < 3000 else result.detail[:3000] + " …"
+        return f"**{result.status}**: " + untrusted.md_block(detail)   # the student's text
 
     def _add(self, name, key, fraction, lines, visibility="visible", verdict=""):
         points = self.rubric.points(key)
@@ -207,8 +207,8 @@ class Battery:
                 verdict = verdict or r.status   # a sandbox verdict, not a wrong formula
             elif kind == "equal":
                 failures.append((f"`vector_interp{tuple(args)}`",
-                                 r.detail.strip().splitlines()[-1] if r.status != "ok"
-                                 and r.detail.strip() else what))
+                                 untrusted.md_code(r.detail.strip().splitlines()[-1])
+                                 if r.status != "ok" and r.detail.strip() else what))
         self._add("vector_interp: degenerate cases", "vector_interp_degenerate",
                   ok / len(VECTOR_DEGENERATE),
                   [f"{ok} of {len(VECTOR_DEGENERATE)} cases right."] + lines, verdict=verdict)

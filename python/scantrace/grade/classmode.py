@@ -2,36 +2,143 @@
 sandbox), each into DIR/NAME/, then DIR/class.csv (one line per student) and DIR/class.html (the
 score distribution, how many students have each cause, who timed out or crashed)."""
 
-import concurrent.futures
 import csv
 import html
 import io
+import json
+import multiprocessing
+import multiprocessing.connection
+import os
 import pathlib
+import signal
 import sys
 
+from . import report, untrusted
 from .causes import CATALOGUE
-from .grader import grade
+from .grader import Graded, grade
 from .report import _write_atomic
 
 COLUMNS = ("name", "score", "max_score", "causes", "verdicts", "error")
 
 
+def _safe_name(name):
+    """A folder name of this output: never empty, `.`, `..` or hidden, at most 120 characters."""
+    name = name[:120]
+    return "_" + name[1:] if not name or name.startswith(".") else name
+
+
+def _own_name(p):
+    return p.stem if p.suffix in (".zip", ".py") and not p.is_dir() else p.name
+
+
 def _names(paths):
-    """A folder name per submission, unique (two `hw1.zip` from different folders)."""
-    names, seen = [], {}
-    for p in paths:
-        p = pathlib.Path(p)
-        base = p.stem if p.suffix in (".zip", ".py") else p.name
-        seen[base] = seen.get(base, 0) + 1
-        names.append(base if seen[base] == 1 else f"{base}_{seen[base]}")
-    return names
+    """A folder name per submission, unique: its own name (hw1 for a/hw1.py), with its folders'
+    names in front while it equals another's (a/hw1.py, b/hw1.py: a-hw1, b-hw1), numbered only
+    when the whole paths agree."""
+    items = [pathlib.Path(os.path.abspath(p)) for p in paths]
+    parents = [list(p.parent.parts[1:]) for p in items]
+    names = [_own_name(p) for p in items]
+    depth = [0] * len(items)
+    while True:
+        groups = {}
+        for i, n in enumerate(names):
+            groups.setdefault(n, []).append(i)
+        clashing = [i for g in groups.values() if len(g) > 1 for i in g
+                    if depth[i] < len(parents[i])]
+        if not clashing:
+            break
+        for i in clashing:
+            depth[i] += 1
+            names[i] = "-".join(parents[i][len(parents[i]) - depth[i]:] + [_own_name(items[i])])
+    names = [_safe_name(n) for n in names]
+    taken, unique = set(names), []
+    for n in names:
+        if n in unique:
+            k = 2
+            while f"{n}_{k}" in taken:
+                k += 1
+            n = f"{n}_{k}"
+            taken.add(n)
+        unique.append(n)
+    return unique
 
 
 def _one(path, out_dir, options):
     g = grade(path, out_dir, options)
     return {"name": pathlib.Path(out_dir).name, "score": g.score, "max_score": g.max_score,
             "causes": " ".join(c.id for c in g.causes), "verdicts": " ".join(g.verdicts),
-            "error": g.error}
+            "error": g.error[:2000]}
+
+
+def _error_row(name, error):
+    return {"name": name, "score": 0.0, "max_score": 0.0, "causes": "", "verdicts": "",
+            "error": error}
+
+
+def _worker(path, out_dir, options, conn):
+    """One submission in a process of its own: whatever its student's code does to this process
+    (`os.kill(os.getppid(), SIGKILL)` without the sandbox), only this submission is lost."""
+    try:
+        row = _one(path, out_dir, options)
+    except Exception as e:  # a bug of the grader: the class report still gets written
+        row = _error_row(pathlib.Path(out_dir).name, f"grader error: {e}"[:2000])
+    conn.send_bytes(json.dumps(row).encode())   # JSON, not a pickle: read by the parent
+    conn.close()
+
+
+def _well_formed(row, name):
+    return (isinstance(row, dict) and set(COLUMNS) <= set(row) and row["name"] == name
+            and all(isinstance(row[k], (int, float)) for k in ("score", "max_score"))
+            and all(isinstance(row[k], str) for k in ("causes", "verdicts", "error")))
+
+
+def _finish(process, conn, name, out_dir):
+    """The worker's row; when it died without one, a row and a results.json that say so."""
+    row = None
+    try:
+        if conn.poll(5):
+            row = json.loads(conn.recv_bytes(1 << 20))
+    except (EOFError, OSError, ValueError):
+        row = None
+    conn.close()
+    process.join(10)
+    if _well_formed(row, name):
+        row["causes"] = " ".join(c for c in row["causes"].split() if c in CATALOGUE)
+        return row
+    code = process.exitcode
+    how = f"killed by {signal.Signals(-code).name}" if code and code < 0 else \
+        f"exited with status {code}"
+    error = (f"the grader's process for this submission {how} before it finished (its code may "
+             "have killed it); no other submission is affected")
+    report.write(Graded(name, [], [], [], 0.0, error=error), out_dir)
+    return _error_row(name, error)
+
+
+def _grade_all(jobs_list, options, jobs, bar, rows):
+    context = multiprocessing.get_context("fork")
+    waiting, running = list(jobs_list), {}
+    try:
+        while waiting or running:
+            while waiting and len(running) < jobs:
+                path, name, out_dir = waiting.pop(0)
+                receive, send = context.Pipe(duplex=False)
+                process = context.Process(target=_worker, args=(path, out_dir, options, send))
+                process.start()
+                send.close()
+                running[process.sentinel] = (process, receive, name, out_dir)
+            # A row is a few KB (the error is cut at 2000 characters): it fits in the pipe, so
+            # waiting for the worker's exit before reading cannot block it.
+            for sentinel in multiprocessing.connection.wait(list(running)):
+                process, receive, name, out_dir = running.pop(sentinel)
+                rows[name] = _finish(process, receive, name, out_dir)
+                bar.step(rows[name])
+    finally:
+        for process, receive, name, out_dir in running.values():
+            process.terminate()   # SIGTERM: each removes its temporary folders
+        for process, *_ in running.values():
+            process.join(10)
+            if process.is_alive():
+                process.kill()
 
 
 class _Progress:
@@ -45,7 +152,7 @@ class _Progress:
             return
         filled = 30 * self.done // self.total
         text = (f"[{'#' * filled}{'.' * (30 - filled)}] {self.done}/{self.total} "
-                f"{row['name']}: {row['score']:g}")
+                f"{untrusted.one_line(row['name'])}: {row['score']:g}")
         print(("\r" + text.ljust(79)) if self.tty else text, end="" if self.tty else "\n",
               file=sys.stderr, flush=True)
         if self.tty and self.done == self.total:
@@ -58,20 +165,14 @@ def run(paths, out, options, jobs, progress=True):
     names = _names(paths)
     rows = {}
     bar = _Progress(len(paths), progress)
-    with concurrent.futures.ProcessPoolExecutor(max_workers=jobs) as pool:
-        futures = {pool.submit(_one, p, out / n, options): n for p, n in zip(paths, names)}
-        for future in concurrent.futures.as_completed(futures):
-            name = futures[future]
-            try:
-                row = future.result()
-            except Exception as e:  # a bug of the grader: the class report still gets written
-                row = {"name": name, "score": 0.0, "max_score": 0.0, "causes": "",
-                       "verdicts": "", "error": f"grader error: {e}"}
-            rows[name] = row
-            bar.step(row)
-    ordered = [rows[n] for n in names]
-    _write_atomic(out / "class.csv", class_csv(ordered))
-    _write_atomic(out / "class.html", class_html(ordered))
+    try:
+        _grade_all([(p, n, out / n) for p, n in zip(paths, names)], options, jobs, bar, rows)
+    finally:
+        # Always written, interrupted or not: the rows known, the others saying why they are not.
+        ordered = [rows.get(n) or _error_row(n, "not graded: the grader was interrupted")
+                   for n in names]
+        _write_atomic(out / "class.csv", class_csv(ordered))
+        _write_atomic(out / "class.html", class_html(ordered))
     if progress:
         print(f"{len(ordered)} submissions graded: {out / 'class.csv'}, {out / 'class.html'}",
               file=sys.stderr)
@@ -83,7 +184,8 @@ def class_csv(rows):
     writer = csv.DictWriter(buffer, COLUMNS, lineterminator="\n")
     writer.writeheader()
     for r in rows:
-        writer.writerow({k: (f"{r[k]:g}" if isinstance(r[k], float) else r[k]) for k in COLUMNS})
+        writer.writerow({k: (f"{r[k]:g}" if isinstance(r[k], float) else untrusted.csv_cell(r[k]))
+                         for k in COLUMNS})
     return buffer.getvalue()
 
 
@@ -106,12 +208,13 @@ def class_html(rows):
     causes = "".join(f"<tr><td><code>{c}</code></td><td>{n}</td><td>"
                      f"{html.escape(CATALOGUE[c][0].format(detail='…'))}</td></tr>"
                      for c, n in sorted(counts.items(), key=lambda kv: -kv[1]))
-    trouble = "".join(f"<li><a href='{html.escape(r['name'])}/report.html'>"
-                      f"{html.escape(r['name'])}</a>: {html.escape(r['verdicts'] or r['error'])}"
+    trouble = "".join(f"<li><a href='{untrusted.html(untrusted.href(r['name']))}'>"
+                      f"{untrusted.html(r['name'])}</a>: "
+                      f"{untrusted.html(r['verdicts'] or r['error'])}"
                       "</li>" for r in rows if r["verdicts"] or r["error"])
-    table = "".join(f"<tr><td><a href='{html.escape(r['name'])}/report.html'>"
-                    f"{html.escape(r['name'])}</a></td><td>{r['score']:g} / {r['max_score']:g}"
-                    f"</td><td>{html.escape(r['causes'])}</td></tr>" for r in rows)
+    table = "".join(f"<tr><td><a href='{untrusted.html(untrusted.href(r['name']))}'>"
+                    f"{untrusted.html(r['name'])}</a></td><td>{r['score']:g} / {r['max_score']:g}"
+                    f"</td><td>{untrusted.html(r['causes'])}</td></tr>" for r in rows)
     return f"""<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>Class report</title>
 <style>body{{font-family:sans-serif;max-width:60em;margin:2em auto}}

@@ -8,7 +8,7 @@ import time
 
 import numpy as np
 
-from . import report
+from . import report, untrusted
 from .battery import Battery, TestResult
 from .sandbox import Limits, Session
 from .submission import SubmissionError, stage
@@ -38,7 +38,7 @@ class Graded:
 
     def summary(self):
         if self.error:
-            return f"Not graded: {self.error}"
+            return "Not graded:\n" + untrusted.md_block(self.error)   # file names: student text
         causes = ", ".join(f"`{c.id}`" for c in self.causes) or "none"
         return f"Score {self.score:g} / {self.max_score:g}. Causes found: {causes}."
 

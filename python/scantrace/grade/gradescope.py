@@ -88,10 +88,14 @@ cat "$results/grader_stderr.txt" >&2
 if [ ! -s "$results/results.json" ]; then
   # The grader wrote nothing: say why to the student and the instructor (written whole).
   /usr/bin/python3 - "$results" "$status" <<'EOF'
-import json, os, pathlib, sys
+import json, os, pathlib, re, sys
 results, status = pathlib.Path(sys.argv[1]), sys.argv[2]
 why = (results / "grader_stderr.txt").read_text(errors="replace").strip()[-4000:]
-doc = {"score": 0, "output": f"Not graded: the grader failed (exit status {status}): {why}",
+# Student text may be in it: control characters escaped, in a fence longer than any backticks.
+why = re.sub("[\x00-\x08\x0b-\x1f\x7f-\x9f]", lambda m: f"\\x{ord(m.group()):02x}", why)
+fence = "`" * max([3] + [len(r) + 1 for r in re.findall("`+", why)])
+doc = {"score": 0, "output": f"Not graded: the grader failed (exit status {status}):\n\n"
+                             f"{fence}text\n{why}\n{fence}\n",
        "output_format": "md", "tests": []}
 (results / ".results.json").write_text(json.dumps(doc, indent=1))
 os.replace(results / ".results.json", results / "results.json")

@@ -10,6 +10,8 @@ import tempfile
 
 import scantrace
 
+from . import untrusted
+
 RESULTS_LIMIT = 100_000
 
 
@@ -45,7 +47,8 @@ def results_json(graded):
             break
         longest["output"] = longest["output"][: len(longest["output"]) // 2] + "\n… (shortened)"
         text = json.dumps(result, indent=1)
-    return text
+    return untrusted.fit_results(result, RESULTS_LIMIT) if len(text.encode()) > RESULTS_LIMIT \
+        else text
 
 
 def _cause_md(c):
@@ -57,7 +60,7 @@ def _cause_md(c):
 
 
 def markdown(graded):
-    lines = [f"# {graded.name}: {graded.score:g} / {graded.max_score:g}", ""]
+    lines = [f"# {untrusted.md_code(graded.name)}: {graded.score:g} / {graded.max_score:g}", ""]
     if graded.causes:
         lines += ["## What is wrong", ""]
         for c in graded.causes:
@@ -74,7 +77,7 @@ def markdown(graded):
         if t.output:
             lines += [f"### {t.name}", "", t.output, ""]
     if graded.notes:
-        lines += ["## Notes", ""] + [f"- {n}" for n in graded.notes] + [""]
+        lines += ["## Notes", untrusted.md_block("\n".join(graded.notes))]
     return "\n".join(lines)
 
 

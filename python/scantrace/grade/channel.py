@@ -57,10 +57,10 @@ def _header(data):
 def _shape(header, limit):
     shape = header.get("shape")
     if not (isinstance(shape, list) and len(shape) <= 3
-            and all(type(n) is int and 0 <= n <= limit for n in shape)):
-        raise Broken(f"a declared shape {untrusted.one_line(repr(shape))[:80]} that is not a "
-                     "small array shape")
-    if math.prod(shape) > limit:
+            and all(type(n) is int and n >= 0 for n in shape)):
+        raise Broken(f"a declared shape {untrusted.one_line(repr(shape))[:80]} that is not an "
+                     "array shape of at most 3 dimensions")
+    if max(shape, default=0) > limit or math.prod(shape) > limit:
         raise Broken(f"a value of shape {tuple(shape)}: more than the {limit} numbers this call "
                      "may return")
     return shape

@@ -89,12 +89,13 @@ def _bwrap_command(work, submission, python_args, tmp_mb=64):
     uid = ["--uid", str(os.getuid()), "--gid", str(os.getgid())]
     # No nested user namespace: inside one the student could mount a tmpfs of no size limit.
     userns = ["--unshare-user", "--disable-userns"] if _bwrap_can("--disable-userns") else []
-    size = str(tmp_mb * 1024 * 1024)
+    # bubblewrap < 0.5 has no --size: its tmpfs are then bounded by RLIMIT_FSIZE per file only.
+    size = ["--size", str(tmp_mb * 1024 * 1024)] if _bwrap_can("--size") else []
     # /dev is bwrap's own tmpfs, of no size limit: read-only, with a sized /dev/shm in it.
     return ["bwrap", "--unshare-all", *userns, "--die-with-parent", "--new-session",
             "--ro-bind", "/usr", "/usr", *links, *etc,
-            "--proc", "/proc", "--dev", "/dev", "--size", size, "--tmpfs", "/dev/shm",
-            "--remount-ro", "/dev", "--size", size, "--tmpfs", "/tmp",
+            "--proc", "/proc", "--dev", "/dev", *size, "--tmpfs", "/dev/shm",
+            "--remount-ro", "/dev", *size, "--tmpfs", "/tmp",
             "--ro-bind", str(submission), "/submission",
             "--ro-bind", str(HARNESS.resolve()), "/harness/harness.py",
             "--ro-bind", str(work), "/out", "--chdir", "/tmp", *uid,
@@ -248,6 +249,7 @@ class Session:
         self.limits, self.sandbox = limits, sandbox
         self.work = pathlib.Path(tempfile.mkdtemp(prefix="scantrace-grade-"))
         (self.work / "in").mkdir()
+        (self.work / "in").chmod(0o755)   # readable by the child's uid whatever the umask
         self.inputs = 0
         self.spent = 0.0
         self.results_left = limits.results_mb * 1024 * 1024
@@ -262,6 +264,7 @@ class Session:
         self.inputs += 1
         name = f"in/{self.inputs}.npy"
         np.save(self.work / name, np.ascontiguousarray(array), allow_pickle=False)
+        (self.work / name).chmod(0o644)
         return name
 
     def run(self, calls):
@@ -316,6 +319,7 @@ class Session:
                 "module_paths": self._module_paths(), "result_fd": result_fd,
                 "import_timeout": self.limits.call_seconds}
         (batch_out / "spec.json").write_text(json.dumps(spec))
+        (batch_out / "spec.json").chmod(0o644)
         return harness, paths["out"] + "/spec.json"
 
     def _command(self, harness, spec):

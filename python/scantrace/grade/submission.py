@@ -93,6 +93,8 @@ def _stage_zip(path, root, notes):
                 _write_new(root.joinpath(*parts), data, budget)
             except FileExistsError:
                 notes.append(f"{m.filename}: in the zip twice; the first is staged")
+            except OSError as e:   # a name too long for the file system, a part that is a file
+                notes.append(f"{m.filename}: cannot be staged ({e.strerror})")
 
 
 def _read_regular(name, dir_fd, shown):

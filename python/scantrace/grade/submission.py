@@ -17,6 +17,7 @@ FUNCTIONS = ("vector_interp", "f_shading", "g_shading", "render_img")
 MAX_FILES = 200
 MAX_BYTES = 2_000_000
 MAX_TOTAL = 20_000_000
+MAX_DEPTH = 32
 
 
 class SubmissionError(ValueError):
@@ -59,42 +60,59 @@ def _zip_kind(member):
     return "a symbolic link" if stat.S_ISLNK(mode) else "not a regular file"
 
 
-def _stage_zip(path, root, notes):
+def _open_regular(path):
+    """The file given, opened without following a link or blocking on a FIFO."""
     try:
-        archive = zipfile.ZipFile(path)
-    except (zipfile.BadZipFile, OSError, ValueError, EOFError) as e:
-        raise SubmissionError(f"{path}: not a readable zip file ({e})") from None
+        fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    except OSError as e:
+        raise SubmissionError(f"{path}: cannot be opened ({e.strerror})") from None
+    if not stat.S_ISREG(os.fstat(fd).st_mode):
+        os.close(fd)
+        raise SubmissionError(f"{path}: not a regular file")
+    return os.fdopen(fd, "rb")
+
+
+def _stage_zip(path, root, notes):
+    with _open_regular(path) as f:
+        try:
+            archive = zipfile.ZipFile(f)
+        except (zipfile.BadZipFile, OSError, ValueError, EOFError) as e:
+            raise SubmissionError(f"{path}: not a readable zip file ({e})") from None
+        with archive:
+            _stage_members(path, archive, root, notes)
+
+
+def _stage_members(path, archive, root, notes):
     budget = [MAX_TOTAL]
-    with archive:
-        members = [m for m in archive.infolist() if m.filename.endswith(".py") and not m.is_dir()]
-        if len(members) > MAX_FILES:
-            raise SubmissionError(f"{path}: {len(members)} .py files (at most {MAX_FILES})")
-        for m in members:
-            parts = pathlib.PurePosixPath(m.filename).parts
-            if m.filename.startswith("/") or ".." in parts:
-                raise SubmissionError(f"{path}: {m.filename}: a path outside the archive")
-            if any(_skip_dir(part) for part in parts[:-1]) or parts[-1].startswith("."):
-                if any(part.endswith(".py") for part in parts[:-1]):
-                    notes.append(f"{m.filename}: in a folder named like a module, not staged")
-                continue
-            if _zip_kind(m):
-                notes.append(f"{m.filename}: {_zip_kind(m)}, not staged")
-                continue
-            if m.file_size > MAX_BYTES:
-                raise SubmissionError(f"{path}: {m.filename}: {m.file_size} bytes (at most "
-                                      f"{MAX_BYTES})")
-            try:
-                data = archive.read(m)
-            except (zipfile.BadZipFile, zlib.error, OSError, EOFError, ValueError,
-                    NotImplementedError, RuntimeError) as e:
-                # A bad CRC, an unknown compression, an encrypted member.
-                raise SubmissionError(f"{path}: {m.filename}: cannot be read ({e})") from None
-            try:
-                _write_new(root.joinpath(*parts), data, budget)
-            except FileExistsError:
-                notes.append(f"{m.filename}: in the zip twice; the first is staged")
-            except OSError as e:   # a name too long for the file system, a part that is a file
-                notes.append(f"{m.filename}: cannot be staged ({e.strerror})")
+    members = [m for m in archive.infolist() if m.filename.endswith(".py") and not m.is_dir()]
+    if len(members) > MAX_FILES:
+        raise SubmissionError(f"{path}: {len(members)} .py files (at most {MAX_FILES})")
+    for m in members:
+        parts = pathlib.PurePosixPath(m.filename).parts
+        if m.filename.startswith("/") or ".." in parts:
+            raise SubmissionError(f"{path}: {m.filename}: a path outside the archive")
+        if any(_skip_dir(part) for part in parts[:-1]) or parts[-1].startswith("."):
+            if any(part.endswith(".py") for part in parts[:-1]):
+                notes.append(f"{m.filename}: in a folder named like a module, not staged")
+            continue
+        if _zip_kind(m):
+            notes.append(f"{m.filename}: {_zip_kind(m)}, not staged")
+            continue
+        if m.file_size > MAX_BYTES:
+            raise SubmissionError(f"{path}: {m.filename}: {m.file_size} bytes (at most "
+                                  f"{MAX_BYTES})")
+        try:
+            data = archive.read(m)
+        except (zipfile.BadZipFile, zlib.error, OSError, EOFError, ValueError,
+                NotImplementedError, RuntimeError) as e:
+            # A bad CRC, an unknown compression, an encrypted member.
+            raise SubmissionError(f"{path}: {m.filename}: cannot be read ({e})") from None
+        try:
+            _write_new(root.joinpath(*parts), data, budget)
+        except FileExistsError:
+            notes.append(f"{m.filename}: in the zip twice; the first is staged")
+        except OSError as e:   # a name too long for the file system, a part that is a file
+            notes.append(f"{m.filename}: cannot be staged ({e.strerror})")
 
 
 def _read_regular(name, dir_fd, shown):
@@ -109,6 +127,9 @@ def _read_regular(name, dir_fd, shown):
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):
             return None, "not a regular file"
+        if info.st_nlink > 1:
+            # A hard link may be another's file (as root, any file of this file system).
+            return None, f"a hard link ({info.st_nlink} names)"
         if info.st_size > MAX_BYTES:
             raise SubmissionError(f"{shown}: {info.st_size} bytes (at most {MAX_BYTES})")
         data = f.read(MAX_BYTES + 1)
@@ -125,6 +146,11 @@ def _stage_dir(path, root, notes):
         rel = pathlib.Path(folder).relative_to(path)
         notes += [f"{rel / d}/: a folder named like a module, not staged" for d in dirs
                   if d.endswith(".py")]
+        if len(rel.parts) >= MAX_DEPTH and dirs:
+            # fwalk recurses and holds a descriptor a level: 5000 nested folders would be a
+            # RecursionError (or run out of descriptors) in the grader.
+            notes.append(f"{rel}/: folders deeper than {MAX_DEPTH} levels, not staged")
+            dirs[:] = []
         dirs[:] = [d for d in dirs if not _skip_dir(d)]
         for name in sorted(files):
             if not name.endswith(".py") or name.startswith("."):
@@ -216,7 +242,7 @@ def stage(path, module=None):
     try:
         if stat.S_ISDIR(kind):
             _stage_dir(path, root, notes)
-        elif path.suffix == ".zip" and stat.S_ISREG(kind):
+        elif path.suffix == ".zip":
             _stage_zip(path, root, notes)
         elif path.suffix == ".py":
             _stage_file(path, root)

@@ -16,6 +16,7 @@ import subprocess
 import sys
 import tempfile
 import textwrap
+import threading
 import time
 import zipfile
 
@@ -151,6 +152,10 @@ def test_staging_copies_regular_files_only(tmp_path, sandbox_ok):
     (sub / "pkg.py" / "extra.py").write_text("import os\nos._exit(3)\n")
     (sub / "deep10k.py").write_text("x = " + "+".join(["1"] * 5000) + "\n")
     (sub / "deep200k.py").write_text("x = " + "-" * 200_000 + "1\n")
+    os.link(secret, sub / "hard.py")          # a hard link: a regular file, another's
+    deep = sub.joinpath(*["d"] * 40)
+    deep.mkdir(parents=True)
+    (deep / "deepest.py").write_text("import os\nos._exit(3)\n")
     out = tmp_path / "out"
     assert _grade([sub], out) == 0
     text, results = _results(out)
@@ -161,7 +166,23 @@ def test_staging_copies_regular_files_only(tmp_path, sandbox_ok):
     assert "pkg.py/: a folder named like a module, not staged" in notes
     assert "deep10k.py: cannot be parsed (RecursionError" in notes
     assert "deep200k.py: cannot be parsed (MemoryError" in notes
+    assert "hard.py: a hard link (2 names), not staged" in notes
+    assert "folders deeper than 32 levels, not staged" in notes
     assert results["score"] == results["extra_data"]["max_score"] == 60
+
+
+@pytest.mark.parametrize("name", ["hw1.py", "hw1.zip"])
+def test_a_fifo_given_as_the_submission_is_refused_at_once(tmp_path, name):
+    """Issue row 5: a FIFO named like a submission blocks nothing (O_NONBLOCK, then fstat)."""
+    os.mkfifo(tmp_path / name)
+    done = []
+    thread = threading.Thread(target=lambda: done.append(_grade([tmp_path / name],
+                                                                tmp_path / "out")), daemon=True)
+    thread.start()
+    thread.join(timeout=30)
+    assert done == [1]
+    _, results = _results(tmp_path / "out")
+    assert "not a regular file" in results["output"]
 
 
 def _zip(path, members):

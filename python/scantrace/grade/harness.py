@@ -133,6 +133,12 @@ class _Status:
         self.fd = fd
 
     def write(self, payload=b"", **record):
+        # The grader refuses a header over 64 KiB: a 10 MB exception message, or thousands of
+        # skipped demo lines, must not turn an honest verdict into a broken channel.
+        if "detail" in record:
+            record["detail"] = str(record["detail"])[:4000]
+        if "skipped" in record:
+            record["skipped"] = [str(s)[:200] for s in record["skipped"][:20]]
         header = json.dumps(record).encode("utf-8")
         data = memoryview(len(header).to_bytes(4, "big") + header + payload)
         while data:

@@ -30,9 +30,10 @@ class Submission:
     root: pathlib.Path                   # the staged copy the sandbox sees
     functions: dict                      # function name -> module name
     notes: list                          # what the grader could not use, naming file and line
+    staged: pathlib.Path | None = None   # the temporary folder holding root, however deep
 
     def close(self):
-        shutil.rmtree(self.root.parent, ignore_errors=True)
+        shutil.rmtree(self.staged or self.root.parent, ignore_errors=True)
 
 
 def _skip_dir(name):
@@ -265,4 +266,4 @@ def stage(path, module=None):
         shutil.rmtree(tmp, ignore_errors=True)
         raise
     name = path.stem if path.suffix in (".zip", ".py") and not stat.S_ISDIR(kind) else path.name
-    return Submission(name, root, functions, notes)
+    return Submission(name, root, functions, notes, tmp)

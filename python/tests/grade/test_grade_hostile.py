@@ -79,12 +79,14 @@ CHANNEL_ATTACKS = FORGE + textwrap.dedent('''\
             os.write(_channel(), _record({"event": "end", "call": me, "status": "ok",
                                           "shape": [4, 4, 3]}, bytes(8)))
             os._exit(0)
+        if mode == 10:  # not an attack: an honest exception with a 10 MB message
+            raise ValueError("x" * 10_000_000)
         img[1, 1] = 0.5
         return img
     ''')
 
 CHANNEL_EXPECTED = {0: "ok", 1: "error", 2: "forbidden", 3: "forbidden", 4: "forbidden",
-                    5: "forbidden", 6: "forbidden", 7: "crashed", 8: "ok", 9: "ok"}
+                    5: "forbidden", 6: "forbidden", 7: "crashed", 8: "ok", 9: "ok", 10: "error"}
 
 
 def _mode_calls(session, modes):
@@ -122,6 +124,7 @@ def test_forged_records_and_planted_files_are_verdicts(tmp_path, sandbox_ok, san
     assert "'end' 'm9' where end of 'm4' was due" in results["m4"].detail
     assert results["m9"].value[1, 1].tolist() == [0.5, 0.5, 0.5]
     assert results["m8"].value[1, 1].tolist() == [0.5, 0.5, 0.5]
+    assert "xxxx" in results["m10"].detail and len(results["m10"].detail) <= 4000
 
 
 SECRET_TEXT = "ROOT-ONLY-SECRET-1234"
@@ -223,6 +226,18 @@ def test_hostile_zips_get_a_verdict_and_results_json(tmp_path, sandbox_ok, case)
         assert "shadow.py: a symbolic link, not staged" in notes and "root:" not in text
     else:
         assert "hw1.py/extra.py: in a folder named like a module, not staged" in notes
+
+
+def test_a_zip_of_nested_folders_leaves_no_temporary_folder(tmp_path, monkeypatch):
+    """Issue row 12: the staged copy is removed whole, however deep its files lie (a zip's
+    a/b/hw1.py made the submission's root a/b, and only a/ was removed)."""
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path / "t"))
+    (tmp_path / "t").mkdir()
+    path = _zip(tmp_path / "sub.zip", [("a/b/hw1.py", CORRECT, stat.S_IFREG | 0o644)])
+    sub = stage(path)
+    assert sub.root.name == "b" and (sub.root / "hw1.py").exists()
+    sub.close()
+    assert list((tmp_path / "t").iterdir()) == []
 
 
 def test_a_dotted_file_name_scores_full_marks(tmp_path, sandbox_ok):

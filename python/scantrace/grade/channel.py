@@ -14,9 +14,10 @@ one record's bytes plus one read, whatever it is fed, and never raises.
 
 What this cannot tell apart: a record the harness wrote from one the student's code wrote in the
 same process (the audit hook can be switched off, the pipe's descriptor found in /proc/self/fd).
-Forging the result of a call is no more than returning that value from it, which the student's
-function can do anyway; what the channel guarantees is that nothing sent can hang, crash or
-exhaust the grader, or be read as a call it is not.
+Forging the result of a call (or, in order, of the calls after it, whose inputs it can read) is
+no more than returning those values, which the student's functions can do anyway; what the
+channel guarantees is that nothing sent can hang, crash or exhaust the grader, or be read as a
+call it is not.
 """
 
 import json

@@ -346,6 +346,14 @@ class Session:
                                        stdin=subprocess.DEVNULL, start_new_session=True, env=env,
                                        cwd=batch_out, pass_fds=(write_fd,),
                                        preexec_fn=_preexec(self.limits, drop))
+        except OSError as e:
+            # The grader's own fork failed (its uid at the process limit, no memory): every call
+            # left gets a verdict saying so, and the report is still written.
+            os.close(read_fd)
+            self.import_status = CallResult("crashed", "the grader could not start the "
+                                            f"student's process ({e.strerror}: the process "
+                                            "limit, or memory)")
+            return False
         except BaseException:
             os.close(read_fd)
             raise

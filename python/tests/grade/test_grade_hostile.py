@@ -554,3 +554,21 @@ def test_sigterm_removes_the_temporary_folders(tmp_path, request, sandbox_ok, jo
     assert _temporaries(tmp) == []
     if jobs > 1:
         assert (tmp_path / "out" / "class.csv").exists()
+
+
+def test_a_grader_that_cannot_fork_still_writes_results_json(tmp_path, monkeypatch):
+    """Issue rows 6 and 11: the grader's own fork of the student's process fails (its uid at the
+    process limit): every test gets the verdict `crashed` naming it, and results.json is written."""
+    from conftest import grade_source
+    from scantrace.grade import sandbox
+
+    def no_fork(*args, **kwargs):
+        raise BlockingIOError(11, "Resource temporarily unavailable")
+
+    monkeypatch.setattr(sandbox.subprocess, "Popen", no_fork)
+    graded = grade_source(tmp_path, CORRECT, hidden_seed=None)
+    _, results = _results(tmp_path / "student-out")
+    assert graded.score == 0 and results["tests"]
+    assert {t["extra_data"]["verdict"] for t in results["tests"]} == {"crashed"}
+    assert "could not start the student's process (Resource temporarily unavailable" in \
+        results["tests"][0]["output"]

@@ -6,6 +6,7 @@ import pathlib
 import signal
 import sys
 import threading
+import traceback
 
 from . import classmode, rubric as rubric_module, untrusted
 from .grader import Options, course_arrays, grade
@@ -141,7 +142,12 @@ def _main(args):
                       Limits(call_seconds=args.call_seconds, memory_mb=args.memory_mb))
     out = pathlib.Path(args.output)
     if len(args.submissions) == 1:
-        graded = grade(args.submissions[0], out, options)
+        try:
+            graded = grade(args.submissions[0], out, options)
+        except Exception as e:  # a bug of the grader: still a results.json saying so
+            traceback.print_exc()
+            classmode.not_graded(pathlib.Path(args.submissions[0]).name, out, f"grader error: {e}")
+            return 1
         if graded.error:
             print(f"scantrace grade: {untrusted.terminal(graded.error)}", file=sys.stderr)
             return 1

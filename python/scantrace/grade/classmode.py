@@ -12,6 +12,7 @@ import os
 import pathlib
 import signal
 import sys
+import traceback
 
 from . import report, untrusted
 from .causes import CATALOGUE
@@ -75,13 +76,23 @@ def _error_row(name, error):
             "error": error}
 
 
+def not_graded(name, out_dir, error):
+    """A results.json (and reports) saying why a submission has no grade; never raises."""
+    try:
+        report.write(Graded(name, [], [], [], 0.0, error=error), out_dir)
+    except Exception:  # noqa: BLE001 - the folder itself may be what failed
+        pass
+    return _error_row(name, error)
+
+
 def _worker(path, out_dir, options, conn):
     """One submission in a process of its own: whatever its student's code does to this process
     (`os.kill(os.getppid(), SIGKILL)` without the sandbox), only this submission is lost."""
     try:
         row = _one(path, out_dir, options)
     except Exception as e:  # a bug of the grader: the class report still gets written
-        row = _error_row(pathlib.Path(out_dir).name, f"grader error: {e}"[:2000])
+        traceback.print_exc()
+        row = not_graded(pathlib.Path(out_dir).name, out_dir, f"grader error: {e}"[:2000])
     conn.send_bytes(json.dumps(row).encode())   # JSON, not a pickle: read by the parent
     conn.close()
 
@@ -108,10 +119,8 @@ def _finish(process, conn, name, out_dir):
     code = process.exitcode
     how = f"killed by {signal.Signals(-code).name}" if code and code < 0 else \
         f"exited with status {code}"
-    error = (f"the grader's process for this submission {how} before it finished (its code may "
-             "have killed it); no other submission is affected")
-    report.write(Graded(name, [], [], [], 0.0, error=error), out_dir)
-    return _error_row(name, error)
+    return not_graded(name, out_dir, f"the grader's process for this submission {how} before "
+                      "it finished (its code may have killed it); no other submission is affected")
 
 
 def _grade_all(jobs_list, options, jobs, bar, rows):

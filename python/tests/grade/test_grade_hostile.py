@@ -572,3 +572,20 @@ def test_a_grader_that_cannot_fork_still_writes_results_json(tmp_path, monkeypat
     assert {t["extra_data"]["verdict"] for t in results["tests"]} == {"crashed"}
     assert "could not start the student's process (Resource temporarily unavailable" in \
         results["tests"][0]["output"]
+
+
+def test_a_grader_bug_still_writes_results_json(tmp_path, monkeypatch, capsys):
+    """Every submission gets a results.json: here the grader itself fails (a bug simulated in
+    Battery.build), exit 1, the traceback on stderr for the instructor."""
+    from scantrace.grade import grader
+
+    def broken(self):
+        raise KeyError("a bug of the grader")
+
+    monkeypatch.setattr(grader.Battery, "build", broken)
+    sub = write_submission(tmp_path / "s", CORRECT)
+    out = tmp_path / "out"
+    assert _grade([sub], out, "--no-sandbox") == 1
+    _, results = _results(out)
+    assert results["output"].startswith("Not graded") and "grader error" in results["output"]
+    assert "KeyError: 'a bug of the grader'" in capsys.readouterr().err

@@ -23,8 +23,11 @@ COLUMNS = ("name", "score", "max_score", "causes", "verdicts", "error")
 
 
 def _safe_name(name):
-    """A folder name of this output: never empty, `.`, `..` or hidden, at most 120 characters."""
+    """A folder name of this output: never empty, `.`, `..`, hidden or the class report's own
+    file names (a folder `class.csv/` would stop it being written), at most 120 characters."""
     name = name[:120]
+    if name in ("class.csv", "class.html"):
+        return "_" + name
     return "_" + name[1:] if not name or name.startswith(".") else name
 
 

@@ -359,7 +359,8 @@ def test_colliding_names_keep_their_folders(tmp_path):
         ["a-hw1", "b-hw1", "hw1_2"]
     assert classmode._names(["a/hw1.py", "a/hw1.py", "a/hw1_2.py"])[:2] != ["hw1", "hw1"]
     assert len(set(classmode._names(["p/q", "p/q", "p/q_2"]))) == 3
-    assert [classmode._safe_name(n) for n in ("..", ".hidden", "")] == ["_.", "_hidden", "_"]
+    assert [classmode._safe_name(n) for n in ("..", ".hidden", "", "class.csv", "class.html")] \
+        == ["_.", "_hidden", "_", "_class.csv", "_class.html"]
     sources = {"a": CORRECT, "b": "def render_img(:\n", "c": CORRECT}
     paths = []
     for folder, source in sources.items():

@@ -11,10 +11,11 @@ runs in its own sandboxed children), with the hidden scenes of a fixed seed; the
 test's temporary directory) for corpus/table.py."""
 
 import concurrent.futures
+import functools
+import importlib.util
 import json
 import os
 import pathlib
-import sys
 
 import pytest
 
@@ -26,8 +27,18 @@ from scantrace.grade.sandbox import Limits
 from conftest import SHARED_DATA, SOURCE_DIR, quick_options
 
 CORPUS = pathlib.Path(__file__).resolve().parent / "corpus"
-sys.path.insert(0, str(CORPUS))
-import table  # noqa: E402  (corpus/table.py: expected.toml and the Markdown table)
+
+
+def _load_table():
+    """corpus/table.py (expected.toml and the Markdown table), loaded by path: the corpus folder
+    is not put on sys.path, where its students' modules (hw1, render_img, ...) would be found."""
+    spec = importlib.util.spec_from_file_location("corpus_table", CORPUS / "table.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+table = _load_table()
 
 EXPECTED = table.load_expected()
 COURSE_NPY = SHARED_DATA / "hw1_2024.npy"
@@ -36,14 +47,18 @@ HIDDEN_SEED = 2024
 VERDICTS = {"timeout", "memory", "forbidden", "crashed"}
 
 
+@functools.cache
+def _course_scene():
+    import scantrace
+    return course_arrays(scantrace.load_scene(str(COURSE_NPY)))
+
+
 def _options(course):
     if not course:
         return quick_options(hidden_seed=HIDDEN_SEED)
-    import scantrace
-    scene = course_arrays(scantrace.load_scene(str(COURSE_NPY)))
     # The course scene is 10,000 faces of the student's pure Python: 6 x 5 s per call.
-    return Options(rubric.load(), scene, HIDDEN_SEED, None, True,
-                   Limits(call_seconds=5.0, batch_seconds=240.0))
+    return Options(rubric=rubric.load(), scene=_course_scene(), hidden_seed=HIDDEN_SEED,
+                   limits=Limits(call_seconds=5.0, batch_seconds=240.0))
 
 
 def _grade_one(name, out):

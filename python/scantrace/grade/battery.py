@@ -23,27 +23,56 @@ class TestResult:
     output: str = ""
     visibility: str = "visible"
     verdict: str = ""       # the sandbox's verdict when the code did not run to the end
+    probes: list = dataclasses.field(default_factory=list)   # ProbeOutcome of each probe
 
     @property
     def status(self):
         return "passed" if self.score >= self.max_score else "failed"
 
 
+@dataclasses.dataclass
+class ProbeOutcome:
+    """One probe of a probe test: whether it is in the assignment's domain (integer vertices, as
+    the course's scene: `integer`), whether it passed, and if not the call's status and the first
+    wrong row. Probes with integer False are "beyond the assignment"."""
+    name: str
+    integer: bool
+    passed: bool
+    status: str = "ok"          # the call's status: ok, error, timeout, memory, forbidden, crashed
+    first_wrong_row: str = ""   # "row 7: expected 12..18, yours 11..18"
+
+
+def _vi(p1, p2, v1, v2, coord, dim):
+    """A vector_interp call as the course makes it: p1, p2 int64 arrays, V1, V2 float64 arrays of 3
+    (or plain numbers: a scalar value), an int coord and dim 1 or 2. Students write
+    `V1 + t * (V2 - V1)` on them, which fails on Python lists."""
+    def value(v):
+        return np.asarray(v, np.float64) if isinstance(v, (list, tuple)) else float(v)
+    return (np.asarray(p1, np.int64), np.asarray(p2, np.int64), value(v1), value(v2), int(coord),
+            int(dim))
+
+
+def show_args(args):
+    """The arguments of a vector_interp case as the student would type them."""
+    return "(" + ", ".join(str(a.tolist()) if isinstance(a, np.ndarray) else repr(a)
+                           for a in args) + ")"
+
+
 # The course's vector_interp(p1, p2, V1, V2, coord, dim): (arguments, accepted answers).
 VECTOR_CASES = (
-    ("colour at the middle along x", ([0, 0], [10, 0], [1, 0, 0], [0, 0, 1], 5, 1), None),
-    ("a quarter along y", ([2, 3], [8, 11], [0.0, 0.2, 1.0], [1.0, 0.6, 0.0], 5, 2), None),
-    ("p1 after p2", ([10, 4], [2, 4], [0.5, 0.5, 0.5], [0.0, 1.0, 0.25], 4, 1), None),
-    ("a scalar value", ([1, 1], [1, 9], 2.0, 10.0, 3, 2), None),
-    ("at an endpoint", ([3, 7], [9, 1], [0.1, 0.2, 0.3], [0.9, 0.8, 0.7], 9, 1), None),
+    ("colour at the middle along x", _vi([0, 0], [10, 0], [1, 0, 0], [0, 0, 1], 5, 1), None),
+    ("a quarter along y", _vi([2, 3], [8, 11], [0.0, 0.2, 1.0], [1.0, 0.6, 0.0], 5, 2), None),
+    ("p1 after p2", _vi([10, 4], [2, 4], [0.5, 0.5, 0.5], [0.0, 1.0, 0.25], 4, 1), None),
+    ("a scalar value", _vi([1, 1], [1, 9], 2.0, 10.0, 3, 2), None),
+    ("at an endpoint", _vi([3, 7], [9, 1], [0.1, 0.2, 0.3], [0.9, 0.8, 0.7], 9, 1), None),
 )
 # Degenerate: equal coordinates along dim (V1, V2 or their midpoint accepted), a coordinate
 # outside the segment (the line extended, or clamped to the nearer end).
 VECTOR_DEGENERATE = (
-    ("equal x with dim 1", ([4, 2], [4, 9], [1, 0, 0], [0, 0, 1], 4, 1), "equal"),
-    ("equal points with dim 2", ([5, 5], [5, 5], [0.2, 0.4, 0.6], [0.6, 0.4, 0.2], 5, 2),
+    ("equal x with dim 1", _vi([4, 2], [4, 9], [1, 0, 0], [0, 0, 1], 4, 1), "equal"),
+    ("equal points with dim 2", _vi([5, 5], [5, 5], [0.2, 0.4, 0.6], [0.6, 0.4, 0.2], 5, 2),
      "equal"),
-    ("coord outside the segment", ([0, 0], [10, 0], [0, 0, 0], [1, 1, 1], 12, 1), "outside"),
+    ("coord outside the segment", _vi([0, 0], [10, 0], [0, 0, 0], [1, 1, 1], 12, 1), "outside"),
 )
 
 
@@ -90,10 +119,17 @@ class Battery:
         return self._call(f"{func}_{probe.name}", func, args, canvas=0,
                           canvas_shape=[*probe.size, 3])
 
+    def _arg(self, value):
+        """A call's argument: arrays go as .npy inputs (their dtype kept), numbers as JSON."""
+        return {"npy": self.session.input(value)} if isinstance(value, np.ndarray) else value
+
     def _scene_inputs(self, scene):
-        s = self.session
-        return {"faces": s.input(scene["faces"]), "vertices": s.input(scene["vertices"]),
-                "vcolors": s.input(scene["vcolors"]), "depth": s.input(scene["depth"])}
+        """The scene's arrays with the course's dtypes (int64 vertices and faces, float64
+        colours and depths), whatever the scene was loaded or generated with: face by face the
+        harness passes vertices[face] and vcolors[face] of these, as the course's render_img."""
+        from .grader import course_arrays   # grader imports battery: imported when used
+        arrays, s = course_arrays(scene), self.session
+        return {k: s.input(arrays[k]) for k in ("faces", "vertices", "vcolors", "depth")}
 
     def _scene_calls(self, label, scene, with_faces):
         names = self._scene_inputs(scene)
@@ -113,7 +149,7 @@ class Battery:
 
     def build(self):
         for i, (_, args, _) in enumerate(VECTOR_CASES + VECTOR_DEGENERATE):
-            self._call(f"vi_{i}", "vector_interp", list(args))
+            self._call(f"vi_{i}", "vector_interp", [self._arg(a) for a in args])
         for probe in PROBES:
             self._probe_call("f_shading", probe)
         for probe in GOURAUD:
@@ -167,6 +203,23 @@ class Battery:
         text = f"**{result.status}**: {result.detail}"
         return text if len(text) < 3000 else text[:3000] + " …"
 
+    def _failure_lines(self, failed):
+        """[(label, CallResult)] of failed calls as output lines, the calls failing the same way
+        (the same status and last line: one TypeError on every probe) grouped into one line with
+        their count and one traceback, not one traceback per call."""
+        groups = {}
+        for label, r in failed:
+            last = r.detail.strip().splitlines()[-1] if r.detail.strip() else ""
+            groups.setdefault((r.status, last), []).append((label, r))
+        lines = []
+        for members in groups.values():
+            labels = [label for label, _ in members]
+            head = labels[0] if len(labels) == 1 else (
+                f"{len(labels)} calls failing the same way ({', '.join(labels[:5])}"
+                + (", …" if len(labels) > 5 else "") + ")")
+            lines.append(f"- {head}: {self._failed_call(members[0][1])}")
+        return lines
+
     def _add(self, name, key, fraction, lines, visibility="visible", verdict=""):
         points = self.rubric.points(key)
         self.tests.append(TestResult(name, points, round(points * fraction, 2),
@@ -178,20 +231,24 @@ class Battery:
             self._missing("vector_interp: degenerate cases", "vector_interp_degenerate",
                           "vector_interp")
             return
-        ok, lines, verdict = 0, [], ""
+        ok, lines, verdict, failed = 0, [], "", []
         for i, (text, args, _) in enumerate(VECTOR_CASES):
             r = self.results[f"vi_{i}"]
             expected = np.asarray(scantrace.vector_interp(*args), float)
             if r.status != "ok":
-                lines.append(f"- {text} `{args}`: {self._failed_call(r)}")
+                failed.append((f"{text} `{show_args(args)}`", r))
                 verdict = verdict or r.status
             elif r.value.shape == expected.shape and np.allclose(r.value, expected, atol=1e-6):
                 ok += 1
             else:
-                lines.append(f"- {text} `{args}`: expected {np.round(expected, 4).tolist()}, "
-                             f"yours {np.round(r.value, 4).tolist()}")
+                lines.append(f"- {text} `{show_args(args)}`: expected "
+                             f"{np.round(expected, 4).tolist()}, yours "
+                             f"{np.round(r.value, 4).tolist()}")
         self._add("vector_interp: ordinary cases", "vector_interp", ok / len(VECTOR_CASES),
-                  [f"{ok} of {len(VECTOR_CASES)} cases right."] + lines, verdict=verdict)
+                  [f"{ok} of {len(VECTOR_CASES)} cases right."] + self._failure_lines(failed)
+                  + lines, verdict=verdict)
+        # An exception the ordinary cases raise too is not the degenerate case's own failure.
+        ordinary = {r.detail.strip().splitlines()[-1] for _, r in failed if r.detail.strip()}
         ok, lines, failures, verdict = 0, [], [], ""
         for j, (text, args, kind) in enumerate(VECTOR_DEGENERATE):
             r = self.results[f"vi_{len(VECTOR_CASES) + j}"]
@@ -202,11 +259,12 @@ class Battery:
                 continue
             what = (self._failed_call(r) if r.status != "ok" else
                     f"returned {np.round(r.value, 4).tolist()}")
-            lines.append(f"- {text} `{args}`: {what}")
+            lines.append(f"- {text} `{show_args(args)}`: {what}")
             if r.status not in ("ok", "error"):
                 verdict = verdict or r.status   # a sandbox verdict, not a wrong formula
-            elif kind == "equal":
-                failures.append((f"`vector_interp{tuple(args)}`",
+            elif kind == "equal" and (r.status == "ok" or not r.detail.strip()
+                                      or r.detail.strip().splitlines()[-1] not in ordinary):
+                failures.append((f"`vector_interp{show_args(args)}`",
                                  r.detail.strip().splitlines()[-1] if r.status != "ok"
                                  and r.detail.strip() else what))
         self._add("vector_interp: degenerate cases", "vector_interp_degenerate",
@@ -215,21 +273,24 @@ class Battery:
         self.causes += diagnose.diagnose_vector_interp(failures)
 
     def _probe_images(self, func, probes):
-        images, lines, verdict = [], [], ""
+        """The probes' canvases, and for the probes without one their outcome and lines."""
+        images, lines, verdict, failed, outcomes = [], [], "", [], {}
         for probe in probes:
             r = self.results[f"{func}_{probe.name}"]
             if r.status != "ok":
-                lines.append(f"- probe `{probe.name}`: {self._failed_call(r)}")
+                failed.append((f"probe `{probe.name}`{_domain(probe)}", r))
+                outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer, False, r.status)
                 verdict = verdict or r.status
                 continue
             img, error = canvas(r.value, (*probe.size, 3))
             if img is None:
                 lines.append(f"- probe `{probe.name}`: {error}")
+                outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer, False)
                 continue
             if img.shape != (*probe.size, 3):
                 img = img.transpose(1, 0, 2)
             images.append((probe, img))
-        return self._untransposed(images), lines, verdict
+        return self._untransposed(images), self._failure_lines(failed) + lines, verdict, outcomes
 
     def _untransposed(self, images):
         """Probe images written as img[x][y]: undone (the rest is graded) and named once."""
@@ -251,18 +312,22 @@ class Battery:
         name = "Probes: flat fill (f_shading on single triangles and a shared edge)"
         if "f_shading" not in self.functions:
             return self._missing(name, "probes_flat", "f_shading")
-        images, lines, verdict = self._probe_images("f_shading", PROBES)
+        images, lines, verdict, outcomes = self._probe_images("f_shading", PROBES)
         mean = COLOURS.mean(axis=0)
         ok = 0
         for probe, img in images:
             expected = fill_models.correct(probe.array, probe.size)
             got = diagnose.covered(img)
             colour_ok = not got.any() or np.abs(img[got] - mean).max() <= 2 / 255
-            if (got == expected).all() and colour_ok:
+            row = diagnose.first_wrong_row(got, expected)
+            outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer,
+                                                not row and colour_ok, first_wrong_row=row)
+            if not row and colour_ok:
                 ok += 1
             else:
                 n = int((got != expected).sum())
-                lines.append(f"- probe `{probe.name}` ({probe.what}): {n} pixels differ"
+                lines.append(f"- probe `{probe.name}` ({probe.what}){_domain(probe)}: {n} pixels "
+                             "differ" + (f"; {row}" if row else "")
                              + ("" if colour_ok else ", wrong colour"))
         shared_ok, shared_line = self._shared_edge_flat()
         ok += shared_ok
@@ -273,6 +338,7 @@ class Battery:
         self._add(name, "probes_flat", ok / (len(PROBES) + 1),
                   [f"{ok} of {len(PROBES) + 1} probes filled exactly (the last: two faces "
                    "sharing an edge)."] + lines, verdict=verdict)
+        self.tests[-1].probes = [outcomes[p.name] for p in PROBES]
 
     def _shared_edge_flat(self):
         """f_shading on the two faces of the pairs' shared edge, one after the other on one
@@ -303,23 +369,28 @@ class Battery:
         name = "Probes: Gouraud fill (g_shading on single triangles)"
         if "g_shading" not in self.functions:
             return self._missing(name, "probes_gouraud", "g_shading")
-        images, lines, verdict = self._probe_images("g_shading", GOURAUD)
+        images, lines, verdict, outcomes = self._probe_images("g_shading", GOURAUD)
         ok = 0
         for probe, img in images:
             ref = scantrace.g_shading(np.ones((*probe.size, 3)), probe.array, COLOURS)
             expected, got = diagnose.covered(ref), diagnose.covered(img)
             both = expected & got
             error = float(np.abs(img[both] - ref[both]).max()) if both.any() else 0.0
-            if (expected == got).all() and error <= 0.02:
+            row = diagnose.first_wrong_row(got, expected)
+            outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer,
+                                                not row and error <= 0.02, first_wrong_row=row)
+            if not row and error <= 0.02:
                 ok += 1
             else:
-                lines.append(f"- probe `{probe.name}` ({probe.what}): "
-                             f"{int((expected != got).sum())} pixels filled differently, "
-                             f"largest colour error {error:.3f}")
+                lines.append(f"- probe `{probe.name}` ({probe.what}){_domain(probe)}: "
+                             f"{int((expected != got).sum())} pixels filled differently"
+                             + (f" ({row})" if row else "")
+                             + f", largest colour error {error:.3f}")
         self.causes += diagnose.diagnose_gouraud(images, COLOURS, scantrace.g_shading)
         self._add(name, "probes_gouraud", ok / len(GOURAUD),
                   [f"{ok} of {len(GOURAUD)} probes filled and coloured right."] + lines,
                   verdict=verdict)
+        self.tests[-1].probes = [outcomes[p.name] for p in GOURAUD]
 
     def _probes_pairs(self):
         """render_img on pairs of faces (probes.PAIRS): a shared edge, tied depths, distinct
@@ -393,6 +464,11 @@ class Battery:
 
 
 _SHADING = {"f": "flat", "g": "Gouraud"}
+
+
+def _domain(probe):
+    """Marks a probe outside the assignment's domain (the course's vertices are integers)."""
+    return "" if probe.integer else " (beyond the assignment: non-integer vertices)"
 
 
 def _mean_depth(scene):

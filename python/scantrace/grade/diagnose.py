@@ -30,6 +30,23 @@ def _fmt_span(spans, y):
     return ", ".join(f"{a}…{b - 1}" for a, b in runs)
 
 
+def _runs_text(row):
+    """A row of a mask as its runs of columns: "12..18", "3..5, 9..12" or "nothing"."""
+    padded = np.concatenate(([False], row, [False])).astype(np.int8)
+    d = np.flatnonzero(np.diff(padded))
+    return ", ".join(f"{a}..{b - 1}" for a, b in zip(d[::2], d[1::2])) or "nothing"
+
+
+def first_wrong_row(student, expected):
+    """The first row where the student's mask differs from the expected one, as a reader checks
+    it by hand: "row 7: expected 12..18, yours 11..18" ("" when the masks are equal)."""
+    rows = np.flatnonzero((student != expected).any(axis=1))
+    if not len(rows):
+        return ""
+    y = int(rows[0])
+    return f"row {y}: expected {_runs_text(expected[y])}, yours {_runs_text(student[y])}"
+
+
 def _fill_evidence(probe, student, model_mask, correct):
     """The first row where the submission differs from the correct fill and the model explains
     it: the row, the crossings, the span expected and the student's."""

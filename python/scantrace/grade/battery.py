@@ -170,10 +170,16 @@ class Battery:
             self._scene_calls(f"hidden{k + 1}", scene, with_faces=False)
         if self.scene is not None:
             self._scene_calls("course", self.scene, with_faces=True)
+        for call in self.calls:
+            # Another year's API: the harness calls the student's function through an adapter.
+            adapter = getattr(self.functions.get(call["func"]), "adapter", None)
+            if adapter:
+                call["adapter"] = adapter
 
     # ---- scoring -----------------------------------------------------------------------------
     def grade(self, results):
         self.results = results
+        self.causes += diagnose.diagnose_api(self.functions)
         self._vector_interp()
         self._probes_flat()
         self._probes_gouraud()

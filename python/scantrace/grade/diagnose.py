@@ -293,3 +293,13 @@ def diagnose_vector_interp(failures):
         return []
     text, what = failures[0]
     return [Cause("vector_interp_degenerate", 1.0, f"{text}: {what}", detail=what)]
+
+
+def diagnose_api(functions):
+    """other_api when some function was called through an adapter (another year's API):
+    functions are submission.Found values, which carry the adapter and its one-line note."""
+    notes = [f.api for f in functions.values() if getattr(f, "adapter", None)]
+    notes = list(dict.fromkeys(notes))
+    if not notes:
+        return []
+    return [Cause("other_api", 1.0, "; ".join(notes), detail="; ".join(notes))]

@@ -134,3 +134,91 @@ def test_int64_student_is_graded_through_its_own_code(tmp_path, sandbox_ok):
     assert len(failing) == 1 and failing[0].startswith("- 2 calls failing the same way")
     assert failing[0].count("beyond the assignment") == 2
     assert flat.count("TypeError") == 1
+
+
+# Another year's API, written independently of the course's 2024 one: interpolate_vectors,
+# shade_triangle(img, verts2d, vcolors, shade_t) with 'flat' / 'gouraud', and
+# render(verts2d, faces, vcolors, depth, shade_t) (vertices before faces). The fill is right.
+OTHER_YEAR = textwrap.dedent('''\
+    import numpy as np
+
+
+    def interpolate_vectors(p1, p2, V1, V2, xy, dim):
+        a, b = p1[dim - 1], p2[dim - 1]
+        if a == b:
+            return np.array(V1, dtype=float)
+        lam = (xy - a) / (b - a)
+        return (1 - lam) * np.array(V1, dtype=float) + lam * np.array(V2, dtype=float)
+
+
+    def shade_triangle(img, verts2d, vcolors, shade_t):
+        verts2d = np.array(verts2d, dtype=float)
+        order = np.argsort(verts2d[:, 1], kind="stable")
+        v, c = verts2d[order], np.array(vcolors, dtype=float)[order]
+        flat = np.mean(c, axis=0)
+        (x0, y0), (x1, y1), (x2, y2) = v
+        if (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0) == 0:
+            return img
+        for y in range(int(np.ceil(y0)), int(np.ceil(y2))):
+            xa = x0 + (y - y0) * (x2 - x0) / (y2 - y0)            # the long edge
+            ca = interpolate_vectors(v[0], v[2], c[0], c[2], y, 2)
+            if y < y1:
+                xb = x0 + (y - y0) * (x1 - x0) / (y1 - y0)
+                cb = interpolate_vectors(v[0], v[1], c[0], c[1], y, 2)
+            else:
+                xb = x1 + (y - y1) * (x2 - x1) / (y2 - y1)
+                cb = interpolate_vectors(v[1], v[2], c[1], c[2], y, 2)
+            if xa > xb:
+                xa, xb, ca, cb = xb, xa, cb, ca
+            for x in range(int(np.ceil(xa)), int(np.ceil(xb))):
+                if 0 <= x < img.shape[1] and 0 <= y < img.shape[0]:
+                    if shade_t == "flat":
+                        img[y, x] = flat
+                    elif shade_t == "gouraud":
+                        img[y, x] = interpolate_vectors((xa, y), (xb, y), ca, cb, x, 1)
+                    else:
+                        raise ValueError("shade_t must be 'flat' or 'gouraud'")
+        return img
+
+
+    def render(verts2d, faces, vcolors, depth, shade_t):
+        img = np.ones((512, 512, 3))
+        face_depth = np.array([np.mean(depth[f]) for f in faces])
+        for k in np.argsort(-face_depth, kind="stable"):
+            shade_triangle(img, verts2d[faces[k]], vcolors[faces[k]], shade_t)
+        return img
+    ''')
+
+
+def test_other_years_api_is_graded_through_an_adapter(tmp_path, sandbox_ok):
+    graded = grade_source(tmp_path, OTHER_YEAR)
+    assert not graded.error and len(graded.tests) >= 8
+    assert [t.name for t in graded.tests if t.status != "passed"] == []
+    assert [c.id for c in graded.causes] == ["other_api"]
+    evidence = graded.causes[0].evidence
+    for text in ("shade_triangle(img, verts2d, vcolors, shade_t)` for `f_shading` with "
+                 "shade_t = 'flat'", "for `g_shading` with shade_t = 'gouraud'",
+                 "render(verts2d, faces, vcolors, depth, shade_t)` for `render_img` with "
+                 "shading 'flat' / 'gouraud'", "interpolate_vectors("):
+        assert text in evidence
+    # Said once, in one line.
+    assert len([n for n in graded.notes if "another year's API" in n]) == 1
+
+
+def test_render_img_with_a_canvas_parameter(tmp_path, sandbox_ok):
+    """render_img(faces, vertices, vcolors, depth, shading, img) filling the canvas it is given
+    in place: called with a blank canvas, which is then the image."""
+    source = INT64_STUDENT.replace(
+        "def render_img(faces, vertices, vcolors, depth, shading):\n"
+        "    img = np.ones((512, 512, 3))\n",
+        "def render_img(faces, vertices, vcolors, depth, shading, img):\n").replace(
+        "            img = g_shading(img, t[\"vertices\"], t[\"colors\"])\n    return img\n",
+        "            img = g_shading(img, t[\"vertices\"], t[\"colors\"])\n")
+    assert "shading, img):" in source and source.count("return img") == 2
+    graded = grade_source(tmp_path, source)
+    assert [c.id for c in graded.causes] == ["other_api"]
+    assert "render_img(faces, vertices, vcolors, depth, shading, img)` (given a blank canvas)" \
+        in graded.causes[0].evidence
+    for t in graded.tests:
+        if t.name.startswith(("Hidden scene", "Probes: pairs")):
+            assert t.status == "passed", (t.name, t.output)

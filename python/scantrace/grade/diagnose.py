@@ -106,35 +106,65 @@ def _drift_signature(probe, student, correct):
     return True
 
 
+def _candidates(plain):
+    """Every fill model as (cause keys, {probe name: its rows}): the compositions of
+    fill_models (span ends × rows × edge stepping × vertex rounding, the one-mistake models
+    among them) and the whole-face and canvas models, which compose with nothing."""
+    composers = {p.name: fill_models.Composer(p.array, p.size) for p, _ in plain}
+    for composition in fill_models.COMPOSITIONS:
+        yield (fill_models.causes_of(composition),
+               {p.name: composers[p.name].rows(composition) for p, _ in plain},
+               lambda p, c=composition: composers[p.name].mask(c))
+    for key in (k for k in fill_models.MODELS if k[0] in ("horizontal_edge_skipped",
+                                                          "canvas_border_clipped")):
+        model = fill_models.MODELS[key]
+        yield ([key], {p.name: fill_models.row_spans(model(p.array, p.size)) for p, _ in plain},
+               lambda p, m=model: m(p.array, p.size))
+
+
+def _explains(results, wrong):
+    """How well each model explains the student's rows, best first: (rows it gets wrong on
+    integer probes, on the others, how many causes it names, keys, mask function). The integer
+    probes — the assignment's domain — rank first; the non-integer ones only break ties."""
+    students = {p.name: fill_models.row_spans(m) for p, m in results}
+    integer = {p.name: p.integer for p, _ in results}
+    ranked = []
+    for keys, rows, mask in _candidates(results):
+        bad = [0, 0]
+        for name, model in rows.items():
+            student = students[name]
+            n = sum(model.get(y) != student.get(y) for y in set(model) | set(student))
+            bad[0 if integer[name] else 1] += n
+        ranked.append((bad[0], bad[1], len({k[0] for k in keys}), keys, mask))
+        if not bad[0] and bad[1] <= wrong[1] * (1 - CONFIDENCE) and len(keys) == 1:
+            break      # a one-mistake model explains the assignment's rows: no need to compose
+    ranked.sort(key=lambda r: r[:3])
+    return ranked
+
+
 def diagnose_fill(results):
-    """results: [(probe, student mask)] from f_shading on blank canvases. Returns causes."""
+    """results: [(probe, student mask)] from f_shading on blank canvases. Returns causes: the
+    fill model explaining most of the student's wrong rows, each of its causes named when it
+    explains at least CONFIDENCE of them on the integer probes (the non-integer ones, beyond the
+    assignment, decide only when every integer probe is right)."""
     plain = [(p, m) for p, m in results if not fill_models.degenerate(p.array)]
     correct = {p.name: fill_models.correct(p.array, p.size) for p, _ in results}
-    wrong = {(p.name, r) for p, m in plain for r in _rows_differing(m, correct[p.name])}
+    wrong = [sum(len(_rows_differing(m, correct[p.name])) for p, m in plain if p.integer == i)
+             for i in (True, False)]
     causes = []
-    if wrong:
-        scores = []
-        for key, model in fill_models.MODELS.items():
-            masks = {p.name: model(p.array, p.size) for p, _ in plain}
-            bad = {(p.name, r) for p, m in plain for r in _rows_differing(m, masks[p.name])}
-            scores.append((len(bad), key, masks))
-        scores.sort(key=lambda s: s[0])
-        best_bad = scores[0][0]
-        for bad, (cause_id, variant), masks in scores:
-            confidence = 1 - bad / len(wrong)
-            if key_is_drift(cause_id) and bad > 0:
-                # Drift depends on how the student accumulated: accept the signature.
-                if all(_drift_signature(p, m, correct[p.name]) for p, m in plain):
-                    confidence = max(confidence, CONFIDENCE)
-            if confidence < CONFIDENCE or bad > best_bad and not key_is_drift(cause_id):
-                continue
-            candidates = [(p, m) for p, m in plain if _rows_differing(m, correct[p.name])]
-            exact = [(p, m) for p, m in candidates if (m == masks[p.name]).all()]
-            probe, mask = (exact or candidates)[0]
-            text, _ = _fill_evidence(probe, mask, masks[probe.name], correct[probe.name])
-            if not any(c.id == cause_id for c in causes):
-                causes.append(Cause(cause_id, confidence, text, detail=variant or "",
-                                    picture_pixels=fill_picture(mask, correct[probe.name])))
+    if any(wrong):
+        ranked = _explains(plain, wrong)
+        best = ranked[0][:3]
+        domain = 0 if wrong[0] else 1
+        confidence = 1 - best[domain] / wrong[domain]
+        named = [r for r in ranked if r[:3] == best] if confidence >= CONFIDENCE else []
+        if not named and all(_drift_signature(p, m, correct[p.name]) for p, m in plain
+                             if p.integer or not wrong[0]):
+            # Drift depends on how the student accumulated: its signature is enough.
+            named = [r for r in ranked if r[3] == [("float_drift", "")]][:1]
+            confidence = CONFIDENCE
+        for _, _, _, keys, mask_of in named:
+            causes += _fill_causes(plain, correct, keys, mask_of, confidence, causes)
     drawn = [(p, m) for p, m in results if fill_models.degenerate(p.array) and m.any()]
     if drawn:
         p, m = drawn[0]
@@ -146,6 +176,27 @@ def diagnose_fill(results):
                             f" ({int(m.sum())} pixels in all)",
                             picture_pixels=fill_picture(m, correct[p.name])))
     return causes
+
+
+def _fill_causes(plain, correct, keys, mask_of, confidence, named):
+    """A cause for each key of a model not yet named, its evidence a probe where the model draws
+    exactly what the student drew (an integer probe first)."""
+    candidates = sorted(((p, m) for p, m in plain if _rows_differing(m, correct[p.name])),
+                        key=lambda q: not q[0].integer)
+    exact = [(p, m) for p, m in candidates if (m == mask_of(p)).all()]
+    probe, mask = (exact or candidates)[0]
+    text, _ = _fill_evidence(probe, mask, mask_of(probe), correct[probe.name])
+    # Rounding the vertices is harmless on the course's integer vertices: not a cause, but it
+    # explains the non-integer probes (beyond the assignment), so it is said in the evidence.
+    mistakes = [k for k in keys if k[0] != "vertices_rounded"]
+    if len(mistakes) > 1:
+        text += " (" + " and ".join(f"`{k[0]}`" for k in mistakes) + " together explain it)"
+    if len(mistakes) < len(keys):
+        text += ("; your vertices are rounded to whole pixels first (int(round(x))), which "
+                 "only the non-integer probes, beyond the assignment, show")
+    return [Cause(cause_id, confidence, text, detail=variant or "",
+                  picture_pixels=fill_picture(mask, correct[probe.name]))
+            for cause_id, variant in mistakes if not any(c.id == cause_id for c in named)]
 
 
 def key_is_drift(cause_id):

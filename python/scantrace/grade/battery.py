@@ -87,17 +87,28 @@ def _accepted(args, kind):
 
 
 def canvas(value, shape):
-    """A student's canvas as float RGB in [0, 1] of `shape` (values 0-255 are scaled), or an
-    error message."""
+    """A student's canvas as float RGB in [0, 1] of `shape` (0–255 values rescaled: rescaled()),
+    or an error message."""
     if value.ndim != 3 or value.shape[2] != 3:
         return None, f"returned an array of shape {value.shape}, expected {shape}"
     if value.shape != tuple(shape) and value.shape[:2] != tuple(shape)[1::-1]:
         return None, f"returned an array of shape {value.shape}, expected {shape}"
     if not np.isfinite(value).all():
         return None, "returned NaN or infinite values"
-    if value.max() > 1.5:
-        value = value / 255.0
-    return value, ""
+    return rescaled(value), ""
+
+
+def rescaled(value):
+    """0–255 values brought to [0, 1]: the painted pixels only. A fill writing `colour * 255`
+    on the grader's blank canvas of ones leaves that canvas's white at exactly 1.0, which must
+    stay white (divided by 255 it would be black); a canvas of its own of 255s is divided."""
+    if value.max() <= 1.5:
+        return value
+    white = (value == 1.0).all(axis=2)
+    out = value / 255.0
+    if white.sum() > (value == 255.0).all(axis=2).sum():
+        out[white] = 1.0
+    return out
 
 
 class Battery:
@@ -447,19 +458,19 @@ class Battery:
             return self._add(name, key, 0.0, [f"`{func}` {error}."], visibility)
         reference = scantrace.render_img(scene["faces"], scene["vertices"], scene["vcolors"],
                                          scene["depth"], shading)
-        fixed, causes = img, []
-        if painter:
-            uncovered = _uncovered(scene, shading, reference)
-            fixed, causes = diagnose.diagnose_image(img, reference, uncovered,
-                                                    _painter_alternatives(scene, shading))
-            self._add_causes(causes, f"{name}: ")
+        # The whole-image mistakes are undone in every image test, face by face included (the
+        # order's alternatives only where the student's own render_img chose the order).
+        uncovered = _uncovered(scene, shading, reference)
+        fixed, causes = diagnose.diagnose_image(
+            img, reference, uncovered, _painter_alternatives(scene, shading) if painter else {})
+        self._add_causes(causes, f"{name}: ")
         mismatch = diagnose.image_mismatch(fixed, reference)
         fraction = min(max((1 - mismatch - 0.8) / 0.2, 0.0), 1.0)
+        undone = [c.id for c in causes if c.id in ("transposed", "bgr", "background")]
+        if r.value.max() > 1.5:
+            undone.append("the 0–255 range of the painted pixels")
         lines = [f"{mismatch:.2%} of the pixels differ from the reference"
-                 + (" (after undoing " + ", ".join(c.id for c in causes if c.id in
-                                                  ("transposed", "bgr", "background")) + ")"
-                    if any(c.id in ("transposed", "bgr", "background") for c in causes) else "")
-                 + "."]
+                 + (f" (after undoing {', '.join(undone)})" if undone else "") + "."]
         self._add(name, key, fraction if mismatch > 0 else 1.0, lines, visibility)
 
     def _add_causes(self, causes, prefix):

@@ -287,39 +287,91 @@ def image_mismatch(a, b):
     return float((channel_error(a, b) > 1.5 / 255).mean())
 
 
-def diagnose_image(student, reference, uncovered, alternatives):
-    """Global mistakes of a rendered image, undone in order so the rest can be graded: a
-    transpose, BGR channels, a background colour; then the painter's order, from
-    `alternatives` {cause id: the reference rendered with that mistake}. Returns (image, causes)."""
+_UNDO = {"transposed": lambda s: s.transpose(1, 0, 2), "bgr": lambda s: s[..., ::-1]}
+
+
+def _background(student, uncovered):
+    """(colour, its pixels, their share of the uncovered ones) when the pixels no face covers
+    are one colour other than white, else None."""
+    if not uncovered.any():
+        return None
+    bg = np.median(student[uncovered], axis=0)
+    if np.abs(bg - 1.0).max() <= 2 / 255:
+        return None
+    same = uncovered & (channel_error(student, bg) <= 1.5 / 255)
+    share = same.sum() / uncovered.sum()
+    return (bg, same, share) if share >= CONFIDENCE else None
+
+
+def _undone(student, reference, uncovered, mistakes):
+    """(image, mismatch, background) with `mistakes` undone, or None when one cannot be."""
+    fixed = student
+    for k in ("transposed", "bgr"):
+        if k in mistakes:
+            fixed = np.ascontiguousarray(_UNDO[k](fixed))
+    bg = None
+    if "background" in mistakes:
+        bg = _background(fixed, uncovered)
+        if bg is None:
+            return None
+        fixed = fixed.copy()
+        fixed[bg[1]] = 1.0
+    return fixed, image_mismatch(fixed, reference), bg
+
+
+def undo_global(student, reference, uncovered):
+    """The whole-image mistakes (transposed, BGR, background) undone *together*: every
+    combination is tried (one alone may not halve the mismatch while another hides it: a
+    transposed image on a 0.99 background differs almost everywhere either way), the one
+    leaving the fewest differing pixels kept, and each of its mistakes named when undoing it
+    halves what differs. Returns (image, causes)."""
+    kinds = [k for k in ("transposed", "bgr", "background")
+             if k != "transposed" or student.shape[0] == student.shape[1]]
+    tried = {}
+    for n in range(len(kinds) + 1):
+        for combo in itertools.combinations(kinds, n):
+            tried[frozenset(combo)] = _undone(student, reference, uncovered, combo)
+    best = min((k for k in tried if tried[k] is not None),
+               key=lambda k: (tried[k][1], len(k)))
+    fixed, m, bg = tried[best]
     causes = []
-    base = image_mismatch(student, reference)
-    for cause_id, fix in (("transposed", lambda s: s.transpose(1, 0, 2)),
-                          ("bgr", lambda s: s[..., ::-1])):
-        if base == 0 or student.shape[0] != student.shape[1] and cause_id == "transposed":
+    def mismatch(combo):
+        # Without the transpose the background may not be found: then it is not undone either.
+        return tried[combo][1] if tried[combo] is not None else mismatch(combo - {"background"})
+
+    for k in (k for k in kinds if k in best):
+        without = mismatch(best - {k})
+        if without <= 2 * m or without == 0:
             continue
-        fixed = np.ascontiguousarray(fix(student))
-        m = image_mismatch(fixed, reference)
-        if m < base * 0.5:
-            differ = channel_error(student, reference) > 1.5 / 255
-            causes.append(Cause(cause_id, 1 - m / base,
-                                f"{base:.1%} of the pixels differ; {m:.1%} after undoing it",
-                                picture_pixels=image_picture(student, reference, differ),
+        if k == "background":
+            colour, same, share = bg
+            causes.append(Cause("background", share,
+                                f"{share:.0%} of the pixels no face covers are "
+                                f"{_describe_colour(colour)}", detail=_describe_colour(colour),
+                                picture_pixels=image_picture(student, reference, same),
                                 legend=IMAGE_LEGEND))
-            student, base = fixed, m
-    if uncovered.any() and base > 0:
-        bg = np.median(student[uncovered], axis=0)
-        if np.abs(bg - 1.0).max() > 2 / 255:
-            same = uncovered & (channel_error(student, bg) <= 1.5 / 255)
-            share = same.sum() / uncovered.sum()
-            if share >= CONFIDENCE:
-                picture = image_picture(student, reference, same)
-                student = student.copy()
-                student[same] = 1.0
-                causes.append(Cause("background", share,
-                                    f"{share:.0%} of the pixels no face covers are "
-                                    f"{_describe_colour(bg)}", detail=_describe_colour(bg),
-                                    picture_pixels=picture, legend=IMAGE_LEGEND))
-                base = image_mismatch(student, reference)
+            continue
+        differ = channel_error(student, reference) > 1.5 / 255
+        causes.append(Cause(k, 1 - m / without,
+                            f"{without:.1%} of the pixels differ; {m:.1%} once it is undone"
+                            + (" too" if len(best) > 1 else ""),
+                            picture_pixels=image_picture(student, reference, differ),
+                            legend=IMAGE_LEGEND))
+    named = {c.id for c in causes}
+    if best - named and tried.get(frozenset(named)) is not None:
+        fixed = tried[frozenset(named)][0]   # an undo that did not earn its name is not kept
+    return fixed, causes
+
+
+def diagnose_image(student, reference, uncovered, alternatives):
+    """Global mistakes of a rendered image, undone together so the rest can be graded (a
+    transpose, BGR channels, a background colour: undo_global); then the painter's order, from
+    `alternatives` {cause id: the reference rendered with that mistake}. Returns (image, causes)."""
+    base = image_mismatch(student, reference)
+    causes = []
+    if base > 0:
+        student, causes = undo_global(student, reference, uncovered)
+        base = image_mismatch(student, reference)
     for cause_id, alt in alternatives.items():
         # Only the pixels this order changes decide (a wrong fill elsewhere does not blur it).
         deciding = channel_error(alt, reference) > 1.5 / 255

@@ -4,15 +4,17 @@ assumes the course's calling convention (numpy arrays with hw1.npy's dtypes: int
 real student's report in ../shared/seeds describes), or follows another year's API. Each is held
 to full marks on the assignment's domain (the correct ones) or to its cause."""
 
+import dataclasses
 import textwrap
 
 import numpy as np
 import pytest
 
 from scantrace.grade import diagnose, fill_models
+from scantrace.grade.grader import course_arrays, grade
 from scantrace.grade.probes import GOURAUD, PROBES
 
-from conftest import CORRECT, WRONG, grade_source, wrong_source
+from conftest import CORRECT, WRONG, grade_source, quick_options, write_submission, wrong_source
 
 # A correct solution that relies on the course's types: vertices[:, 1].min() is an int64 that
 # range() accepts (a float64 raises "'numpy.float64' object cannot be interpreted as an
@@ -305,3 +307,51 @@ def test_first_wrong_row():
     assert diagnose.first_wrong_row(student[8:], expected[8:]) == \
         "row 0: expected nothing, yours 3..4, 9..10"
     assert diagnose.first_wrong_row(expected, expected) == ""
+
+
+def _scene_tests(graded):
+    return [t for t in graded.tests if t.name.startswith(("Hidden scene", "Course scene"))]
+
+
+def test_transposed_on_a_grey_background_is_undone_together(tmp_path, sandbox_ok):
+    """img[x][y] on a canvas of 0.99: undoing either alone leaves most pixels different (the
+    background is most of the image), so each must be tried with the other."""
+    source = CORRECT
+    for edit in WRONG["transposed"]:
+        source = edit(source)
+    source = source.replace("img = np.ones((512, 512, 3))  # CANVAS",
+                            "img = np.full((512, 512, 3), 0.99)  # CANVAS")
+    graded = grade_source(tmp_path, source)
+    assert sorted(c.id for c in graded.causes) == ["background", "transposed"]
+    scenes = _scene_tests(graded)
+    assert len(scenes) == 4
+    for t in scenes:
+        assert t.status == "passed", (t.name, t.output)
+        assert "after undoing transposed, background" in t.output
+
+
+def test_painted_pixels_in_0_255_are_rescaled_alone(tmp_path, sandbox_ok):
+    """colour * 255 written on the grader's canvas of ones: the painted pixels are rescaled,
+    the untouched white stays white (dividing it too made every probe wrong everywhere)."""
+    source = CORRECT.replace("img[y, x] = colour  # PUT", "img[y, x] = np.asarray(colour) * 255  # PUT")
+    graded = grade_source(tmp_path, source)
+    assert graded.causes == []
+    assert [t.name for t in graded.tests if t.status != "passed"] == []
+    assert all("0–255 range" in t.output for t in _scene_tests(graded))
+
+
+def test_face_by_face_tests_undo_the_whole_image_mistakes(tmp_path, sandbox_ok):
+    """The course scene face by face through the student's f_shading / g_shading: a transposed
+    fill is undone there too (it was compared as it came: every face wrong)."""
+    from scantrace.grade import hidden
+
+    scene = hidden.scene(np.random.default_rng(3), n_faces=12)
+    sub = write_submission(tmp_path / "student", wrong_source("transposed"))
+    graded = grade(sub, tmp_path / "out",
+                   dataclasses.replace(quick_options(), scene=course_arrays(scene)))
+    assert [c.id for c in graded.causes] == ["transposed"]
+    faces = [t for t in graded.tests if t.name.startswith("Course scene face by face")]
+    assert len(faces) == 2
+    for t in faces:
+        assert t.status == "passed", (t.name, t.output)
+        assert "after undoing transposed" in t.output

@@ -209,6 +209,7 @@ class Battery:
                                  f"Course scene face by face: {_SHADING[shading]} "
                                  f"({'f' if shading == 'f' else 'g'}_shading in the painter's "
                                  "order)", "course_faces", "visible", painter=False)
+        self.causes += diagnose.diagnose_verdicts(results, self.calls)
         return self.tests
 
     def _missing(self, name, key, func):

@@ -406,3 +406,23 @@ def diagnose_api(functions):
     if not notes:
         return []
     return [Cause("other_api", 1.0, "; ".join(notes), detail="; ".join(notes))]
+
+
+VERDICTS = ("timeout", "memory", "crashed", "forbidden")
+
+
+def diagnose_verdicts(results, calls):
+    """The sandbox's verdicts as causes (besides the tests' statuses): one per kind, its
+    evidence the first call that ended so and how many did. results: {call id: CallResult};
+    calls: the battery's calls, in order (for the function each called)."""
+    causes = []
+    for verdict in VERDICTS:
+        hit = [c for c in calls if getattr(results.get(c["id"]), "status", "") == verdict]
+        if not hit:
+            continue
+        first = results[hit[0]["id"]]
+        detail = (first.detail.strip().splitlines() or [verdict])[0]
+        more = f" (and {len(hit) - 1} more calls)" if len(hit) > 1 else ""
+        causes.append(Cause(verdict, 1.0, f"call `{hit[0]['id']}` ({hit[0]['func']}): "
+                            f"{first.detail.strip()[:600]}{more}", detail=detail))
+    return causes

@@ -14,7 +14,10 @@ from scantrace.grade import diagnose, fill_models
 from scantrace.grade.grader import course_arrays, grade
 from scantrace.grade.probes import GOURAUD, PROBES
 
-from conftest import CORRECT, WRONG, grade_source, quick_options, write_submission, wrong_source
+from scantrace.grade.sandbox import Limits
+
+from conftest import (CORRECT, WRONG, grade_source, quick_options, write_submission,
+                      wrong_source)
 
 # A correct solution that relies on the course's types: vertices[:, 1].min() is an int64 that
 # range() accepts (a float64 raises "'numpy.float64' object cannot be interpreted as an
@@ -355,3 +358,37 @@ def test_face_by_face_tests_undo_the_whole_image_mistakes(tmp_path, sandbox_ok):
     for t in faces:
         assert t.status == "passed", (t.name, t.output)
         assert "after undoing transposed" in t.output
+
+
+def test_verdicts_are_causes_too(tmp_path, sandbox_ok):
+    """A sandbox verdict is a cause of its own (with its sentence and fix, which students see),
+    besides the tests' statuses: once per kind, with how many calls ended so."""
+    source = CORRECT.replace(
+        "def f_shading(img, vertices, vcolors):\n",
+        "def f_shading(img, vertices, vcolors):\n    if vertices[0][0] == 2:\n"
+        "        while True:\n            pass\n")
+    limits = Limits(call_seconds=0.5, batch_seconds=60.0)
+    graded = grade_source(tmp_path, source, limits=limits)
+    assert [c.id for c in graded.causes] == ["timeout"]
+    # The probes whose first vertex has x = 2: general, sliver, long_edges.
+    assert sum(p.status == "timeout" for t in graded.tests for p in t.probes) == 3
+    cause = graded.causes[0]
+    assert "time limit" in cause.sentence and cause.fix
+    # And the two calls drawing the pairs' face 0, whose first vertex is (2, 2): the shared edge
+    # through f_shading and render_img's pairs.
+    assert "(and 4 more calls)" in cause.evidence
+    graded = grade_source(tmp_path, "import sys\nsys.exit(3)\n" + CORRECT, name="quitter")
+    assert [c.id for c in graded.causes] == ["crashed"]
+    assert "sys.exit(3)" in graded.causes[0].sentence
+
+
+def test_two_copies_of_the_code_are_never_mixed(tmp_path, sandbox_ok):
+    """hw1.py beside a notebook export of an older version: all four functions come from one
+    module (the one defining the most; ties: the shortest name), said in one note."""
+    sub = write_submission(tmp_path / "student", CORRECT)
+    write_submission(sub, wrong_source("right_end_excluded"), name="Homework1_notebook.py")
+    graded = grade(sub, tmp_path / "out", quick_options())
+    assert graded.causes == []
+    copies = [n for n in graded.notes if "all are taken from" in n]
+    assert len(copies) == 1 and "all are taken from hw1 " in copies[0], graded.notes
+    assert "Homework1_notebook" in copies[0]

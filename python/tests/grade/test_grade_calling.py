@@ -196,8 +196,19 @@ OTHER_YEAR = textwrap.dedent('''\
     ''')
 
 
-def test_other_years_api_is_graded_through_an_adapter(tmp_path, sandbox_ok):
-    graded = grade_source(tmp_path, OTHER_YEAR)
+# The same on 0–255 canvases: its render starts from 255s, its fill writes colour * 255 (also on
+# the grader's canvas of ones, whose white must stay white).
+OTHER_YEAR_255 = OTHER_YEAR.replace("img = np.ones((512, 512, 3))",
+                                    "img = np.full((512, 512, 3), 255.0)").replace(
+    "img[y, x] = flat\n", "img[y, x] = flat * 255\n").replace(
+    "img[y, x] = interpolate_vectors((xa, y), (xb, y), ca, cb, x, 1)\n",
+    "img[y, x] = 255 * interpolate_vectors((xa, y), (xb, y), ca, cb, x, 1)\n")
+
+
+@pytest.mark.parametrize("source", [OTHER_YEAR, OTHER_YEAR_255], ids=["unit", "0-255"])
+def test_other_years_api_is_graded_through_an_adapter(tmp_path, sandbox_ok, source):
+    assert source == OTHER_YEAR or source.count("255") == 3
+    graded = grade_source(tmp_path, source)
     assert not graded.error and len(graded.tests) >= 8
     assert [t.name for t in graded.tests if t.status != "passed"] == []
     assert [c.id for c in graded.causes] == ["other_api"]

@@ -168,11 +168,12 @@ def diagnose_fill(results):
     drawn = [(p, m) for p, m in results if fill_models.degenerate(p.array) and m.any()]
     if drawn:
         p, m = drawn[0]
+        spans = fill_models.row_spans(m)
         causes.append(Cause("degenerate_drawn", 1.0,
                             f"probe `{p.name}` ({p.what}: "
                             + " ".join(f"({x:g}, {y:g})" for x, y in p.vertices)
-                            + f"), row {min(fill_models.row_spans(m))}: expected columns "
-                            f"nothing, yours {_fmt_span(fill_models.row_spans(m), min(fill_models.row_spans(m)))}"
+                            + f"), row {min(spans)}: expected columns "
+                            f"nothing, yours {_fmt_span(spans, min(spans))}"
                             f" ({int(m.sum())} pixels in all)",
                             picture_pixels=fill_picture(m, correct[p.name])))
     return causes

@@ -155,29 +155,9 @@ def edge_lag(tri, shape):
 
 def float_drift(tri, shape):
     """x accumulated as x += dx/dy in float64 from each edge's first row: on rows where the exact
-    crossing is a whole number the sum is a hair off, and ceil() moves the span end by one."""
-    h, w = shape
-    mask = np.zeros(shape, dtype=bool)
-    ex = _exact(tri)
-    if _is_degenerate(ex):
-        return mask
-    first, end = _rows(ex)
-    accumulated = {}
-    for e in _edges(ex):
-        (x0, y0), (x1, y1) = e
-        step = float(x1 - x0) / float(y1 - y0)
-        x = float(x0) + (math.ceil(y0) - float(y0)) * step
-        for y in range(math.ceil(y0), math.ceil(y1)):
-            accumulated[(e, y)] = x
-            x += step
-    for y in range(first, end):
-        active = _active(_edges(ex), Fraction(y))
-        if len(active) < 2:
-            continue
-        xs = sorted(accumulated[(e, y)] for e in active[:2])
-        if 0 <= y < h:
-            mask[y, max(math.ceil(xs[0]), 0):max(min(math.ceil(xs[1]), w), 0)] = True
-    return mask
+    crossing is a whole number the sum is a hair off, and ceil() moves the span end by one.
+    (The composition with only the edge stepping off: _stepped_crossings accumulates.)"""
+    return Composer(tri, shape).mask((None, None, ("float_drift", ""), None))
 
 
 def horizontal_edge_skipped(tri, shape):

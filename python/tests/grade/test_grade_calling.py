@@ -406,3 +406,17 @@ def test_two_copies_of_the_code_are_never_mixed(tmp_path, sandbox_ok):
     copies = [n for n in graded.notes if "all are taken from" in n]
     assert len(copies) == 1 and "all are taken from hw1 " in copies[0], graded.notes
     assert "Homework1_notebook" in copies[0]
+
+
+def test_a_verdict_beyond_the_assignment_is_not_a_cause(tmp_path, sandbox_ok):
+    """A loop that never reaches a non-integer end (a Bresenham walk stepping by 1 from 2.5
+    towards 18.75) times out on a non-integer probe only: said in its line, not a cause."""
+    source = CORRECT.replace(
+        "def f_shading(img, vertices, vcolors):\n",
+        "def f_shading(img, vertices, vcolors):\n    x, end = vertices[0][0], vertices[1][0]\n"
+        "    while x != end:\n        x += 1 if end > x else -1\n")
+    graded = grade_source(tmp_path, source, limits=Limits(call_seconds=0.5, batch_seconds=60.0))
+    assert graded.causes == []
+    outcomes = [p for t in graded.tests for p in t.probes if p.status == "timeout"]
+    # (halves: 3.5 + 16 steps reaches 19.5.)
+    assert [(p.name, p.integer) for p in outcomes] == [("non_integer", False)]

@@ -23,27 +23,56 @@ class TestResult:
     output: str = ""
     visibility: str = "visible"
     verdict: str = ""       # the sandbox's verdict when the code did not run to the end
+    probes: list = dataclasses.field(default_factory=list)   # ProbeOutcome of each probe
 
     @property
     def status(self):
         return "passed" if self.score >= self.max_score else "failed"
 
 
+@dataclasses.dataclass
+class ProbeOutcome:
+    """One probe of a probe test: whether it is in the assignment's domain (integer vertices, as
+    the course's scene: `integer`), whether it passed, and if not the call's status and the first
+    wrong row. Probes with integer False are "beyond the assignment"."""
+    name: str
+    integer: bool
+    passed: bool
+    status: str = "ok"          # the call's status: ok, error, timeout, memory, forbidden, crashed
+    first_wrong_row: str = ""   # "row 7: expected 12..18, yours 11..18"
+
+
+def _vi(p1, p2, v1, v2, coord, dim):
+    """A vector_interp call as the course makes it: p1, p2 int64 arrays, V1, V2 float64 arrays of 3
+    (or plain numbers: a scalar value), an int coord and dim 1 or 2. Students write
+    `V1 + t * (V2 - V1)` on them, which fails on Python lists."""
+    def value(v):
+        return np.asarray(v, np.float64) if isinstance(v, (list, tuple)) else float(v)
+    return (np.asarray(p1, np.int64), np.asarray(p2, np.int64), value(v1), value(v2), int(coord),
+            int(dim))
+
+
+def show_args(args):
+    """The arguments of a vector_interp case as the student would type them."""
+    return "(" + ", ".join(str(a.tolist()) if isinstance(a, np.ndarray) else repr(a)
+                           for a in args) + ")"
+
+
 # The course's vector_interp(p1, p2, V1, V2, coord, dim): (arguments, accepted answers).
 VECTOR_CASES = (
-    ("colour at the middle along x", ([0, 0], [10, 0], [1, 0, 0], [0, 0, 1], 5, 1), None),
-    ("a quarter along y", ([2, 3], [8, 11], [0.0, 0.2, 1.0], [1.0, 0.6, 0.0], 5, 2), None),
-    ("p1 after p2", ([10, 4], [2, 4], [0.5, 0.5, 0.5], [0.0, 1.0, 0.25], 4, 1), None),
-    ("a scalar value", ([1, 1], [1, 9], 2.0, 10.0, 3, 2), None),
-    ("at an endpoint", ([3, 7], [9, 1], [0.1, 0.2, 0.3], [0.9, 0.8, 0.7], 9, 1), None),
+    ("colour at the middle along x", _vi([0, 0], [10, 0], [1, 0, 0], [0, 0, 1], 5, 1), None),
+    ("a quarter along y", _vi([2, 3], [8, 11], [0.0, 0.2, 1.0], [1.0, 0.6, 0.0], 5, 2), None),
+    ("p1 after p2", _vi([10, 4], [2, 4], [0.5, 0.5, 0.5], [0.0, 1.0, 0.25], 4, 1), None),
+    ("a scalar value", _vi([1, 1], [1, 9], 2.0, 10.0, 3, 2), None),
+    ("at an endpoint", _vi([3, 7], [9, 1], [0.1, 0.2, 0.3], [0.9, 0.8, 0.7], 9, 1), None),
 )
 # Degenerate: equal coordinates along dim (V1, V2 or their midpoint accepted), a coordinate
 # outside the segment (the line extended, or clamped to the nearer end).
 VECTOR_DEGENERATE = (
-    ("equal x with dim 1", ([4, 2], [4, 9], [1, 0, 0], [0, 0, 1], 4, 1), "equal"),
-    ("equal points with dim 2", ([5, 5], [5, 5], [0.2, 0.4, 0.6], [0.6, 0.4, 0.2], 5, 2),
+    ("equal x with dim 1", _vi([4, 2], [4, 9], [1, 0, 0], [0, 0, 1], 4, 1), "equal"),
+    ("equal points with dim 2", _vi([5, 5], [5, 5], [0.2, 0.4, 0.6], [0.6, 0.4, 0.2], 5, 2),
      "equal"),
-    ("coord outside the segment", ([0, 0], [10, 0], [0, 0, 0], [1, 1, 1], 12, 1), "outside"),
+    ("coord outside the segment", _vi([0, 0], [10, 0], [0, 0, 0], [1, 1, 1], 12, 1), "outside"),
 )
 
 
@@ -58,17 +87,28 @@ def _accepted(args, kind):
 
 
 def canvas(value, shape):
-    """A student's canvas as float RGB in [0, 1] of `shape` (values 0-255 are scaled), or an
-    error message."""
+    """A student's canvas as float RGB in [0, 1] of `shape` (0–255 values rescaled: rescaled()),
+    or an error message."""
     if value.ndim != 3 or value.shape[2] != 3:
         return None, f"returned an array of shape {value.shape}, expected {shape}"
     if value.shape != tuple(shape) and value.shape[:2] != tuple(shape)[1::-1]:
         return None, f"returned an array of shape {value.shape}, expected {shape}"
     if not np.isfinite(value).all():
         return None, "returned NaN or infinite values"
-    if value.max() > 1.5:
-        value = value / 255.0
-    return value, ""
+    return rescaled(value), ""
+
+
+def rescaled(value):
+    """0–255 values brought to [0, 1]: the painted pixels only. A fill writing `colour * 255`
+    on the grader's blank canvas of ones leaves that canvas's white at exactly 1.0, which must
+    stay white (divided by 255 it would be black); a canvas of its own of 255s is divided."""
+    if value.max() <= 1.5:
+        return value
+    white = (value == 1.0).all(axis=2)
+    out = value / 255.0
+    if white.sum() > (value == 255.0).all(axis=2).sum():
+        out[white] = 1.0
+    return out
 
 
 class Battery:
@@ -76,6 +116,7 @@ class Battery:
         self.session, self.functions, self.rubric = session, functions, rubric
         self.scene, self.hidden_seed = scene, hidden_seed
         self.calls, self.tests, self.causes = [], [], []
+        self.beyond = set()     # calls on probes beyond the assignment (non-integer vertices)
 
     # ---- calls -------------------------------------------------------------------------------
     def _call(self, call_id, func, args, **extra):
@@ -85,15 +126,24 @@ class Battery:
         return call_id
 
     def _probe_call(self, func, probe):
+        if not probe.integer:
+            self.beyond.add(f"{func}_{probe.name}")
         args = [0, {"npy": self.session.input(probe.array)},
                 {"npy": self.session.input(COLOURS)}]
         return self._call(f"{func}_{probe.name}", func, args, canvas=0,
                           canvas_shape=[*probe.size, 3])
 
+    def _arg(self, value):
+        """A call's argument: arrays go as .npy inputs (their dtype kept), numbers as JSON."""
+        return {"npy": self.session.input(value)} if isinstance(value, np.ndarray) else value
+
     def _scene_inputs(self, scene):
-        s = self.session
-        return {"faces": s.input(scene["faces"]), "vertices": s.input(scene["vertices"]),
-                "vcolors": s.input(scene["vcolors"]), "depth": s.input(scene["depth"])}
+        """The scene's arrays with the course's dtypes (int64 vertices and faces, float64
+        colours and depths), whatever the scene was loaded or generated with: face by face the
+        harness passes vertices[face] and vcolors[face] of these, as the course's render_img."""
+        from .grader import course_arrays   # grader imports battery: imported when used
+        arrays, s = course_arrays(scene), self.session
+        return {k: s.input(arrays[k]) for k in ("faces", "vertices", "vcolors", "depth")}
 
     def _scene_calls(self, label, scene, with_faces):
         names = self._scene_inputs(scene)
@@ -113,7 +163,7 @@ class Battery:
 
     def build(self):
         for i, (_, args, _) in enumerate(VECTOR_CASES + VECTOR_DEGENERATE):
-            self._call(f"vi_{i}", "vector_interp", list(args))
+            self._call(f"vi_{i}", "vector_interp", [self._arg(a) for a in args])
         for probe in PROBES:
             self._probe_call("f_shading", probe)
         for probe in GOURAUD:
@@ -134,10 +184,16 @@ class Battery:
             self._scene_calls(f"hidden{k + 1}", scene, with_faces=False)
         if self.scene is not None:
             self._scene_calls("course", self.scene, with_faces=True)
+        for call in self.calls:
+            # Another year's API: the harness calls the student's function through an adapter.
+            adapter = getattr(self.functions.get(call["func"]), "adapter", None)
+            if adapter:
+                call["adapter"] = adapter
 
     # ---- scoring -----------------------------------------------------------------------------
     def grade(self, results):
         self.results = results
+        self.causes += diagnose.diagnose_api(self.functions)
         self._vector_interp()
         self._probes_flat()
         self._probes_gouraud()
@@ -156,6 +212,10 @@ class Battery:
                                  f"Course scene face by face: {_SHADING[shading]} "
                                  f"({'f' if shading == 'f' else 'g'}_shading in the painter's "
                                  "order)", "course_faces", "visible", painter=False)
+        # A verdict on a probe beyond the assignment (a loop never reaching a float end) is in
+        # that probe's line, not a cause: the course never passes such vertices.
+        self.causes += diagnose.diagnose_verdicts(
+            results, [c for c in self.calls if c["id"] not in self.beyond])
         return self.tests
 
     def _missing(self, name, key, func):
@@ -166,6 +226,23 @@ class Battery:
     def _failed_call(self, result):
         detail = result.detail if len(result.detail) < 3000 else result.detail[:3000] + " …"
         return f"**{result.status}**: " + untrusted.md_block(detail)   # the student's text
+
+    def _failure_lines(self, failed):
+        """[(label, CallResult)] of failed calls as output lines, the calls failing the same way
+        (the same status and last line: one TypeError on every probe) grouped into one line with
+        their count and one traceback, not one traceback per call."""
+        groups = {}
+        for label, r in failed:
+            last = r.detail.strip().splitlines()[-1] if r.detail.strip() else ""
+            groups.setdefault((r.status, last), []).append((label, r))
+        lines = []
+        for members in groups.values():
+            labels = [label for label, _ in members]
+            head = labels[0] if len(labels) == 1 else (
+                f"{len(labels)} calls failing the same way ({', '.join(labels[:5])}"
+                + (", …" if len(labels) > 5 else "") + ")")
+            lines.append(f"- {head}: {self._failed_call(members[0][1])}")
+        return lines
 
     def _add(self, name, key, fraction, lines, visibility="visible", verdict=""):
         points = self.rubric.points(key)
@@ -178,20 +255,24 @@ class Battery:
             self._missing("vector_interp: degenerate cases", "vector_interp_degenerate",
                           "vector_interp")
             return
-        ok, lines, verdict = 0, [], ""
+        ok, lines, verdict, failed = 0, [], "", []
         for i, (text, args, _) in enumerate(VECTOR_CASES):
             r = self.results[f"vi_{i}"]
             expected = np.asarray(scantrace.vector_interp(*args), float)
             if r.status != "ok":
-                lines.append(f"- {text} `{args}`: {self._failed_call(r)}")
+                failed.append((f"{text} `{show_args(args)}`", r))
                 verdict = verdict or r.status
             elif r.value.shape == expected.shape and np.allclose(r.value, expected, atol=1e-6):
                 ok += 1
             else:
-                lines.append(f"- {text} `{args}`: expected {np.round(expected, 4).tolist()}, "
-                             f"yours {np.round(r.value, 4).tolist()}")
+                lines.append(f"- {text} `{show_args(args)}`: expected "
+                             f"{np.round(expected, 4).tolist()}, yours "
+                             f"{np.round(r.value, 4).tolist()}")
         self._add("vector_interp: ordinary cases", "vector_interp", ok / len(VECTOR_CASES),
-                  [f"{ok} of {len(VECTOR_CASES)} cases right."] + lines, verdict=verdict)
+                  [f"{ok} of {len(VECTOR_CASES)} cases right."] + self._failure_lines(failed)
+                  + lines, verdict=verdict)
+        # An exception the ordinary cases raise too is not the degenerate case's own failure.
+        ordinary = {r.detail.strip().splitlines()[-1] for _, r in failed if r.detail.strip()}
         ok, lines, failures, verdict = 0, [], [], ""
         for j, (text, args, kind) in enumerate(VECTOR_DEGENERATE):
             r = self.results[f"vi_{len(VECTOR_CASES) + j}"]
@@ -202,11 +283,12 @@ class Battery:
                 continue
             what = (self._failed_call(r) if r.status != "ok" else
                     f"returned {np.round(r.value, 4).tolist()}")
-            lines.append(f"- {text} `{args}`: {what}")
+            lines.append(f"- {text} `{show_args(args)}`: {what}")
             if r.status not in ("ok", "error"):
                 verdict = verdict or r.status   # a sandbox verdict, not a wrong formula
-            elif kind == "equal":
-                failures.append((f"`vector_interp{tuple(args)}`",
+            elif kind == "equal" and (r.status == "ok" or not r.detail.strip()
+                                      or r.detail.strip().splitlines()[-1] not in ordinary):
+                failures.append((f"`vector_interp{show_args(args)}`",
                                  untrusted.md_code(r.detail.strip().splitlines()[-1])
                                  if r.status != "ok" and r.detail.strip() else what))
         self._add("vector_interp: degenerate cases", "vector_interp_degenerate",
@@ -215,21 +297,24 @@ class Battery:
         self.causes += diagnose.diagnose_vector_interp(failures)
 
     def _probe_images(self, func, probes):
-        images, lines, verdict = [], [], ""
+        """The probes' canvases, and for the probes without one their outcome and lines."""
+        images, lines, verdict, failed, outcomes = [], [], "", [], {}
         for probe in probes:
             r = self.results[f"{func}_{probe.name}"]
             if r.status != "ok":
-                lines.append(f"- probe `{probe.name}`: {self._failed_call(r)}")
+                failed.append((f"probe `{probe.name}`{_domain(probe)}", r))
+                outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer, False, r.status)
                 verdict = verdict or r.status
                 continue
             img, error = canvas(r.value, (*probe.size, 3))
             if img is None:
                 lines.append(f"- probe `{probe.name}`: {error}")
+                outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer, False)
                 continue
             if img.shape != (*probe.size, 3):
                 img = img.transpose(1, 0, 2)
             images.append((probe, img))
-        return self._untransposed(images), lines, verdict
+        return self._untransposed(images), self._failure_lines(failed) + lines, verdict, outcomes
 
     def _untransposed(self, images):
         """Probe images written as img[x][y]: undone (the rest is graded) and named once."""
@@ -251,18 +336,22 @@ class Battery:
         name = "Probes: flat fill (f_shading on single triangles and a shared edge)"
         if "f_shading" not in self.functions:
             return self._missing(name, "probes_flat", "f_shading")
-        images, lines, verdict = self._probe_images("f_shading", PROBES)
+        images, lines, verdict, outcomes = self._probe_images("f_shading", PROBES)
         mean = COLOURS.mean(axis=0)
         ok = 0
         for probe, img in images:
             expected = fill_models.correct(probe.array, probe.size)
             got = diagnose.covered(img)
             colour_ok = not got.any() or np.abs(img[got] - mean).max() <= 2 / 255
-            if (got == expected).all() and colour_ok:
+            row = diagnose.first_wrong_row(got, expected)
+            outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer,
+                                                not row and colour_ok, first_wrong_row=row)
+            if not row and colour_ok:
                 ok += 1
             else:
                 n = int((got != expected).sum())
-                lines.append(f"- probe `{probe.name}` ({probe.what}): {n} pixels differ"
+                lines.append(f"- probe `{probe.name}` ({probe.what}){_domain(probe)}: {n} pixels "
+                             "differ" + (f"; {row}" if row else "")
                              + ("" if colour_ok else ", wrong colour"))
         shared_ok, shared_line = self._shared_edge_flat()
         ok += shared_ok
@@ -273,6 +362,7 @@ class Battery:
         self._add(name, "probes_flat", ok / (len(PROBES) + 1),
                   [f"{ok} of {len(PROBES) + 1} probes filled exactly (the last: two faces "
                    "sharing an edge)."] + lines, verdict=verdict)
+        self.tests[-1].probes = [outcomes[p.name] for p in PROBES]
 
     def _shared_edge_flat(self):
         """f_shading on the two faces of the pairs' shared edge, one after the other on one
@@ -303,23 +393,28 @@ class Battery:
         name = "Probes: Gouraud fill (g_shading on single triangles)"
         if "g_shading" not in self.functions:
             return self._missing(name, "probes_gouraud", "g_shading")
-        images, lines, verdict = self._probe_images("g_shading", GOURAUD)
+        images, lines, verdict, outcomes = self._probe_images("g_shading", GOURAUD)
         ok = 0
         for probe, img in images:
             ref = scantrace.g_shading(np.ones((*probe.size, 3)), probe.array, COLOURS)
             expected, got = diagnose.covered(ref), diagnose.covered(img)
             both = expected & got
             error = float(np.abs(img[both] - ref[both]).max()) if both.any() else 0.0
-            if (expected == got).all() and error <= 0.02:
+            row = diagnose.first_wrong_row(got, expected)
+            outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer,
+                                                not row and error <= 0.02, first_wrong_row=row)
+            if not row and error <= 0.02:
                 ok += 1
             else:
-                lines.append(f"- probe `{probe.name}` ({probe.what}): "
-                             f"{int((expected != got).sum())} pixels filled differently, "
-                             f"largest colour error {error:.3f}")
+                lines.append(f"- probe `{probe.name}` ({probe.what}){_domain(probe)}: "
+                             f"{int((expected != got).sum())} pixels filled differently"
+                             + (f" ({row})" if row else "")
+                             + f", largest colour error {error:.3f}")
         self.causes += diagnose.diagnose_gouraud(images, COLOURS, scantrace.g_shading)
         self._add(name, "probes_gouraud", ok / len(GOURAUD),
                   [f"{ok} of {len(GOURAUD)} probes filled and coloured right."] + lines,
                   verdict=verdict)
+        self.tests[-1].probes = [outcomes[p.name] for p in GOURAUD]
 
     def _probes_pairs(self):
         """render_img on pairs of faces (probes.PAIRS): a shared edge, tied depths, distinct
@@ -370,19 +465,19 @@ class Battery:
             return self._add(name, key, 0.0, [f"`{func}` {error}."], visibility)
         reference = scantrace.render_img(scene["faces"], scene["vertices"], scene["vcolors"],
                                          scene["depth"], shading)
-        fixed, causes = img, []
-        if painter:
-            uncovered = _uncovered(scene, shading, reference)
-            fixed, causes = diagnose.diagnose_image(img, reference, uncovered,
-                                                    _painter_alternatives(scene, shading))
-            self._add_causes(causes, f"{name}: ")
+        # The whole-image mistakes are undone in every image test, face by face included (the
+        # order's alternatives only where the student's own render_img chose the order).
+        uncovered = _uncovered(scene, shading, reference)
+        fixed, causes = diagnose.diagnose_image(
+            img, reference, uncovered, _painter_alternatives(scene, shading) if painter else {})
+        self._add_causes(causes, f"{name}: ")
         mismatch = diagnose.image_mismatch(fixed, reference)
         fraction = min(max((1 - mismatch - 0.8) / 0.2, 0.0), 1.0)
+        undone = [c.id for c in causes if c.id in ("transposed", "bgr", "background")]
+        if r.value.max() > 1.5:
+            undone.append("the 0–255 range of the painted pixels")
         lines = [f"{mismatch:.2%} of the pixels differ from the reference"
-                 + (" (after undoing " + ", ".join(c.id for c in causes if c.id in
-                                                  ("transposed", "bgr", "background")) + ")"
-                    if any(c.id in ("transposed", "bgr", "background") for c in causes) else "")
-                 + "."]
+                 + (f" (after undoing {', '.join(undone)})" if undone else "") + "."]
         self._add(name, key, fraction if mismatch > 0 else 1.0, lines, visibility)
 
     def _add_causes(self, causes, prefix):
@@ -393,6 +488,11 @@ class Battery:
 
 
 _SHADING = {"f": "flat", "g": "Gouraud"}
+
+
+def _domain(probe):
+    """Marks a probe outside the assignment's domain (the course's vertices are integers)."""
+    return "" if probe.integer else " (beyond the assignment: non-integer vertices)"
 
 
 def _mean_depth(scene):

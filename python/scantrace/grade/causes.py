@@ -85,6 +85,31 @@ CATALOGUE = {
         "Faces of equal mean depth are not painted in face order (an unstable sort, or a "
         "reversed argsort), so ties are drawn the wrong way round.",
         "use a stable sort on the negated depth: `np.argsort(-depth, kind='stable')`"),
+    "other_api": (
+        "Your functions follow another year's API ({detail}); the course's are "
+        "vector_interp(p1, p2, V1, V2, coord, dim), f_shading(img, vertices, vcolors), "
+        "g_shading(img, vertices, vcolors) and render_img(faces, vertices, vcolors, depth, "
+        "shading) with shading 'f' or 'g'. The grader called yours through an adapter.",
+        "use the course's names, parameters and shading values, so that the course's own code "
+        "can call your functions"),
+    "timeout": (
+        "Your code ran past its time limit ({detail}).",
+        "look for a loop that never ends (a while whose variable is never updated) or work done "
+        "for every pixel of the canvas on every face; a 512 x 512 scene of 10,000 faces must "
+        "take seconds, not minutes"),
+    "memory": (
+        "Your code ran out of memory ({detail}).",
+        "do not allocate arrays per pixel or per face that grow with the scene (a 512 x 512 x 3 "
+        "canvas is 6 MB): reuse the canvas you are given"),
+    "crashed": (
+        "The Python interpreter running your code stopped in the middle ({detail}).",
+        "do not call sys.exit(), os._exit() or native code; let an error be raised instead, "
+        "and keep demos under `if __name__ == \"__main__\":`"),
+    "forbidden": (
+        "Your code tried something the grader does not allow ({detail}).",
+        "use only the arguments you are given: no files outside your submission (load hw1.npy "
+        "only in your demo, under `if __name__ == \"__main__\":`), no network, no other "
+        "programs, no megabytes of printing"),
     "vector_interp_degenerate": (
         "vector_interp fails when p1 and p2 have the same coordinate along dim: {detail}.",
         "when the two coordinates are equal, return V1 (or the midpoint) instead of dividing "

@@ -30,6 +30,23 @@ def _fmt_span(spans, y):
     return ", ".join(f"{a}…{b - 1}" for a, b in runs)
 
 
+def _runs_text(row):
+    """A row of a mask as its runs of columns: "12..18", "3..5, 9..12" or "nothing"."""
+    padded = np.concatenate(([False], row, [False])).astype(np.int8)
+    d = np.flatnonzero(np.diff(padded))
+    return ", ".join(f"{a}..{b - 1}" for a, b in zip(d[::2], d[1::2])) or "nothing"
+
+
+def first_wrong_row(student, expected):
+    """The first row where the student's mask differs from the expected one, as a reader checks
+    it by hand: "row 7: expected 12..18, yours 11..18" ("" when the masks are equal)."""
+    rows = np.flatnonzero((student != expected).any(axis=1))
+    if not len(rows):
+        return ""
+    y = int(rows[0])
+    return f"row {y}: expected {_runs_text(expected[y])}, yours {_runs_text(student[y])}"
+
+
 def _fill_evidence(probe, student, model_mask, correct):
     """The first row where the submission differs from the correct fill and the model explains
     it: the row, the crossings, the span expected and the student's."""
@@ -89,46 +106,98 @@ def _drift_signature(probe, student, correct):
     return True
 
 
+def _candidates(plain):
+    """Every fill model as (cause keys, {probe name: its rows}): the compositions of
+    fill_models (span ends × rows × edge stepping × vertex rounding, the one-mistake models
+    among them) and the whole-face and canvas models, which compose with nothing."""
+    composers = {p.name: fill_models.Composer(p.array, p.size) for p, _ in plain}
+    for composition in fill_models.COMPOSITIONS:
+        yield (fill_models.causes_of(composition),
+               {p.name: composers[p.name].rows(composition) for p, _ in plain},
+               lambda p, c=composition: composers[p.name].mask(c))
+    for key in (k for k in fill_models.MODELS if k[0] in ("horizontal_edge_skipped",
+                                                          "canvas_border_clipped")):
+        model = fill_models.MODELS[key]
+        yield ([key], {p.name: fill_models.row_spans(model(p.array, p.size)) for p, _ in plain},
+               lambda p, m=model: m(p.array, p.size))
+
+
+def _explains(results, wrong):
+    """How well each model explains the student's rows, best first: (rows it gets wrong on
+    integer probes, on the others, how many causes it names, keys, mask function). The integer
+    probes — the assignment's domain — rank first; the non-integer ones only break ties."""
+    students = {p.name: fill_models.row_spans(m) for p, m in results}
+    integer = {p.name: p.integer for p, _ in results}
+    ranked = []
+    for keys, rows, mask in _candidates(results):
+        bad = [0, 0]
+        for name, model in rows.items():
+            student = students[name]
+            n = sum(model.get(y) != student.get(y) for y in set(model) | set(student))
+            bad[0 if integer[name] else 1] += n
+        ranked.append((bad[0], bad[1], len({k[0] for k in keys}), keys, mask))
+        if not bad[0] and bad[1] <= wrong[1] * (1 - CONFIDENCE) and len(keys) == 1:
+            break      # a one-mistake model explains the assignment's rows: no need to compose
+    ranked.sort(key=lambda r: r[:3])
+    return ranked
+
+
 def diagnose_fill(results):
-    """results: [(probe, student mask)] from f_shading on blank canvases. Returns causes."""
+    """results: [(probe, student mask)] from f_shading on blank canvases. Returns causes: the
+    fill model explaining most of the student's wrong rows, each of its causes named when it
+    explains at least CONFIDENCE of them on the integer probes (the non-integer ones, beyond the
+    assignment, decide only when every integer probe is right)."""
     plain = [(p, m) for p, m in results if not fill_models.degenerate(p.array)]
     correct = {p.name: fill_models.correct(p.array, p.size) for p, _ in results}
-    wrong = {(p.name, r) for p, m in plain for r in _rows_differing(m, correct[p.name])}
+    wrong = [sum(len(_rows_differing(m, correct[p.name])) for p, m in plain if p.integer == i)
+             for i in (True, False)]
     causes = []
-    if wrong:
-        scores = []
-        for key, model in fill_models.MODELS.items():
-            masks = {p.name: model(p.array, p.size) for p, _ in plain}
-            bad = {(p.name, r) for p, m in plain for r in _rows_differing(m, masks[p.name])}
-            scores.append((len(bad), key, masks))
-        scores.sort(key=lambda s: s[0])
-        best_bad = scores[0][0]
-        for bad, (cause_id, variant), masks in scores:
-            confidence = 1 - bad / len(wrong)
-            if key_is_drift(cause_id) and bad > 0:
-                # Drift depends on how the student accumulated: accept the signature.
-                if all(_drift_signature(p, m, correct[p.name]) for p, m in plain):
-                    confidence = max(confidence, CONFIDENCE)
-            if confidence < CONFIDENCE or bad > best_bad and not key_is_drift(cause_id):
-                continue
-            candidates = [(p, m) for p, m in plain if _rows_differing(m, correct[p.name])]
-            exact = [(p, m) for p, m in candidates if (m == masks[p.name]).all()]
-            probe, mask = (exact or candidates)[0]
-            text, _ = _fill_evidence(probe, mask, masks[probe.name], correct[probe.name])
-            if not any(c.id == cause_id for c in causes):
-                causes.append(Cause(cause_id, confidence, text, detail=variant or "",
-                                    picture_pixels=fill_picture(mask, correct[probe.name])))
+    if any(wrong):
+        ranked = _explains(plain, wrong)
+        best = ranked[0][:3]
+        domain = 0 if wrong[0] else 1
+        confidence = 1 - best[domain] / wrong[domain]
+        named = [r for r in ranked if r[:3] == best] if confidence >= CONFIDENCE else []
+        if not named and all(_drift_signature(p, m, correct[p.name]) for p, m in plain
+                             if p.integer or not wrong[0]):
+            # Drift depends on how the student accumulated: its signature is enough.
+            named = [r for r in ranked if r[3] == [("float_drift", "")]][:1]
+            confidence = CONFIDENCE
+        for _, _, _, keys, mask_of in named:
+            causes += _fill_causes(plain, correct, keys, mask_of, confidence, causes)
     drawn = [(p, m) for p, m in results if fill_models.degenerate(p.array) and m.any()]
     if drawn:
         p, m = drawn[0]
+        spans = fill_models.row_spans(m)
         causes.append(Cause("degenerate_drawn", 1.0,
                             f"probe `{p.name}` ({p.what}: "
                             + " ".join(f"({x:g}, {y:g})" for x, y in p.vertices)
-                            + f"), row {min(fill_models.row_spans(m))}: expected columns "
-                            f"nothing, yours {_fmt_span(fill_models.row_spans(m), min(fill_models.row_spans(m)))}"
+                            + f"), row {min(spans)}: expected columns "
+                            f"nothing, yours {_fmt_span(spans, min(spans))}"
                             f" ({int(m.sum())} pixels in all)",
                             picture_pixels=fill_picture(m, correct[p.name])))
     return causes
+
+
+def _fill_causes(plain, correct, keys, mask_of, confidence, named):
+    """A cause for each key of a model not yet named, its evidence a probe where the model draws
+    exactly what the student drew (an integer probe first)."""
+    candidates = sorted(((p, m) for p, m in plain if _rows_differing(m, correct[p.name])),
+                        key=lambda q: not q[0].integer)
+    exact = [(p, m) for p, m in candidates if (m == mask_of(p)).all()]
+    probe, mask = (exact or candidates)[0]
+    text, _ = _fill_evidence(probe, mask, mask_of(probe), correct[probe.name])
+    # Rounding the vertices is harmless on the course's integer vertices: not a cause, but it
+    # explains the non-integer probes (beyond the assignment), so it is said in the evidence.
+    mistakes = [k for k in keys if k[0] != "vertices_rounded"]
+    if len(mistakes) > 1:
+        text += " (" + " and ".join(f"`{k[0]}`" for k in mistakes) + " together explain it)"
+    if len(mistakes) < len(keys):
+        text += ("; your vertices are rounded to whole pixels first (int(round(x))), which "
+                 "only the non-integer probes, beyond the assignment, show")
+    return [Cause(cause_id, confidence, text, detail=variant or "",
+                  picture_pixels=fill_picture(mask, correct[probe.name]))
+            for cause_id, variant in mistakes if not any(c.id == cause_id for c in named)]
 
 
 def key_is_drift(cause_id):
@@ -219,39 +288,91 @@ def image_mismatch(a, b):
     return float((channel_error(a, b) > 1.5 / 255).mean())
 
 
-def diagnose_image(student, reference, uncovered, alternatives):
-    """Global mistakes of a rendered image, undone in order so the rest can be graded: a
-    transpose, BGR channels, a background colour; then the painter's order, from
-    `alternatives` {cause id: the reference rendered with that mistake}. Returns (image, causes)."""
+_UNDO = {"transposed": lambda s: s.transpose(1, 0, 2), "bgr": lambda s: s[..., ::-1]}
+
+
+def _background(student, uncovered):
+    """(colour, its pixels, their share of the uncovered ones) when the pixels no face covers
+    are one colour other than white, else None."""
+    if not uncovered.any():
+        return None
+    bg = np.median(student[uncovered], axis=0)
+    if np.abs(bg - 1.0).max() <= 2 / 255:
+        return None
+    same = uncovered & (channel_error(student, bg) <= 1.5 / 255)
+    share = same.sum() / uncovered.sum()
+    return (bg, same, share) if share >= CONFIDENCE else None
+
+
+def _undone(student, reference, uncovered, mistakes):
+    """(image, mismatch, background) with `mistakes` undone, or None when one cannot be."""
+    fixed = student
+    for k in ("transposed", "bgr"):
+        if k in mistakes:
+            fixed = np.ascontiguousarray(_UNDO[k](fixed))
+    bg = None
+    if "background" in mistakes:
+        bg = _background(fixed, uncovered)
+        if bg is None:
+            return None
+        fixed = fixed.copy()
+        fixed[bg[1]] = 1.0
+    return fixed, image_mismatch(fixed, reference), bg
+
+
+def undo_global(student, reference, uncovered):
+    """The whole-image mistakes (transposed, BGR, background) undone *together*: every
+    combination is tried (one alone may not halve the mismatch while another hides it: a
+    transposed image on a 0.99 background differs almost everywhere either way), the one
+    leaving the fewest differing pixels kept, and each of its mistakes named when undoing it
+    halves what differs. Returns (image, causes)."""
+    kinds = [k for k in ("transposed", "bgr", "background")
+             if k != "transposed" or student.shape[0] == student.shape[1]]
+    tried = {}
+    for n in range(len(kinds) + 1):
+        for combo in itertools.combinations(kinds, n):
+            tried[frozenset(combo)] = _undone(student, reference, uncovered, combo)
+    best = min((k for k in tried if tried[k] is not None),
+               key=lambda k: (tried[k][1], len(k)))
+    fixed, m, bg = tried[best]
     causes = []
-    base = image_mismatch(student, reference)
-    for cause_id, fix in (("transposed", lambda s: s.transpose(1, 0, 2)),
-                          ("bgr", lambda s: s[..., ::-1])):
-        if base == 0 or student.shape[0] != student.shape[1] and cause_id == "transposed":
+    def mismatch(combo):
+        # Without the transpose the background may not be found: then it is not undone either.
+        return tried[combo][1] if tried[combo] is not None else mismatch(combo - {"background"})
+
+    for k in (k for k in kinds if k in best):
+        without = mismatch(best - {k})
+        if without <= 2 * m or without == 0:
             continue
-        fixed = np.ascontiguousarray(fix(student))
-        m = image_mismatch(fixed, reference)
-        if m < base * 0.5:
-            differ = channel_error(student, reference) > 1.5 / 255
-            causes.append(Cause(cause_id, 1 - m / base,
-                                f"{base:.1%} of the pixels differ; {m:.1%} after undoing it",
-                                picture_pixels=image_picture(student, reference, differ),
+        if k == "background":
+            colour, same, share = bg
+            causes.append(Cause("background", share,
+                                f"{share:.0%} of the pixels no face covers are "
+                                f"{_describe_colour(colour)}", detail=_describe_colour(colour),
+                                picture_pixels=image_picture(student, reference, same),
                                 legend=IMAGE_LEGEND))
-            student, base = fixed, m
-    if uncovered.any() and base > 0:
-        bg = np.median(student[uncovered], axis=0)
-        if np.abs(bg - 1.0).max() > 2 / 255:
-            same = uncovered & (channel_error(student, bg) <= 1.5 / 255)
-            share = same.sum() / uncovered.sum()
-            if share >= CONFIDENCE:
-                picture = image_picture(student, reference, same)
-                student = student.copy()
-                student[same] = 1.0
-                causes.append(Cause("background", share,
-                                    f"{share:.0%} of the pixels no face covers are "
-                                    f"{_describe_colour(bg)}", detail=_describe_colour(bg),
-                                    picture_pixels=picture, legend=IMAGE_LEGEND))
-                base = image_mismatch(student, reference)
+            continue
+        differ = channel_error(student, reference) > 1.5 / 255
+        causes.append(Cause(k, 1 - m / without,
+                            f"{without:.1%} of the pixels differ; {m:.1%} once it is undone"
+                            + (" too" if len(best) > 1 else ""),
+                            picture_pixels=image_picture(student, reference, differ),
+                            legend=IMAGE_LEGEND))
+    named = {c.id for c in causes}
+    if best - named and tried.get(frozenset(named)) is not None:
+        fixed = tried[frozenset(named)][0]   # an undo that did not earn its name is not kept
+    return fixed, causes
+
+
+def diagnose_image(student, reference, uncovered, alternatives):
+    """Global mistakes of a rendered image, undone together so the rest can be graded (a
+    transpose, BGR channels, a background colour: undo_global); then the painter's order, from
+    `alternatives` {cause id: the reference rendered with that mistake}. Returns (image, causes)."""
+    base = image_mismatch(student, reference)
+    causes = []
+    if base > 0:
+        student, causes = undo_global(student, reference, uncovered)
+        base = image_mismatch(student, reference)
     for cause_id, alt in alternatives.items():
         # Only the pixels this order changes decide (a wrong fill elsewhere does not blur it).
         deciding = channel_error(alt, reference) > 1.5 / 255
@@ -276,3 +397,33 @@ def diagnose_vector_interp(failures):
         return []
     text, what = failures[0]
     return [Cause("vector_interp_degenerate", 1.0, f"{text}: {what}", detail=what)]
+
+
+def diagnose_api(functions):
+    """other_api when some function was called through an adapter (another year's API):
+    functions are submission.Found values, which carry the adapter and its one-line note."""
+    notes = [f.api for f in functions.values() if getattr(f, "adapter", None)]
+    notes = list(dict.fromkeys(notes))
+    if not notes:
+        return []
+    return [Cause("other_api", 1.0, "; ".join(notes), detail="; ".join(notes))]
+
+
+VERDICTS = ("timeout", "memory", "crashed", "forbidden")
+
+
+def diagnose_verdicts(results, calls):
+    """The sandbox's verdicts as causes (besides the tests' statuses): one per kind, its
+    evidence the first call that ended so and how many did. results: {call id: CallResult};
+    calls: the battery's calls, in order (for the function each called)."""
+    causes = []
+    for verdict in VERDICTS:
+        hit = [c for c in calls if getattr(results.get(c["id"]), "status", "") == verdict]
+        if not hit:
+            continue
+        first = results[hit[0]["id"]]
+        detail = (first.detail.strip().splitlines() or [verdict])[0]
+        more = f" (and {len(hit) - 1} more calls)" if len(hit) > 1 else ""
+        causes.append(Cause(verdict, 1.0, f"call `{hit[0]['id']}` ({hit[0]['func']}): "
+                            f"{first.detail.strip()[:600]}{more}", detail=detail))
+    return causes

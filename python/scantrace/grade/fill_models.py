@@ -8,6 +8,7 @@ The correct rule is the course's half-open scanline rule (docs/design.md §3): r
 ceil(y_min) … ceil(y_max) − 1, and on each row the columns ceil(x_L) … ceil(x_R) − 1.
 """
 
+import itertools
 import math
 from fractions import Fraction
 
@@ -154,29 +155,9 @@ def edge_lag(tri, shape):
 
 def float_drift(tri, shape):
     """x accumulated as x += dx/dy in float64 from each edge's first row: on rows where the exact
-    crossing is a whole number the sum is a hair off, and ceil() moves the span end by one."""
-    h, w = shape
-    mask = np.zeros(shape, dtype=bool)
-    ex = _exact(tri)
-    if _is_degenerate(ex):
-        return mask
-    first, end = _rows(ex)
-    accumulated = {}
-    for e in _edges(ex):
-        (x0, y0), (x1, y1) = e
-        step = float(x1 - x0) / float(y1 - y0)
-        x = float(x0) + (math.ceil(y0) - float(y0)) * step
-        for y in range(math.ceil(y0), math.ceil(y1)):
-            accumulated[(e, y)] = x
-            x += step
-    for y in range(first, end):
-        active = _active(_edges(ex), Fraction(y))
-        if len(active) < 2:
-            continue
-        xs = sorted(accumulated[(e, y)] for e in active[:2])
-        if 0 <= y < h:
-            mask[y, max(math.ceil(xs[0]), 0):max(min(math.ceil(xs[1]), w), 0)] = True
-    return mask
+    crossing is a whole number the sum is a hair off, and ceil() moves the span end by one.
+    (The composition with only the edge stepping off: _stepped_crossings accumulates.)"""
+    return Composer(tri, shape).mask((None, None, ("float_drift", ""), None))
 
 
 def horizontal_edge_skipped(tri, shape):
@@ -236,3 +217,108 @@ def row_spans(mask):
         d = np.flatnonzero(np.diff(row.astype(np.int8)))
         spans[int(y)] = [(int(a), int(b)) for a, b in zip(d[::2], d[1::2])]
     return spans
+
+
+# ---- composed models -------------------------------------------------------------------------
+# Real fills carry several of these mistakes at once. A composed model picks one choice on each
+# axis (None: the correct one), keyed by the cause it names: span-end rule × row range × edge
+# stepping × vertex rounding. The one-mistake models above are the compositions with one axis
+# off (closed_rule is its span ends and its rows: one cause).
+SPAN_ENDS = {
+    None: lambda l, r: (math.ceil(l), math.ceil(r)),
+    ("span_end_rounding", "nearest at both ends"): lambda l, r: (_floor_half_up(l),
+                                                                 _floor_half_up(r)),
+    ("span_end_rounding", "nearest at the left end"): lambda l, r: (_floor_half_up(l),
+                                                                    math.ceil(r)),
+    ("span_end_rounding", "nearest at the right end"): lambda l, r: (math.ceil(l),
+                                                                     _floor_half_up(r)),
+    ("span_end_rounding", "rounded with round() (halves to even) at both ends"):
+        lambda l, r: (round(l), round(r)),
+    ("span_end_rounding", "truncated (floor) at both ends"):
+        lambda l, r: (math.floor(l), math.floor(r)),
+    ("right_end_excluded", ""): lambda l, r: (math.ceil(l), math.floor(r)),
+    ("span_too_wide", ""): lambda l, r: (math.floor(l), math.ceil(r) + 1),
+    ("closed_rule", ""): lambda l, r: (math.ceil(l), math.floor(r) + 1),
+}
+ROW_RANGES = {
+    None: _rows,
+    ("top_row_dropped", ""): lambda t: (_rows(t)[0] + 1, _rows(t)[1]),
+    ("bottom_row_dropped", ""): lambda t: (_rows(t)[0], _rows(t)[1] - 1),
+    ("closed_rule", ""): _closed_rows,
+}
+EDGE_STEPPING = (None, ("edge_lag", ""), ("float_drift", ""))
+# int(round(x)) on each vertex before an exact fill: no change on the course's integer vertices.
+VERTEX_ROUNDING = (None, ("vertices_rounded", "to the nearest integer (round())"))
+COMPOSITIONS = [c for c in itertools.product(SPAN_ENDS, ROW_RANGES, EDGE_STEPPING,
+                                             VERTEX_ROUNDING) if any(c)]
+
+
+def causes_of(composition):
+    """The (cause id, variant) pairs a composition names, each once, in axis order."""
+    return list(dict.fromkeys(k for k in composition if k is not None))
+
+
+def _stepped_crossings(tri, stepping):
+    """Row -> (x_L, x_R) on every row with two active edges, each edge's x found exactly
+    (None), one row late (edge_lag) or accumulated in float64 from its first row (float_drift)."""
+    first, end = _rows(tri)
+    if stepping is None or stepping[0] == "edge_lag":
+        at = None if stepping is None else (lambda e, y: max(y - 1, math.ceil(e[0][1])))
+        return {y: c for y in range(first, end)
+                if (c := _span_ends(tri, Fraction(y), at)) is not None}
+    accumulated = {}
+    for e in _edges(tri):
+        (x0, y0), (x1, y1) = e
+        step = float(x1 - x0) / float(y1 - y0)
+        x = float(x0) + (math.ceil(y0) - float(y0)) * step
+        for y in range(math.ceil(y0), math.ceil(y1)):
+            accumulated[(e, y)] = x
+            x += step
+    crossings = {}
+    for y in range(first, end):
+        active = _active(_edges(tri), Fraction(y))
+        if len(active) >= 2:
+            crossings[y] = tuple(sorted(accumulated[(e, y)] for e in active[:2]))
+    return crossings
+
+
+class Composer:
+    """The rows a composed model fills on one triangle and canvas, as {row: [(begin, end)]}
+    clipped to the canvas (row_spans' form), the crossings shared between the compositions."""
+
+    def __init__(self, tri, shape):
+        self.tri, self.shape, self.cache = tri, shape, {}
+
+    def _geometry(self, stepping, rounding):
+        key = (stepping, rounding)
+        if key not in self.cache:
+            tri = _exact(self.tri)
+            if rounding is not None:
+                tri = [(Fraction(round(x)), Fraction(round(y))) for x, y in tri]
+            self.cache[key] = (tri, None if _is_degenerate(tri)
+                               else _stepped_crossings(tri, stepping))
+        return self.cache[key]
+
+    def rows(self, composition):
+        span, row_range, stepping, rounding = composition
+        tri, crossings = self._geometry(stepping, rounding)
+        if crossings is None:
+            return {}
+        h, w = self.shape
+        first, end = ROW_RANGES[row_range](tri)
+        spans = {}
+        for y in range(max(first, 0), min(end, h)):
+            crossing = crossings.get(y) or _closed_crossing(tri, Fraction(y))
+            if crossing is None:
+                continue
+            a, b = SPAN_ENDS[span](*crossing)
+            a, b = max(a, 0), min(b, w)
+            if b > a:
+                spans[y] = [(a, b)]
+        return spans
+
+    def mask(self, composition):
+        mask = np.zeros(self.shape, dtype=bool)
+        for y, [(a, b)] in self.rows(composition).items():
+            mask[y, a:b] = True
+        return mask

@@ -161,10 +161,33 @@ def _as_float_array(value, what):
     return np.ascontiguousarray(array)
 
 
+def _adapted(func, adapter):
+    """The student's function of another year's API called with the course's arguments (the
+    grader's signatures.adapter read its parameters): each parameter gets the course's argument
+    of its role (reordered), the shading value is translated ('f' -> 'flat'), a fixed one is
+    added (shade_triangle's 'flat' for f_shading), and a canvas parameter the course does not
+    pass gets a blank canvas, returned when the function fills it in place."""
+    if not adapter:
+        return func
+
+    def course_call(*args):
+        given = dict(zip(adapter["course"], args))
+        given.update(adapter["fixed"])
+        if "shading" in given:
+            given["shading"] = adapter["shading"].get(given["shading"], given["shading"])
+        canvas = None
+        if "img" in adapter["params"] and "img" not in given:
+            canvas = given["img"] = np.ones(adapter["canvas"], dtype=np.float64)
+        result = func(*[given[role] for role in adapter["params"]])
+        return canvas if result is None and canvas is not None else result
+    return course_call
+
+
 def _run_call(call, functions, spec):
     func = functions.get(call["func"])
     if func is None:
         raise NameError(f"the submission's module has no function {call['func']}")
+    func = _adapted(func, call.get("adapter"))
     if call["kind"] == "faces":
         # The scene drawn face by face through the student's shading function, in the order the
         # grader gives (the reference painter's order): the fill alone, without the student's sort.
@@ -270,7 +293,9 @@ def _import_module(module, spec):
 def _import_all(spec):
     functions = {}
     for name, module in spec["functions"].items():
-        function = getattr(_import_module(module, spec), name, None)
+        # "module:name": the student's function has another year's name (shade_triangle).
+        module, _, own = module.partition(":")
+        function = getattr(_import_module(module, spec), own or name, None)
         if callable(function):
             functions[name] = function
     return functions

@@ -288,7 +288,8 @@ class Session:
     def _module_paths(self):
         """Modules whose file name has a dot besides .py (hw1.final.py): the harness loads them
         by path, since `import hw1.final` would look for a package hw1."""
-        wanted, paths = set(self.functions.values()), {}
+        # A function's module is "module" or "module:name" (another year's name).
+        wanted, paths = {str(m).partition(":")[0] for m in self.functions.values()}, {}
         for path in sorted(self.submission.rglob("*.py")):
             rel = path.relative_to(self.submission)
             module = ".".join(rel.with_suffix("").parts)

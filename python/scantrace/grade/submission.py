@@ -13,6 +13,8 @@ import tempfile
 import zipfile
 import zlib
 
+from . import signatures
+
 FUNCTIONS = ("vector_interp", "f_shading", "g_shading", "render_img")
 MAX_FILES = 200
 MAX_BYTES = 2_000_000
@@ -189,8 +191,22 @@ def _module_name(path, root):
     return ".".join(rel.parts)
 
 
-def _find(root, module_override):
-    defined, notes = {}, []
+class Found(str):
+    """Where a course function is taken from, as the harness imports it: "module", or
+    "module:name" when the student's function has another year's name (shade_triangle for
+    f_shading). `adapter` (signatures.adapter's dict, or None: called as is) and `api` (the
+    one-line note of another year's API, or "") ride along for the battery."""
+
+    def __new__(cls, value, adapter=None, api=""):
+        found = super().__new__(cls, value)
+        found.adapter, found.api = adapter, api
+        return found
+
+
+def _parse(root, notes):
+    """module name -> {name: FunctionDef} of its top-level functions, and the strings the
+    submission compares with anywhere (its shading values). Nothing is run."""
+    modules, strings = {}, set()
     for path in sorted(root.rglob("*.py")):
         rel = path.relative_to(root)
         try:
@@ -204,25 +220,60 @@ def _find(root, module_override):
             notes.append(f"{rel}: cannot be parsed ({type(e).__name__}: {str(e)[:200]}); this "
                          "file is not used")
             continue
-        for node in tree.body:
-            if isinstance(node, ast.FunctionDef) and node.name in FUNCTIONS:
-                defined.setdefault(node.name, []).append(_module_name(path, root))
-    if module_override:
-        return {f: module_override for f in FUNCTIONS}, notes
-    # Prefer the module that defines the most of the functions (the student's main file), then
-    # the first in name order.
-    counts = {}
-    for modules in defined.values():
-        for m in modules:
-            counts[m] = counts.get(m, 0) + 1
-    functions = {}
-    for f, modules in defined.items():
-        functions[f] = max(modules, key=lambda m: (counts[m], -modules.index(m)))
-        if len(modules) > 1:
-            notes.append(f"`{f}` is defined in {', '.join(modules)}; graded: {functions[f]}")
+        modules[_module_name(path, root)] = {n.name: n for n in tree.body
+                                             if isinstance(n, ast.FunctionDef)}
+        strings |= signatures.compared_strings(tree)
+    return modules, strings
+
+
+def _provided(defs):
+    """course function -> the name of the student's function providing it in one module: its
+    own name first, then another year's (signatures.ALIASES)."""
+    provided = {}
     for f in FUNCTIONS:
-        if f not in functions:
+        name = next((n for n in (f, *signatures.ALIASES[f]) if n in defs), None)
+        if name is not None:
+            provided[f] = name
+    return provided
+
+
+def _find(root, module_override):
+    """The course's four functions: all taken from one module — the one defining the most of
+    them (ties: the shortest name), so two copies of the code (hw1.py and hw1_old.py, a notebook
+    export beside the module) are never mixed — and from other modules only those it lacks.
+    Each signature is read: another year's API goes through an adapter, said in one note."""
+    notes = []
+    modules, strings = _parse(root, notes)
+    provides = {m: _provided(defs) for m, defs in modules.items()}
+    if module_override:
+        provides = {module_override: provides.get(module_override, {})}
+
+    def rank(m):
+        return (-len(provides[m]), len(m), m)
+
+    holders = sorted((m for m in provides if provides[m]), key=rank)
+    functions, api, unfit = {}, [], []
+    for f in FUNCTIONS:
+        m = next((m for m in holders if f in provides[m]), None)
+        if m is None:
+            if module_override:
+                functions[f] = Found(module_override)
             notes.append(f"no function `{f}` in any file of the submission")
+            continue
+        name = provides[m][f]
+        adapter, note = signatures.adapter(f, name, modules[m][name],
+                                           signatures.shading_values(strings))
+        functions[f] = Found(m if name == f else f"{m}:{name}", adapter, note)
+        if note and note not in api + unfit:
+            (api if adapter else unfit).append(note)
+    copies = [m for m in holders[1:] if set(provides[m]) & set(provides[holders[0]])]
+    if copies:
+        notes.append(f"the course's functions are defined in {', '.join(holders[:1] + copies)}"
+                     f": all are taken from {holders[0]} (the module defining the most of them;"
+                     " ties: the shortest name)")
+    if api:
+        notes.append("another year's API, graded through an adapter: " + "; ".join(api))
+    notes += unfit
     return functions, notes
 
 

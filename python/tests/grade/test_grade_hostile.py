@@ -479,12 +479,17 @@ def test_class_html_links_and_csv_cells_are_data(tmp_path):
 
 
 def test_results_json_stays_under_100_kb_with_200_long_file_names(tmp_path, sandbox_ok):
-    """Issue row 10: 200 files with 150-character names, each defining the four functions: the
-    "defined in …" notes were never shortened (199,516 bytes)."""
+    """Issue row 10: 200 files with long names: the notes naming them were never shortened
+    (199,516 bytes). One defines the four functions; the 199 others, 600-character paths, do not
+    parse, so each is a note naming its file (a note per file, whatever the grader says of two
+    copies of the code)."""
     sub = tmp_path / "many"
     sub.mkdir()
-    for k in range(200):
-        (sub / f"{'student_solution_' * 8}{k:03d}.py").write_text(CORRECT.split("\ndata =")[0])
+    (sub / "hw1.py").write_text(CORRECT.split("\ndata =")[0])
+    deep = sub / ("student_solution_" * 11) / ("older_versions_" * 13)   # 600-character paths
+    deep.mkdir(parents=True)
+    for k in range(199):
+        (deep / f"{'student_solution_' * 8}{k:03d}.py").write_text("def broken(:\n")
     out = tmp_path / "out"
     assert _grade([sub], out) == 0
     text, results = _results(out)

@@ -68,7 +68,7 @@ void FrameView::circle(Point centre, int radius, const Scalar& colour, int thick
 
 void FrameView::text(const std::string& text, Point origin, HersheyFont font, double scale,
                      const Scalar& colour, int thickness, LineType type, std::optional<Mark> mark) {
-  add(TextOp{text, origin, font, scale, colour, thickness, type}, std::move(mark));
+  add(TextOp{hershey_ascii(text), origin, font, scale, colour, thickness, type}, std::move(mark));
 }
 
 void FrameView::pixels(const Rect& area, std::shared_ptr<const std::vector<Vec3b>> bgr,

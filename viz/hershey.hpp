@@ -17,6 +17,11 @@ namespace scantrace::viz {
 // OpenCV's font numbers (cv::FONT_HERSHEY_SIMPLEX, cv::FONT_HERSHEY_DUPLEX).
 enum class HersheyFont { simplex = 0, duplex = 2 };
 
+// The text as the fonts draw it, in ASCII: typographic characters (’ “ ” – — … × − ≤ ≥ →) as their
+// look-alikes, anything else not printable ASCII as '?'. Every text op holds this form, so that
+// every backend (OpenCV's putText among them) draws the same characters.
+std::string hershey_ascii(std::string_view text);
+
 // cv::getTextSize: width and cap height of `text`; `baseline` (when given) receives the depth of
 // the descenders below the baseline.
 Size hershey_text_size(std::string_view text, HersheyFont font, double scale, int thickness,

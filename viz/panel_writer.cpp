@@ -25,17 +25,38 @@ void PanelWriter::gap(double design_pixels) {
 }
 
 void PanelWriter::heading(const std::string& text) {
-  type_.draw(frame_, text, {area_.x, y_}, TextStyle::heading, palette::kText);
-  y_ += type_.line_height(TextStyle::heading) + type_.px(2);
+  draw_line(text, TextStyle::heading, palette::kText, 0);
+  y_ += type_.px(2);
 }
 
 void PanelWriter::paragraph(const std::string& text, TextStyle style, const Scalar& colour) {
   for (const std::string& l : type_.wrap(text, style, area_.width)) line(l, style, colour);
 }
 
-void PanelWriter::line(const std::string& text, TextStyle style, const Scalar& colour, int indent) {
-  type_.draw(frame_, text, {area_.x + indent, y_}, style, colour);
+std::vector<std::string> PanelWriter::fitted(const std::string& text, TextStyle style,
+                                             int indent) const {
+  if (type_.width(text, style) + indent <= area_.width) return {text};
+  // Wrapped at its spaces, each piece keeping the line's leading spaces (a formula's indent).
+  const std::size_t lead = text.find_first_not_of(' ');
+  if (lead == std::string::npos) return {text};
+  const std::string pad(lead, ' ');
+  std::vector<std::string> pieces =
+      type_.wrap(text.substr(lead), style, area_.width - indent - type_.width(pad, style));
+  for (std::string& p : pieces) p.insert(0, pad);
+  return pieces;
+}
+
+void PanelWriter::draw_line(const std::string& text, TextStyle style, const Scalar& colour,
+                            int indent) {
+  // A line that would run below the panel is not drawn: a reader is better told nothing than
+  // shown the top half of a formula.
+  if (y_ + type_.box_height(style) <= area_.height)
+    type_.draw(frame_, text, {area_.x + indent, y_}, style, colour);
   y_ += type_.line_height(style);
+}
+
+void PanelWriter::line(const std::string& text, TextStyle style, const Scalar& colour, int indent) {
+  for (const std::string& piece : fitted(text, style, indent)) draw_line(piece, style, colour, indent);
 }
 
 void PanelWriter::table(const std::vector<TableColumn>& columns,
@@ -92,9 +113,18 @@ void PanelWriter::swatch(const Color& c, const std::string& text, TextStyle styl
 
 void PanelWriter::formula(const std::vector<std::string>& lines) {
   const int pad = type_.px(6);
-  const int h = static_cast<int>(lines.size()) * type_.line_height(TextStyle::body) + pad;
+  std::vector<std::string> fitted_lines;
+  for (const std::string& l : lines)
+    for (std::string& piece : fitted(l, TextStyle::body, pad)) fitted_lines.push_back(std::move(piece));
+  const int h = static_cast<int>(fitted_lines.size()) * type_.line_height(TextStyle::body) + pad;
+  // A formula is drawn whole or not at all (its last line lost under the legend read as a
+  // complete formula); nothing after it is drawn either, so the panel never skips a step.
+  if (y_ + h > area_.height) {
+    y_ = area_.height;
+    return;
+  }
   frame_.rectangle({area_.x, y_ - pad, area_.width, h + pad}, palette::kFormulaBox, FILLED);
-  for (const std::string& l : lines) line(l, TextStyle::body, palette::kText, pad);
+  for (const std::string& l : fitted_lines) draw_line(l, TextStyle::body, palette::kText, pad);
   y_ += pad;
 }
 

@@ -45,16 +45,19 @@ class PanelWriter {
   // Wrapped to the panel's width.
   void paragraph(const std::string& text, TextStyle style = TextStyle::body,
                  const Scalar& colour = palette::kText);
-  // One line, never wrapped (text that is cut by the panel edge is the caller's mistake).
+  // One line; wrapped at its spaces when wider than the panel (keeping its leading spaces), and
+  // not drawn when it would run below the panel: no text is ever cut at the panel's edge.
   void line(const std::string& text, TextStyle style = TextStyle::body,
             const Scalar& colour = palette::kText, int indent = 0);
   void table(const std::vector<TableColumn>& columns, const std::vector<TableRow>& rows);
   // A colour sample followed by its text.
   void swatch(const Color& c, const std::string& text, TextStyle style = TextStyle::body);
-  // Lines in a tinted box: the formula being applied.
+  // Lines in a tinted box: the formula being applied; drawn whole or not at all.
   void formula(const std::vector<std::string>& lines);
 
  private:
+  std::vector<std::string> fitted(const std::string& text, TextStyle style, int indent) const;
+  void draw_line(const std::string& text, TextStyle style, const Scalar& colour, int indent);
   FrameView frame_;  // the area of the frame
   Rect area_;
   const Typography& type_;

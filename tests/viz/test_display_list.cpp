@@ -196,6 +196,31 @@ TEST_CASE("the composer's text metrics are cv::getTextSize's", "[viz][display-li
         }
 }
 
+TEST_CASE("typographic characters are drawn as their ASCII look-alikes, the rest as '?'",
+          "[viz][display-list][text]") {
+  // The explorer's footer read "the explorer?s triangle": the fonts are ASCII only.
+  CHECK(viz::hershey_ascii("the explorer\u2019s triangle") == "the explorer's triangle");
+  CHECK(viz::hershey_ascii("\u201Cfar\u201D \u2013 near\u2026") == "\"far\" - near...");
+  CHECK(viz::hershey_ascii("x \u2264 y \u2192 3\u00D74 \u2212 1") == "x <= y -> 3x4 - 1");
+  // Not folded: a letter outside ASCII, a control character, a cut sequence: one '?' each, as
+  // OpenCV's putText draws them.
+  CHECK(viz::hershey_ascii("caf\u00E9") == "caf?");
+  CHECK(viz::hershey_ascii("a\x1b[2Jb") == "a?[2Jb");
+  CHECK(viz::hershey_ascii(std::string("ab\xE2\x80", 4)) == "ab?");
+  CHECK(viz::hershey_ascii(std::string("\xE2\x80\x99\xE2", 4)) == "'?");
+  // Measured as it is drawn: the width of the look-alike, which is OpenCV's for the ASCII text.
+  int cv_base = 0;
+  const cv::Size want = cv::getTextSize("explorer's", cv::FONT_HERSHEY_SIMPLEX, 0.6, 1, &cv_base);
+  CHECK(viz::hershey_text_size("explorer\u2019s", viz::HersheyFont::simplex, 0.6, 1).width ==
+        want.width);
+  // A text op holds the ASCII form, so every backend (OpenCV's putText too) draws the same.
+  viz::Frame frame({200, 40}, {255, 255, 255});
+  viz::FrameView view(frame);
+  view.text("it\u2019s", {2, 30}, viz::HersheyFont::simplex, 0.6, {0, 0, 0}, 1, viz::LineType::aa);
+  REQUIRE(frame.ops().size() == 1);
+  CHECK(std::get<viz::TextOp>(frame.ops()[0].body).text == "it's");
+}
+
 TEST_CASE("the Hershey strokes lie where OpenCV draws the text", "[viz][display-list][text]") {
   // Each stroke point of the composer's glyphs is on (or next to) a pixel putText inked.
   for (const viz::HersheyFont font : {viz::HersheyFont::simplex, viz::HersheyFont::duplex}) {

@@ -14,7 +14,11 @@ export async function start(st) {
   let traceText = '', plan = [], fill = null, diffPicture = null;
   let traceImage = null; // the ImageData the traced fill's image is copied into, move after move
   let shown = null; // the module's keptStep of the current step: the tables' events
-  let view = { zoom: 1, x: 0, y: 0 }; // canvas pixel (0, 0) at screen (x, y), `zoom` px a pixel
+  // The point (0, 0) of the image's plane at screen (x, y), `zoom` screen pixels a pixel. Pixel
+  // (x, y) is centred on the integer point (x, y), where the fill samples it (docs/design.md §1):
+  // its square is [x - 1/2, x + 1/2] x [y - 1/2, y + 1/2], and a vertex at integer coordinates
+  // sits on a pixel centre.
+  let view = { zoom: 1, x: 0, y: 0 };
   let drag = null, marked = null;
   const dragTimes = [], dragStages = [];
   let lastStages = null;
@@ -154,26 +158,59 @@ export async function start(st) {
     const w = s.mode !== 'scene' ? s.size[0] : fill ? fill.width : 512;
     const h = s.mode !== 'scene' ? s.size[1] : fill ? fill.height : 512;
     view.zoom = Math.max(0.25, Math.min(grid.width / w, grid.height / h));
-    view.x = (grid.width - w * view.zoom) / 2;
-    view.y = (grid.height - h * view.zoom) / 2;
+    // The image covers [-1/2, w - 1/2] x [-1/2, h - 1/2]: centred in the grid.
+    view.x = (grid.width - w * view.zoom) / 2 + view.zoom / 2;
+    view.y = (grid.height - h * view.zoom) / 2 + view.zoom / 2;
   }
 
   const toScreen = ([x, y]) => [view.x + x * view.zoom, view.y + y * view.zoom];
   const toCanvas = (px, py) => [(px - view.x) / view.zoom, (py - view.y) / view.zoom];
+  // The pixel whose square holds a screen point: the nearest centre.
+  const pixelAt = (px, py) => toCanvas(px, py).map(Math.round);
 
   function currentStep() {
     return plan[s.step] || null;
   }
 
   // The fill canvas placed where the view puts the image: grid canvas pixels to CSS pixels (the
-  // grid's box over its 720 pixels), then the view's offset and zoom. Set only when it changes (a
-  // pan, a zoom, a resize): a drag's move leaves it.
+  // grid's box over its 720 pixels), then the view's offset and zoom, then half a pixel up and
+  // left (the canvas's pixel x spans [x, x + 1]; the image's pixel x, [x - 1/2, x + 1/2]). Set
+  // only when it changes (a pan, a zoom, a resize): a drag's move leaves it.
   let placed = '';
   function placeFill() {
     const k = gridBoxWidth / grid.width;
-    const transform = `scale(${k}) translate(${view.x}px, ${view.y}px) scale(${view.zoom})`;
+    const transform = `scale(${k}) translate(${view.x}px, ${view.y}px) scale(${view.zoom}) translate(-0.5px, -0.5px)`;
     if (transform !== placed) fillCanvas.style.transform = placed = transform;
     fillCanvas.hidden = !fill;
+  }
+
+  // The pixel grid at zoom: the squares' sides on half-integer lines and, once the squares are
+  // large enough to see them, a dot on each pixel centre (where coverage is decided).
+  function drawPixelGrid(z) {
+    const [cx0, cy0] = pixelAt(0, 0).map((v) => Math.max(0, v));
+    const [cx1, cy1] = pixelAt(grid.width, grid.height);
+    const x1 = Math.min(cx1, fillCanvas.width - 1), y1 = Math.min(cy1, fillCanvas.height - 1);
+    gctx.strokeStyle = 'rgba(0,0,0,0.15)';
+    gctx.lineWidth = 1;
+    gctx.beginPath();
+    for (let x = cx0; x <= x1 + 1; ++x) {
+      gctx.moveTo(...toScreen([x - 0.5, cy0 - 0.5]));
+      gctx.lineTo(...toScreen([x - 0.5, y1 + 0.5]));
+    }
+    for (let y = cy0; y <= y1 + 1; ++y) {
+      gctx.moveTo(...toScreen([cx0 - 0.5, y - 0.5]));
+      gctx.lineTo(...toScreen([x1 + 0.5, y - 0.5]));
+    }
+    gctx.stroke();
+    if (z < 12) return;
+    gctx.fillStyle = 'rgba(0,0,0,0.45)';
+    const r = Math.max(1, z / 16);
+    for (let y = cy0; y <= y1; ++y) {
+      for (let x = cx0; x <= x1; ++x) {
+        const [px, py] = toScreen([x, y]);
+        gctx.fillRect(px - r, py - r, 2 * r, 2 * r);
+      }
+    }
   }
 
   function drawGrid() {
@@ -187,34 +224,19 @@ export async function start(st) {
       c.height = diffPicture.height;
       c.getContext('2d').putImageData(new ImageData(diffPicture.rgba, diffPicture.width, diffPicture.height), 0, 0);
       gctx.imageSmoothingEnabled = false;
-      gctx.drawImage(c, view.x, view.y, c.width * view.zoom, c.height * view.zoom);
+      gctx.drawImage(c, view.x - z / 2, view.y - z / 2, c.width * z, c.height * z);
     }
-    if (z >= 6) {
-      // The pixel grid and the pixel centres, where coverage is decided.
-      gctx.strokeStyle = 'rgba(0,0,0,0.15)';
-      gctx.lineWidth = 1;
-      const [x0, y0] = toCanvas(0, 0).map((v) => Math.max(0, Math.floor(v)));
-      const [x1, y1] = toCanvas(grid.width, grid.height).map(Math.ceil);
-      gctx.beginPath();
-      for (let x = x0; x <= Math.min(x1, fillCanvas.width); ++x) {
-        gctx.moveTo(view.x + x * z, view.y + y0 * z);
-        gctx.lineTo(view.x + x * z, view.y + Math.min(y1, fillCanvas.height) * z);
-      }
-      for (let y = y0; y <= Math.min(y1, fillCanvas.height); ++y) {
-        gctx.moveTo(view.x + x0 * z, view.y + y * z);
-        gctx.lineTo(view.x + Math.min(x1, fillCanvas.width) * z, view.y + y * z);
-      }
-      gctx.stroke();
-    }
+    if (z >= 6) drawPixelGrid(z);
     const step = currentStep();
     if (step && step.kind === 'scanlines') {
-      // The current scanline through the pixel centres of its row (y + 0.5).
+      // The current scanline through the pixel centres of its row: y = the row, where the
+      // vertices at integer coordinates lie.
       gctx.strokeStyle = '#c00';
       gctx.lineWidth = 2;
       gctx.beginPath();
-      const [, sy] = toScreen([0, step.last_row + 0.5]);
-      gctx.moveTo(view.x, sy);
-      gctx.lineTo(view.x + fillCanvas.width * z, sy);
+      const [, sy] = toScreen([0, step.last_row]);
+      gctx.moveTo(view.x - z / 2, sy);
+      gctx.lineTo(view.x + (fillCanvas.width - 0.5) * z, sy);
       gctx.stroke();
     }
     if (s.mode !== 'scene') {
@@ -242,7 +264,7 @@ export async function start(st) {
     if (marked) {
       gctx.strokeStyle = '#f0f';
       gctx.lineWidth = 2;
-      const [px, py] = toScreen(marked);
+      const [px, py] = toScreen([marked[0] - 0.5, marked[1] - 0.5]);
       gctx.strokeRect(px, py, Math.max(3, z), Math.max(3, z));
     }
   }
@@ -362,7 +384,7 @@ export async function start(st) {
       recompute(); // the trace's JSON Lines too, and the address
     }
     if (drag && drag.pan && !drag.moved) {
-      const [x, y] = toCanvas(...pointer(e)).map(Math.floor);
+      const [x, y] = pixelAt(...pointer(e));
       if (fill && x >= 0 && y >= 0 && x < fill.width && y < fill.height) why(x, y);
     }
     drag = null;
@@ -515,7 +537,7 @@ export async function start(st) {
     },
     pixelOnScreen: (x, y) => {
       const r = grid.getBoundingClientRect();
-      const [px, py] = toScreen([x + 0.5, y + 0.5]);
+      const [px, py] = toScreen([x, y]);
       return [r.left + px * (r.width / grid.width), r.top + py * (r.height / grid.height)];
     },
     traceText: () => traceText,

@@ -464,6 +464,75 @@ try {
     assert.deepStrictEqual(JSON.parse(await text('why')), want);
   });
 
+  await check("at high zoom each pixel's square is centred on its sample point: the pixels beside an edge on their side of it", async () => {
+    // Pixel (x, y) is centred on the integer point (x, y) (docs/design.md §1). Where the page
+    // draws a point of the plane is taken from the vertex handles alone (an affine map fitted to
+    // the three vertices' screen positions), not from the page's own pixel placement: a fill drawn
+    // half a pixel off shows the neighbour's colour in half of each square.
+    const wheel = async (at, deltaY) => b.page('Input.dispatchMouseEvent', { type: 'mouseWheel', x: at[0], y: at[1], deltaX: 0, deltaY });
+    const tri = (await b.evaluate('explorer.state()')).triangle;
+    const toScreenAffine = async () => {
+      const s = [];
+      for (let i = 0; i < 3; ++i) s.push(await b.evaluate(`explorer.vertexOnScreen(${i})`));
+      // Solve screen = A [x, y, 1] from the three correspondences (Cramer's rule).
+      const [[x0, y0], [x1, y1], [x2, y2]] = tri;
+      const det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+      return ([x, y]) => {
+        const u = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / det;
+        const v = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) / det;
+        return [0, 1].map((k) => s[0][k] + u * (s[1][k] - s[0][k]) + v * (s[2][k] - s[0][k]));
+      };
+    };
+    let at = await b.evaluate('explorer.vertexOnScreen(1)');   // zoomed in around (250, 80)
+    at = [at[0] + 2, at[1] + 12];
+    for (let i = 0; i < 11; ++i) await wheel(at, -100);       // 1.25^11: about 16 screen pixels a pixel
+    try {
+      const place = await toScreenAffine();
+      const seenAt = async ([x, y]) => {
+        const shot = await b.page('Page.captureScreenshot', { format: 'png', clip: { x: Math.floor(x), y: Math.floor(y), width: 1, height: 1, scale: 1 } });
+        return Array.from(decodePng(Buffer.from(shot.data, 'base64')).rgba.slice(0, 3));
+      };
+      const fill = await b.evaluate('explorer.fillPixels()');
+      const rgb = (x, y) => fill.slice((y * 512 + x) * 4, (y * 512 + x) * 4 + 3);
+      const white = (x, y) => rgb(x, y).every((v) => v === 255);
+      // Screen distance from a point to the drawn outline's edges and handles: samples there
+      // would see the outline's ink, not the pixel.
+      const corners = tri.map(place);
+      const nearInk = (p) => corners.some((c) => Math.hypot(p[0] - c[0], p[1] - c[1]) < 12) || corners.some((a, i) => {
+        const c = corners[(i + 1) % 3], dx = c[0] - a[0], dy = c[1] - a[1];
+        return Math.abs(dx * (p[1] - a[1]) - dy * (p[0] - a[0])) / Math.hypot(dx, dy) < 3;
+      });
+      const offsets = [-0.3, -0.2, 0.2, 0.3];
+      let checked = 0;
+      for (let y = 84; y <= 110; y += 2) {
+        let x1 = 511;
+        while (x1 > 0 && white(x1, y)) --x1;                 // the span's last pixel on row y
+        for (const [x, want] of [[x1, rgb(x1, y)], [x1 + 1, [255, 255, 255]]]) {
+          for (const dx of offsets) for (const dy of offsets) {
+            const p = place([x + dx, y + dy]);
+            if (nearInk(p)) continue;
+            const got = await seenAt(p);
+            assert.ok(got.every((v, k) => Math.abs(v - want[k]) <= 3), `row ${y}, pixel ${x} (the span ends at ${x1}), at (${x + dx}, ${y + dy}) in the plane: seen ${got}, the pixel is ${want}`);
+            ++checked;
+          }
+        }
+      }
+      assert.ok(checked >= 100, `only ${checked} points away from the outline`);
+      // A click on the point (254, 106) of the plane (edge e1 crosses row 106 at 254.06) is a
+      // click on pixel (254, 106), whose why says it is covered: the square drawn there is filled.
+      const click = place([254.2, 106.2]).map(Math.round);
+      await mouse('mousePressed', click);
+      await mouse('mouseReleased', click);
+      await until('the why panel for (254, 106)', () => b.evaluate("document.getElementById('why').dataset.pixel === '254,106'"));
+      const why = JSON.parse(await text('why'));
+      const want = JSON.parse(native(['why', 'explorer_triangle.json', '254', '106', '--json', '--shading', 'flat']).stdout);
+      assert.deepStrictEqual(why, want);
+      assert.ok(!white(254, 106), 'pixel (254, 106) is filled');
+    } finally {
+      for (let i = 0; i < 11; ++i) await wheel(at, 100);
+    }
+  });
+
   // Files go in through the page's file input, as a drop or a chooser gives them.
   const setFile = async (file) => {
     const { root } = await b.page('DOM.getDocument', {});

@@ -5,12 +5,13 @@ causes.
 """
 
 import dataclasses
+import functools
 
 import numpy as np
 
 import scantrace
 
-from . import diagnose, fill_models, hidden
+from . import diagnose, fill_models, hidden, scoring
 from .probes import (COLOURS, GOURAUD, PAIR_REGIONS, PAIRS, PAIRS_CORNER, PROBES,
                      SHARED_EDGE_FACES, SHARED_EDGE_SIZE)
 
@@ -23,6 +24,9 @@ class TestResult:
     output: str = ""
     visibility: str = "visible"
     verdict: str = ""       # the sandbox's verdict when the code did not run to the end
+    key: str = ""           # the rubric key ("" for a deduction)
+    weight: float | None = None   # the rubric's weight (None: a deduction, its own points)
+    fraction: float = 0.0   # how much of the test is right, in [0, 1] (scoring.py)
 
     @property
     def status(self):
@@ -135,49 +139,85 @@ class Battery:
         if self.scene is not None:
             self._scene_calls("course", self.scene, with_faces=True)
 
+    def drop_unweighted(self):
+        """Leaves out the calls of the tests the rubric weights 0: a test weighted 0 is not run.
+        (The probes with non-integer vertices run with the flat probes, scored or not.)"""
+        runs = self.rubric.runs
+        self.calls = [c for c in self.calls if any(runs(k) for k in _call_keys(c["id"]))]
+        if not runs("hidden_scene"):
+            self.hidden = []
+        self.course_tests = [k for k in ("course_scene", "course_faces")
+                             if self.scene is not None and runs(k)]
+
     # ---- scoring -----------------------------------------------------------------------------
     def grade(self, results):
         self.results = results
-        self._vector_interp()
-        self._probes_flat()
-        self._probes_gouraud()
-        self._probes_pairs()
+        self._references = {}      # (scene label, shading): the reference and what goes with it
+        runs = self.rubric.runs
+        if runs("vector_interp") or runs("vector_interp_degenerate"):
+            self._vector_interp()
+        if runs("probes_flat") or runs("probes_beyond"):
+            self._probes_flat()
+        if runs("probes_gouraud"):
+            self._probes_gouraud()
+        if runs("probes_pairs"):
+            self._probes_pairs()
         for k, scene in enumerate(self.hidden):
             for shading in ("f", "g"):
-                self._scene_test(f"hidden{k + 1}_render_{shading}", scene, shading,
-                                 f"Hidden scene {k + 1}: {_SHADING[shading]} (render_img)",
-                                 "hidden_scene", "after_published", painter=True)
-        if self.scene is not None:
-            for shading in ("f", "g"):
-                self._scene_test(f"course_render_{shading}", self.scene, shading,
+                self._scene_test(f"hidden{k + 1}_render_{shading}", (f"hidden{k + 1}", scene),
+                                 shading, f"Hidden scene {k + 1}: {_SHADING[shading]} "
+                                 "(render_img)", "hidden_scene", painter=True)
+        for shading in ("f", "g") if self.scene is not None else ():
+            if "course_scene" in self._course_tests():
+                self._scene_test(f"course_render_{shading}", ("course", self.scene), shading,
                                  f"Course scene: {_SHADING[shading]} (render_img)",
-                                 "course_scene", "visible", painter=True)
-                self._scene_test(f"course_faces_{shading}", self.scene, shading,
+                                 "course_scene", painter=True)
+            if "course_faces" in self._course_tests():
+                self._scene_test(f"course_faces_{shading}", ("course", self.scene), shading,
                                  f"Course scene face by face: {_SHADING[shading]} "
                                  f"({'f' if shading == 'f' else 'g'}_shading in the painter's "
-                                 "order)", "course_faces", "visible", painter=False)
+                                 "order)", "course_faces", painter=False)
+        scoring.allot(self.tests, self.rubric.total)
         return self.tests
 
+    def _course_tests(self):
+        return getattr(self, "course_tests", ("course_scene", "course_faces"))
+
     def _missing(self, name, key, func):
-        self.tests.append(TestResult(name, self.rubric.points(key), 0.0,
-                                     f"No function `{func}` was found in the submission.",
-                                     verdict="missing"))
+        self._add(name, key, 0.0, [f"No function `{func}` was found in the submission."],
+                  verdict="missing")
 
     def _failed_call(self, result):
-        text = f"**{result.status}**: {result.detail}"
-        return text if len(text) < 3000 else text[:3000] + " …"
+        from .report import student_text    # report imports nothing of the battery
+        detail = result.detail if len(result.detail) < 3000 else result.detail[:3000] + " …"
+        return f"**{result.status}**: " + student_text(detail)
 
-    def _add(self, name, key, fraction, lines, visibility="visible", verdict=""):
-        points = self.rubric.points(key)
-        self.tests.append(TestResult(name, points, round(points * fraction, 2),
-                                     "\n".join(lines), visibility, verdict))
+    def _add(self, name, key, fraction, lines, visibility=None, verdict=""):
+        """A test: its rubric key and the fraction of it that is right (scoring.allot turns the
+        weights into points once every test is in). The causes found while grading it, not yet
+        claimed by another test, are shown in its output (Cause.test)."""
+        self.tests.append(TestResult(name, 0.0, 0.0, "\n".join(lines),
+                                     visibility or self.rubric.visibility(key), verdict,
+                                     key=key, weight=self.rubric.points(key),
+                                     fraction=float(fraction)))
+        for c in self.causes:
+            if not c.test:
+                c.test = name
 
     def _vector_interp(self):
+        runs = self.rubric.runs
         if "vector_interp" not in self.functions:
-            self._missing("vector_interp: ordinary cases", "vector_interp", "vector_interp")
-            self._missing("vector_interp: degenerate cases", "vector_interp_degenerate",
-                          "vector_interp")
+            for name, key in (("vector_interp: ordinary cases", "vector_interp"),
+                              ("vector_interp: degenerate cases", "vector_interp_degenerate")):
+                if runs(key):
+                    self._missing(name, key, "vector_interp")
             return
+        if runs("vector_interp"):
+            self._vector_ordinary()
+        if runs("vector_interp_degenerate"):
+            self._vector_degenerate()
+
+    def _vector_ordinary(self):
         ok, lines, verdict = 0, [], ""
         for i, (text, args, _) in enumerate(VECTOR_CASES):
             r = self.results[f"vi_{i}"]
@@ -192,6 +232,8 @@ class Battery:
                              f"yours {np.round(r.value, 4).tolist()}")
         self._add("vector_interp: ordinary cases", "vector_interp", ok / len(VECTOR_CASES),
                   [f"{ok} of {len(VECTOR_CASES)} cases right."] + lines, verdict=verdict)
+
+    def _vector_degenerate(self):
         ok, lines, failures, verdict = 0, [], [], ""
         for j, (text, args, kind) in enumerate(VECTOR_DEGENERATE):
             r = self.results[f"vi_{len(VECTOR_CASES) + j}"]
@@ -209,10 +251,10 @@ class Battery:
                 failures.append((f"`vector_interp{tuple(args)}`",
                                  r.detail.strip().splitlines()[-1] if r.status != "ok"
                                  and r.detail.strip() else what))
+        self.causes += diagnose.diagnose_vector_interp(failures)
         self._add("vector_interp: degenerate cases", "vector_interp_degenerate",
                   ok / len(VECTOR_DEGENERATE),
                   [f"{ok} of {len(VECTOR_DEGENERATE)} cases right."] + lines, verdict=verdict)
-        self.causes += diagnose.diagnose_vector_interp(failures)
 
     def _probe_images(self, func, probes):
         images, lines, verdict = [], [], ""
@@ -253,37 +295,49 @@ class Battery:
             return self._missing(name, "probes_flat", "f_shading")
         images, lines, verdict = self._probe_images("f_shading", PROBES)
         mean = COLOURS.mean(axis=0)
-        ok = 0
+        credit = {}
         for probe, img in images:
             expected = fill_models.correct(probe.array, probe.size)
             got = diagnose.covered(img)
             colour_ok = not got.any() or np.abs(img[got] - mean).max() <= 2 / 255
-            if (got == expected).all() and colour_ok:
-                ok += 1
-            else:
-                n = int((got != expected).sum())
-                lines.append(f"- probe `{probe.name}` ({probe.what}): {n} pixels differ"
-                             + ("" if colour_ok else ", wrong colour"))
-        shared_ok, shared_line = self._shared_edge_flat()
-        ok += shared_ok
-        lines += shared_line
+            credit[probe.name] = scoring.flat_probe(expected, got, colour_ok)
+            if credit[probe.name] < 1:
+                lines.append(_flat_line(probe, expected, got, colour_ok, credit[probe.name]))
+        shared, shared_line = self._shared_edge_flat()
         self.causes += diagnose.diagnose_fill(
             [(p, diagnose.covered(img)) for p, img in images])
         self.causes += diagnose.diagnose_flat(images, COLOURS)
-        self._add(name, "probes_flat", ok / (len(PROBES) + 1),
-                  [f"{ok} of {len(PROBES) + 1} probes filled exactly (the last: two faces "
-                   "sharing an edge)."] + lines, verdict=verdict)
+        scored = [p.name for p in PROBES if p.integer]
+        beyond = [p.name for p in PROBES if not p.integer]
+        mine = [l for l in lines if not any(f"probe `{b}`" in l for b in beyond)]
+        theirs = [l for l in lines if l not in mine]
+        values = [credit.get(p, 0.0) for p in scored] + [shared]
+        head = (f"Credit {np.mean(values):.1%}: the mean over {len(values)} probes "
+                f"({len(scored)} triangles with integer vertices, one at a time, and the pair of "
+                f"faces sharing an edge, drawn one after the other); "
+                f"{sum(v >= 1 for v in values)} of the {len(values)} are exactly right.")
+        if self.rubric.runs("probes_beyond"):
+            self._add(name, "probes_flat", np.mean(values), [head] + mine + shared_line,
+                      verdict=verdict)
+            self._add("Probes beyond the assignment: non-integer vertices (f_shading)",
+                      "probes_beyond", np.mean([credit.get(b, 0.0) for b in beyond]),
+                      [f"{len(beyond)} probes whose vertices are not integers."] + theirs)
+        elif self.rubric.runs("probes_flat"):
+            note = ([f"Beyond the assignment, not scored ({len(beyond)} probes with non-integer "
+                     "vertices; the course's vertices are integers):"] + theirs) if theirs else []
+            self._add(name, "probes_flat", np.mean(values), [head] + mine + shared_line + note,
+                      verdict=verdict)
 
     def _shared_edge_flat(self):
         """f_shading on the two faces of the pairs' shared edge, one after the other on one
-        canvas: (1, []) when the canvas is the C++ fill's, else (0, [the line saying where])."""
-        r = self.results["f_shading_shared_edge"]
+        canvas, against the C++ fill's canvas: (credit, [the line saying where, if wrong])."""
+        r = self.results.get("f_shading_shared_edge")
         what = "probe pair `shared_edge` (f_shading on two faces sharing an edge)"
-        if r.status != "ok":
-            return 0, [f"- {what}: {self._failed_call(r)}"]
+        if r is None or r.status != "ok":
+            return 0.0, [f"- {what}: {self._failed_call(r)}"] if r is not None else []
         img, error = canvas(r.value, (*SHARED_EDGE_SIZE, 3))
         if img is None:
-            return 0, [f"- {what}: {error}"]
+            return 0.0, [f"- {what}: {error}"]
         if any(c.id == "transposed" for c in self.causes):
             img = np.ascontiguousarray(img.transpose(1, 0, 2))   # undone as on the probes
         reference = np.ones((*SHARED_EDGE_SIZE, 3))
@@ -291,35 +345,41 @@ class Battery:
             face = PAIRS["faces"][k]
             reference = scantrace.f_shading(reference, PAIRS["vertices"][face],
                                             PAIRS["vcolors"][face])
-        wrong = diagnose.channel_error(img, reference) > 1.5 / 255
-        if not wrong.any():
-            return 1, []
-        rows = np.flatnonzero(wrong.any(axis=1))
-        return 0, [f"- {what}: {int(wrong.sum())} pixels differ from the expected fill, first "
-                   f"on row {int(rows[0])} (each pixel of the shared edge belongs to one face "
-                   "only: the one whose left edge it is)"]
+        credit, n_wrong, counted = scoring.image_credit(img, reference,
+                                                        (reference == 1.0).all(axis=2))
+        if n_wrong == 0:
+            return 1.0, []
+        rows = np.flatnonzero((diagnose.channel_error(img, reference) > 1.5 / 255).any(axis=1))
+        return credit, [f"- {what}: {n_wrong} of its {counted} pixels differ from the expected "
+                        f"fill, first on row {int(rows[0])} (each pixel of the shared edge "
+                        f"belongs to one face only: the one whose left edge it is): {credit:.0%}"]
 
     def _probes_gouraud(self):
         name = "Probes: Gouraud fill (g_shading on single triangles)"
         if "g_shading" not in self.functions:
             return self._missing(name, "probes_gouraud", "g_shading")
         images, lines, verdict = self._probe_images("g_shading", GOURAUD)
-        ok = 0
+        credit = {}
         for probe, img in images:
             ref = scantrace.g_shading(np.ones((*probe.size, 3)), probe.array, COLOURS)
             expected, got = diagnose.covered(ref), diagnose.covered(img)
-            both = expected & got
-            error = float(np.abs(img[both] - ref[both]).max()) if both.any() else 0.0
-            if (expected == got).all() and error <= 0.02:
-                ok += 1
-            else:
+            colour_right = diagnose.channel_error(img, ref) <= 0.02
+            credit[probe.name] = scoring.gouraud_probe(expected, got, colour_right)
+            if credit[probe.name] < 1:
+                both = expected & got
+                error = float(np.abs(img[both] - ref[both]).max()) if both.any() else 0.0
                 lines.append(f"- probe `{probe.name}` ({probe.what}): "
-                             f"{int((expected != got).sum())} pixels filled differently, "
-                             f"largest colour error {error:.3f}")
+                             f"{int((expected != got).sum())} of {int((expected | got).sum())} "
+                             f"pixels filled differently, {int((both & ~colour_right).sum())} "
+                             f"with a colour off by more than 0.02 (the largest {error:.3f}): "
+                             f"{credit[probe.name]:.0%}")
         self.causes += diagnose.diagnose_gouraud(images, COLOURS, scantrace.g_shading)
-        self._add(name, "probes_gouraud", ok / len(GOURAUD),
-                  [f"{ok} of {len(GOURAUD)} probes filled and coloured right."] + lines,
-                  verdict=verdict)
+        values = [credit.get(p.name, 0.0) for p in GOURAUD]
+        self._add(name, "probes_gouraud", np.mean(values),
+                  [f"Credit {np.mean(values):.1%}: the mean over {len(values)} probes, each the "
+                   "share of its pixels filled and coloured right (a pixel filled with a wrong "
+                   f"colour counts half); {sum(v >= 1 for v in values)} of the {len(values)} are "
+                   "exactly right."] + lines, verdict=verdict)
 
     def _probes_pairs(self):
         """render_img on pairs of faces (probes.PAIRS): a shared edge, tied depths, distinct
@@ -334,56 +394,66 @@ class Battery:
         img, error = canvas(r.value, (512, 512, 3))
         if img is None:
             return self._add(name, "probes_pairs", 0.0, [f"`render_img` {error}."])
-        reference = scantrace.render_img(PAIRS["faces"], PAIRS["vertices"], PAIRS["vcolors"],
-                                         PAIRS["depth"], "f")
         # The pairs lie in the canvas's top-left corner: compared there only (a square, so a
         # transposed canvas is still the corner transposed), a tenth of the grader's time.
-        corner = (slice(0, PAIRS_CORNER), slice(0, PAIRS_CORNER))
-        alternatives = {k: v[corner] for k, v in _painter_alternatives(PAIRS, "f").items()}
+        refs = _pairs_references()
         fixed, causes = diagnose.diagnose_image(
-            np.ascontiguousarray(img[corner]), reference[corner],
-            _uncovered(PAIRS, "f", reference)[corner], alternatives)
-        reference = reference[corner]
+            np.ascontiguousarray(img[:PAIRS_CORNER, :PAIRS_CORNER]), refs["reference"],
+            refs["uncovered"], refs["alternatives"])
         self._add_causes(causes, "probe scene `pairs` (render_img, flat): ")
-        ok, lines = 0, []
-        for pair, what, faces, region in PAIR_REGIONS:
-            wrong = diagnose.channel_error(fixed[region], reference[region]) > 1.5 / 255
-            if not wrong.any():
-                ok += 1
-                continue
-            rows = np.flatnonzero(wrong.any(axis=1))
-            lines.append(f"- pair `{pair}` ({what}, faces {faces[0]} and {faces[1]}): "
-                         f"{int(wrong.sum())} pixels differ, first on row "
-                         f"{int(rows[0]) + (region[0].start or 0)}")
-        self._add(name, "probes_pairs", ok / len(PAIR_REGIONS),
-                  [f"{ok} of {len(PAIR_REGIONS)} pairs drawn exactly."] + lines)
+        values, lines = [], []
+        for (pair, what, faces, region), counts in zip(PAIR_REGIONS, refs["counted"]):
+            credit, n_wrong, counted = scoring.image_credit(
+                fixed[region], refs["reference"][region], ~counts[region])
+            values.append(credit)
+            if n_wrong:
+                wrong = diagnose.channel_error(fixed[region], refs["reference"][region]) > 1.5 / 255
+                rows = np.flatnonzero(wrong.any(axis=1))
+                lines.append(f"- pair `{pair}` ({what}, faces {faces[0]} and {faces[1]}): "
+                             f"{n_wrong} of its {counted} pixels differ, first on row "
+                             f"{int(rows[0]) + (region[0].start or 0)}: {credit:.0%}")
+        self._add(name, "probes_pairs", np.mean(values),
+                  [f"Credit {np.mean(values):.1%}: the mean over {len(values)} pairs, each the "
+                   "share of its pixels drawn right (of two overlapping faces, the pixels they "
+                   f"share: what the order decides); {sum(v >= 1 for v in values)} of the "
+                   f"{len(values)} are exactly right."] + lines)
 
-    def _scene_test(self, call_id, scene, shading, name, key, visibility, painter):
+    def _scene_test(self, call_id, labelled, shading, name, key, painter):
         func = "render_img" if painter else ("f_shading" if shading == "f" else "g_shading")
         if func not in self.functions:
             return self._missing(name, key, func)
         r = self.results[call_id]
         if r.status != "ok":
-            return self._add(name, key, 0.0, [self._failed_call(r)], visibility, r.status)
+            return self._add(name, key, 0.0, [self._failed_call(r)], verdict=r.status)
         img, error = canvas(r.value, (512, 512, 3))
         if img is None:
-            return self._add(name, key, 0.0, [f"`{func}` {error}."], visibility)
-        reference = scantrace.render_img(scene["faces"], scene["vertices"], scene["vcolors"],
-                                         scene["depth"], shading)
+            return self._add(name, key, 0.0, [f"`{func}` {error}."])
+        refs = self._scene_references(*labelled, shading, painter)
         fixed, causes = img, []
         if painter:
-            uncovered = _uncovered(scene, shading, reference)
-            fixed, causes = diagnose.diagnose_image(img, reference, uncovered,
-                                                    _painter_alternatives(scene, shading))
+            fixed, causes = diagnose.diagnose_image(img, refs["reference"], refs["uncovered"],
+                                                    refs["alternatives"])
             self._add_causes(causes, f"{name}: ")
-        mismatch = diagnose.image_mismatch(fixed, reference)
-        fraction = min(max((1 - mismatch - 0.8) / 0.2, 0.0), 1.0)
-        lines = [f"{mismatch:.2%} of the pixels differ from the reference"
-                 + (" (after undoing " + ", ".join(c.id for c in causes if c.id in
-                                                  ("transposed", "bgr", "background")) + ")"
-                    if any(c.id in ("transposed", "bgr", "background") for c in causes) else "")
-                 + "."]
-        self._add(name, key, fraction if mismatch > 0 else 1.0, lines, visibility)
+        credit, n_wrong, counted = scoring.image_credit(fixed, refs["reference"],
+                                                        refs["uncovered"])
+        undone = [c.id for c in causes if c.id in ("transposed", "bgr", "background")]
+        self._add(name, key, credit,
+                  [f"Credit {credit:.1%}: {counted - n_wrong:,} of the {counted:,} pixels that "
+                   "a face covers (in the reference or yours) are right"
+                   + (f" (after undoing {', '.join(undone)})" if undone else "") + "."])
+
+    def _scene_references(self, label, scene, shading, painter):
+        """The reference of a scene and shading, the pixels no face covers, and (for render_img)
+        the images of the painter's-order mistakes: rendered once per submission, whichever tests
+        use them."""
+        refs = self._references.setdefault((label, shading), {})
+        if "reference" not in refs:
+            refs["reference"] = scantrace.render_img(scene["faces"], scene["vertices"],
+                                                     scene["vcolors"], scene["depth"], shading)
+            refs["uncovered"] = _uncovered(scene, shading, refs["reference"])
+        if painter and "alternatives" not in refs:
+            refs["alternatives"] = _painter_alternatives(scene, shading)
+        return refs
 
     def _add_causes(self, causes, prefix):
         for c in causes:
@@ -413,3 +483,47 @@ def _painter_alternatives(scene, shading):
     reversed_order = scantrace.render_img(f, v, c, -np.asarray(d, np.float64), shading)
     ties_reversed = scantrace.render_img(f[::-1].copy(), v, c, d, shading)
     return {"order_reversed": reversed_order, "order_unstable_on_ties": ties_reversed}
+
+
+@functools.lru_cache(maxsize=1)
+def _pairs_references():
+    """The pairs probe's reference, uncovered pixels and painter's-order mistakes, in its corner:
+    the same for every submission, so computed once per grading process."""
+    corner = (slice(0, PAIRS_CORNER), slice(0, PAIRS_CORNER))
+    reference = scantrace.render_img(PAIRS["faces"], PAIRS["vertices"], PAIRS["vcolors"],
+                                     PAIRS["depth"], "f")
+    uncovered = _uncovered(PAIRS, "f", reference)[corner]
+    # What each pair is scored on: where its two faces overlap, the pixels the painter's order
+    # decides (a reversed order spoils all of them, not a sliver of the pair's area); two faces
+    # that only share an edge test the fill rule, on all their pixels.
+    counted = []
+    for _, _, faces, _ in PAIR_REGIONS:
+        a, b = (fill_models.correct(PAIRS["vertices"][PAIRS["faces"][f]].astype(float),
+                                    (PAIRS_CORNER, PAIRS_CORNER)) for f in faces)
+        counted.append(a & b if (a & b).any() else ~uncovered)
+    return {"reference": reference[corner], "uncovered": uncovered, "counted": counted,
+            "alternatives": {k: v[corner] for k, v in _painter_alternatives(PAIRS, "f").items()}}
+
+
+def _flat_line(probe, expected, got, colour_ok, credit):
+    """A flat probe not exactly right: its rows right, one pixel off and wrong, the first wrong
+    row, the colour, and its credit."""
+    right, near, counted = scoring.fill_rows(expected, got)
+    wrong_rows = np.flatnonzero((expected != got).any(axis=1))
+    first = f"the first wrong row {int(wrong_rows[0])}" if len(wrong_rows) else "every row right"
+    return (f"- probe `{probe.name}` ({probe.what}): {right} of its {counted} rows right, "
+            f"{near} with a span end one pixel off, {counted - right - near} wrong ({first})"
+            + ("" if colour_ok else "; wrong colour") + f": {credit:.0%}")
+
+
+def _call_keys(call_id):
+    """The rubric keys of the tests a call serves (a call is made when one of them runs)."""
+    if call_id.startswith("vi_"):
+        degenerate = int(call_id[3:]) >= len(VECTOR_CASES)
+        return ("vector_interp_degenerate",) if degenerate else ("vector_interp",)
+    if call_id.startswith("f_shading_"):
+        return ("probes_flat", "probes_beyond")
+    prefixes = (("g_shading_", "probes_gouraud"), ("pairs_", "probes_pairs"),
+                ("hidden", "hidden_scene"), ("course_render_", "course_scene"),
+                ("course_faces_", "course_faces"))
+    return tuple(k for p, k in prefixes if call_id.startswith(p)) or ("probes_flat",)

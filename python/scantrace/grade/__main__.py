@@ -24,7 +24,7 @@ run_autograder, the project's source and the grading options given with it (--hi
 --rubric, --scene, --module, the limits), for Gradescope's Ubuntu 24.04 image.
 
 Exit status: 0 every submission graded (whatever its score), 1 a submission could not be graded
-at all (or the sandbox cannot run here), 2 usage."""
+at all (or the sandbox cannot run here), 2 usage (a bad option or rubric)."""
 
 
 def _finite(text):
@@ -97,9 +97,9 @@ def main(argv=None):
         _parser().error("--memory-mb: expected a number >= 64")
     try:
         rubric = rubric_module.load(args.rubric)
-    except rubric_module.RubricError as e:
+    except rubric_module.RubricError as e:    # a usage error, as a bad option is
         print(f"scantrace grade: {e}", file=sys.stderr)
-        return 1
+        return 2
     if args.gradescope_zip:
         return _gradescope_zip(args)
     if not args.no_sandbox:

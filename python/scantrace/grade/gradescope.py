@@ -63,6 +63,19 @@ cmake -S scantrace -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=O
       -DPython_EXECUTABLE=/usr/bin/python3 "${launcher[@]}"
 cmake --build build -j"$(nproc)" --target _scantrace
 PYTHONPATH="$PWD/build/python" /usr/bin/python3 -c 'import scantrace.grade.grader'
+# The sandbox, checked now with the grader's own test (unless the zip was made with --no-sandbox):
+# an image where bwrap cannot make its namespaces fails here, once, with the reason, rather than
+# giving every student a score of 0 later.
+if ! grep -qx -- '--no-sandbox' grade_args; then
+  problem=$(PYTHONPATH="$PWD/build/python" /usr/bin/python3 -c \
+    'from scantrace.grade.sandbox import sandbox_problem; print(sandbox_problem() or "")')
+  if [ -n "$problem" ]; then
+    echo "setup.sh: the grader's sandbox cannot run in this image: $problem. Allow user" \
+         "namespaces, or make the zip with --no-sandbox (then the container is the only" \
+         "isolation: docs/grading.md)" >&2
+    exit 1
+  fi
+fi
 echo "setup.sh: scantrace's grader is built in $PWD/build/python"
 """
 

@@ -84,7 +84,7 @@ def image_credit(student, reference, uncovered):
 def allot(tests, total):
     """Shares the rubric's total over the tests that ran, in proportion to their weights, and sets
     each test's max_score and score (its fraction of that). The maxima are rounded to hundredths
-    by the largest remainder, so they add up to `total` exactly (Gradescope's total never changes
+    by the largest remainder (ties: the heavier test first), so they add up to `total` exactly (Gradescope's total never changes
     with the options). Deductions (weight None) keep their own points."""
     weighted = [t for t in tests if t.weight is not None]
     weights = sum(t.weight for t in weighted)
@@ -93,7 +93,11 @@ def allot(tests, total):
     exact = [t.weight * total * 100 / weights for t in weighted]
     cents = [int(e) for e in exact]
     short = round(total * 100) - sum(cents)
-    for k in sorted(range(len(exact)), key=lambda k: cents[k] - exact[k])[:max(short, 0)]:
+    # The largest remainders first; on a tie (up to rounding noise) the heavier test, then the
+    # earlier one.
+    order = sorted(range(len(exact)), key=lambda k: (round(cents[k] - exact[k], 6),
+                                                     -weighted[k].weight, k))
+    for k in order[:max(short, 0)]:
         cents[k] += 1
     for t, c in zip(weighted, cents):
         t.max_score = c / 100

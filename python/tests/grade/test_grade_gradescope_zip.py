@@ -127,3 +127,26 @@ def test_setup_sh_installs_what_the_debian_build_installs_and_the_docs_list():
     table = section[section.index("| packages |"):section.index("\n\n", section.index("| packages |"))]
     named = {w for cell in re.findall(r"`([^`]*)`", table) for w in cell.split()}
     assert set(ubuntu) <= named, set(ubuntu) - named
+
+
+@pytest.mark.parametrize("no_sandbox", [False, True])
+def test_setup_sh_stops_at_image_build_when_the_sandbox_cannot_run(tmp_path, no_sandbox):
+    """setup.sh's last step asks the built grader whether bwrap can make its namespaces (here a
+    stub package that says it cannot) and fails the image's build with that reason, unless the zip
+    was made with --no-sandbox."""
+    grade = tmp_path / "build" / "python" / "scantrace" / "grade"
+    grade.mkdir(parents=True)
+    (grade.parent / "__init__.py").write_text("")
+    (grade / "__init__.py").write_text("")
+    (grade / "sandbox.py").write_text("def sandbox_problem():\n"
+                                      "    return 'no user namespaces in this container'\n")
+    (tmp_path / "grade_args").write_text("--hidden-seed\n5\n" + ("--no-sandbox\n" * no_sandbox))
+    setup = gradescope.SETUP_SH.replace("@SANDBOX_CHECK@", gradescope.SANDBOX_CHECK)
+    assert gradescope.SANDBOX_CHECK in setup
+    r = subprocess.run(["bash", "-euo", "pipefail", "-c", gradescope.SANDBOX_CHECK],
+                       cwd=tmp_path, capture_output=True, text=True)
+    if no_sandbox:
+        assert r.returncode == 0, r.stderr
+    else:
+        assert r.returncode == 1
+        assert "no user namespaces in this container" in r.stderr and "--no-sandbox" in r.stderr

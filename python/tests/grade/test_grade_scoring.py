@@ -87,6 +87,7 @@ def test_the_total_is_shared_out_exactly():
 
 USUAL = ["span_end_rounding", "closed_rule", "bottom_row_dropped", "order_reversed",
          "transposed", "flat_colour_not_mean", "gouraud_weights_permuted"]
+FILL = ("span_end_rounding", "closed_rule", "bottom_row_dropped")
 BACKGROUND_099 = _line("CANVAS", "img = np.full((512, 512, 3), 0.99)")(CORRECT)
 
 
@@ -96,12 +97,22 @@ def test_one_usual_mistake_keeps_at_least_half(tmp_path, sandbox_ok, mistake):
     graded = grade_source(tmp_path, source)
     assert graded.max_score == 100
     assert 50 <= graded.score < 100, [(t.name, t.score, t.max_score) for t in graded.tests]
+    if mistake in FILL:
+        # A fill mistake leaves most of every probe right: each probe test keeps half its points
+        # (all-or-nothing probes gave these 0 to 6 of 20).
+        for t in graded.tests:
+            if t.name.startswith("Probes"):
+                assert t.score >= 0.5 * t.max_score, (t.name, t.score, t.output)
 
 
 def test_a_one_row_mistake_costs_less_than_a_reversed_order(tmp_path, sandbox_ok):
     one_row = grade_source(tmp_path, wrong_source("bottom_row_dropped"), name="a")
     reversed_order = grade_source(tmp_path, wrong_source("order_reversed"), name="b")
     assert one_row.score > reversed_order.score
+    # A reversed order spoils every pixel the order decides: the pairs probe's two overlapping
+    # pairs are scored on their overlap, and lose it all (the shared edge's pair is right).
+    pairs = next(t for t in reversed_order.tests if t.name.startswith("Probes: pairs"))
+    assert pairs.score == pytest.approx(pairs.max_score / 3, abs=0.01), pairs.output
     # The dropped row leaves most of each probe right: the fill tests keep 80 % and more.
     for t in one_row.tests:
         if t.name.startswith(("Probes: flat", "Probes: Gouraud")):
@@ -228,3 +239,22 @@ def test_class_html_flags_a_low_score_without_a_cause():
     flagged = flagged[:flagged.index("<h2>", 5)]
     assert "quiet" in flagged and "student_b" not in flagged
     assert "2/20" in page and "title='Probes: flat fill'" in page
+
+
+def test_weight_0_makes_no_call(tmp_path):
+    """The calls of a test weighted 0 are never made: the Gouraud probes' g_shading calls and
+    the hidden scenes' render_img calls are left out of the batch sent to the sandbox."""
+    from types import SimpleNamespace
+
+    from scantrace.grade.battery import Battery
+    rubric_file = tmp_path / "r.toml"
+    rubric_file.write_text("[tests]\nprobes_gouraud = 0\nhidden_scene = 0\n")
+    session = SimpleNamespace(input=lambda array: "npy", limits=SimpleNamespace(call_seconds=1))
+    functions = {"vector_interp": 1, "f_shading": 1, "g_shading": 1, "render_img": 1}
+    battery = Battery(session, functions, rubric.load(rubric_file), hidden_seed=3)
+    battery.build()
+    assert any(c["func"] == "g_shading" for c in battery.calls)      # built, then left out
+    battery.drop_unweighted()
+    assert not any(c["func"] == "g_shading" for c in battery.calls)
+    assert not any(c["id"].startswith("hidden") for c in battery.calls) and not battery.hidden
+    assert any(c["func"] == "f_shading" for c in battery.calls)

@@ -509,11 +509,11 @@ def _flat_line(probe, expected, got, colour_ok, credit):
     """A flat probe not exactly right: its rows right, one pixel off and wrong, the first wrong
     row, the colour, and its credit."""
     right, near, counted = scoring.fill_rows(expected, got)
-    wrong_rows = np.flatnonzero((expected != got).any(axis=1))
-    first = f"the first wrong row {int(wrong_rows[0])}" if len(wrong_rows) else "every row right"
+    not_right = np.flatnonzero((expected != got).any(axis=1))
+    first = f"; the first row not right: {int(not_right[0])}" if len(not_right) else ""
     return (f"- probe `{probe.name}` ({probe.what}): {right} of its {counted} rows right, "
-            f"{near} with a span end one pixel off, {counted - right - near} wrong ({first})"
-            + ("" if colour_ok else "; wrong colour") + f": {credit:.0%}")
+            f"{near} one pixel off at an end, {counted - right - near} wrong{first}"
+            + ("; wrong colour" if not colour_ok else "") + f": {credit:.0%}")
 
 
 def _call_keys(call_id):

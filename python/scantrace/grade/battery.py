@@ -317,8 +317,9 @@ class Battery:
                 f"faces sharing an edge, drawn one after the other); "
                 f"{sum(v >= 1 for v in values)} of the {len(values)} are exactly right.")
         if self.rubric.runs("probes_beyond"):
-            self._add(name, "probes_flat", np.mean(values), [head] + mine + shared_line,
-                      verdict=verdict)
+            if self.rubric.runs("probes_flat"):
+                self._add(name, "probes_flat", np.mean(values), [head] + mine + shared_line,
+                          verdict=verdict)
             self._add("Probes beyond the assignment: non-integer vertices (f_shading)",
                       "probes_beyond", np.mean([credit.get(b, 0.0) for b in beyond]),
                       [f"{len(beyond)} probes whose vertices are not integers."] + theirs)
@@ -407,8 +408,8 @@ class Battery:
                 fixed[region], refs["reference"][region], ~counts[region])
             values.append(credit)
             if n_wrong:
-                wrong = diagnose.channel_error(fixed[region], refs["reference"][region]) > 1.5 / 255
-                rows = np.flatnonzero(wrong.any(axis=1))
+                error = diagnose.channel_error(fixed[region], refs["reference"][region])
+                rows = np.flatnonzero((error > scoring.CLOSE).any(axis=1))
                 lines.append(f"- pair `{pair}` ({what}, faces {faces[0]} and {faces[1]}): "
                              f"{n_wrong} of its {counted} pixels differ, first on row "
                              f"{int(rows[0]) + (region[0].start or 0)}: {credit:.0%}")

@@ -67,9 +67,9 @@ PYTHONPATH="$PWD/build/python" /usr/bin/python3 -c 'import scantrace.grade.grade
 """
 
 # setup.sh's last step (a constant of its own so the tests can run it against a stub package).
-SANDBOX_CHECK = r"""# The sandbox, checked now with the grader's own test (unless the zip was made with --no-sandbox):
-# an image where bwrap cannot make its namespaces fails here, once, with the reason, rather than
-# giving every student a score of 0 later.
+SANDBOX_CHECK = r"""# The sandbox, checked now with the grader's own test (unless the zip was made
+# with --no-sandbox): an image where bwrap cannot make its namespaces fails here, once, with the
+# reason, rather than giving every student a score of 0 later.
 if ! grep -qx -- '--no-sandbox' grade_args; then
   problem=$(PYTHONPATH="$PWD/build/python" /usr/bin/python3 -c \
     'from scantrace.grade.sandbox import sandbox_problem; print(sandbox_problem() or "")')

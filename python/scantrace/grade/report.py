@@ -82,8 +82,14 @@ def results_json(graded):
               "visibility": t.visibility,
               **({"extra_data": {"verdict": t.verdict}} if t.verdict else {})}
              for t, n in zip(graded.tests, numbers(graded.tests))]
+    # A cause no test claimed (found after the last test) is shown in the top-level output,
+    # which students see too.
+    names = {t.name for t in graded.tests}
+    loose = [line for c in graded.causes if c.test not in names for line in _cause_feedback(c)]
     result = {"score": graded.score, "execution_time": round(graded.seconds, 2),
-              "output": graded.summary(), "output_format": "md", "visibility": "visible",
+              "output": "\n\n".join([graded.summary()] + (["\n".join(loose)] if loose else [])),
+              "output_format": "md",
+              "visibility": "visible",
               "stdout_visibility": "hidden", "tests": tests,
               "extra_data": {"max_score": graded.max_score,
                              "causes": [c.as_json() for c in graded.causes],

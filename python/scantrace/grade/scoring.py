@@ -84,8 +84,9 @@ def image_credit(student, reference, uncovered):
 def allot(tests, total):
     """Shares the rubric's total over the tests that ran, in proportion to their weights, and sets
     each test's max_score and score (its fraction of that). The maxima are rounded to hundredths
-    by the largest remainder (ties: the heavier test first), so they add up to `total` exactly (Gradescope's total never changes
-    with the options). Deductions (weight None) keep their own points."""
+    by the largest remainder (ties: the heavier test first), so they add up to `total` exactly:
+    Gradescope's total never changes with the options. Deductions (weight None) keep their own
+    points."""
     weighted = [t for t in tests if t.weight is not None]
     weights = sum(t.weight for t in weighted)
     if not weighted or weights <= 0:

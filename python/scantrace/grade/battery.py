@@ -451,7 +451,11 @@ class Battery:
         if "reference" not in refs:
             refs["reference"] = scantrace.render_img(scene["faces"], scene["vertices"],
                                                      scene["vcolors"], scene["depth"], shading)
-            refs["uncovered"] = _uncovered(scene, shading, refs["reference"])
+            # The pixels no face covers are the same in both shadings: found once per scene.
+            other = self._references.get((label, "g" if shading == "f" else "f"), {})
+            refs["uncovered"] = other.get("uncovered")
+            if refs["uncovered"] is None:
+                refs["uncovered"] = _uncovered(scene, shading, refs["reference"])
         if painter and "alternatives" not in refs:
             refs["alternatives"] = _painter_alternatives(scene, shading)
         return refs

@@ -109,10 +109,12 @@ def test_a_one_row_mistake_costs_less_than_a_reversed_order(tmp_path, sandbox_ok
     one_row = grade_source(tmp_path, wrong_source("bottom_row_dropped"), name="a")
     reversed_order = grade_source(tmp_path, wrong_source("order_reversed"), name="b")
     assert one_row.score > reversed_order.score
-    # A reversed order spoils every pixel the order decides: the pairs probe's two overlapping
-    # pairs are scored on their overlap, and lose it all (the shared edge's pair is right).
+    # A reversed order spoils every pixel the order decides: the pairs of distinct depths is
+    # scored on its overlap, and loses all of it (the shared edge's pair is right, and so is the
+    # tied pair: a stable ascending sort keeps ties in face order).
     pairs = next(t for t in reversed_order.tests if t.name.startswith("Probes: pairs"))
-    assert pairs.score == pytest.approx(pairs.max_score / 3, abs=0.01), pairs.output
+    assert pairs.score == pytest.approx(pairs.max_score * 2 / 3, abs=0.01), pairs.output
+    assert "pair `distinct_depths`" in pairs.output and pairs.output.endswith(": 0%")
     # The dropped row leaves most of each probe right: the fill tests keep 80 % and more.
     for t in one_row.tests:
         if t.name.startswith(("Probes: flat", "Probes: Gouraud")):

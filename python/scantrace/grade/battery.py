@@ -275,7 +275,7 @@ class Battery:
 
     def _untransposed(self, images):
         """Probe images written as img[x][y]: undone (the rest is graded) and named once."""
-        pairs = [(p, img, diagnose.covered(img), fill_models.correct(p.array, p.size))
+        pairs = [(p, img, diagnose.covered(img), expected_mask(p))
                  for p, img in images]
         straight = sum(int((got != want).sum()) for _, _, got, want in pairs)
         flipped = sum(int((got.T != want).sum()) for _, _, got, want in pairs)
@@ -297,7 +297,7 @@ class Battery:
         mean = COLOURS.mean(axis=0)
         credit = {}
         for probe, img in images:
-            expected = fill_models.correct(probe.array, probe.size)
+            expected = expected_mask(probe)
             got = diagnose.covered(img)
             colour_ok = not got.any() or np.abs(img[got] - mean).max() <= 2 / 255
             credit[probe.name] = scoring.flat_probe(expected, got, colour_ok)
@@ -488,6 +488,16 @@ def _painter_alternatives(scene, shading):
     reversed_order = scantrace.render_img(f, v, c, -np.asarray(d, np.float64), shading)
     ties_reversed = scantrace.render_img(f[::-1].copy(), v, c, d, shading)
     return {"order_reversed": reversed_order, "order_unstable_on_ties": ties_reversed}
+
+
+@functools.lru_cache(maxsize=None)
+def expected_mask(probe):
+    """A probe's exact fill (fill_models.correct, in exact arithmetic: the grader's slowest
+    Python), computed once per grading process: the probes are the same for every submission.
+    Read-only, as it is shared."""
+    mask = fill_models.correct(probe.array, probe.size)
+    mask.flags.writeable = False
+    return mask
 
 
 @functools.lru_cache(maxsize=1)

@@ -351,9 +351,9 @@ class Battery:
         if n_wrong == 0:
             return 1.0, []
         rows = np.flatnonzero((diagnose.channel_error(img, reference) > 1.5 / 255).any(axis=1))
-        return credit, [f"- {what}: {n_wrong} of its {counted} pixels differ from the expected "
-                        f"fill, first on row {int(rows[0])} (each pixel of the shared edge "
-                        f"belongs to one face only: the one whose left edge it is): {credit:.0%}"]
+        return credit, [f"- {what}, credit {credit:.0%}: {n_wrong} of its {counted} pixels differ "
+                        f"from the expected fill, first on row {int(rows[0])} (each pixel of the "
+                        "shared edge belongs to one face only: the one whose left edge it is)"]
 
     def _probes_gouraud(self):
         name = "Probes: Gouraud fill (g_shading on single triangles)"
@@ -369,11 +369,11 @@ class Battery:
             if credit[probe.name] < 1:
                 both = expected & got
                 error = float(np.abs(img[both] - ref[both]).max()) if both.any() else 0.0
-                lines.append(f"- probe `{probe.name}` ({probe.what}): "
-                             f"{int((expected != got).sum())} of {int((expected | got).sum())} "
-                             f"pixels filled differently, {int((both & ~colour_right).sum())} "
-                             f"with a colour off by more than 0.02 (the largest {error:.3f}): "
-                             f"{credit[probe.name]:.0%}")
+                lines.append(f"- probe `{probe.name}` ({probe.what}), credit "
+                             f"{credit[probe.name]:.0%}: {int((expected != got).sum())} of "
+                             f"{int((expected | got).sum())} pixels filled differently, "
+                             f"{int((both & ~colour_right).sum())} with a colour off by more "
+                             f"than 0.02 (the largest {error:.3f})")
         self.causes += diagnose.diagnose_gouraud(images, COLOURS, scantrace.g_shading)
         values = [credit.get(p.name, 0.0) for p in GOURAUD]
         self._add(name, "probes_gouraud", np.mean(values),
@@ -410,9 +410,9 @@ class Battery:
             if n_wrong:
                 error = diagnose.channel_error(fixed[region], refs["reference"][region])
                 rows = np.flatnonzero((error > scoring.CLOSE).any(axis=1))
-                lines.append(f"- pair `{pair}` ({what}, faces {faces[0]} and {faces[1]}): "
-                             f"{n_wrong} of its {counted} pixels differ, first on row "
-                             f"{int(rows[0]) + (region[0].start or 0)}: {credit:.0%}")
+                lines.append(f"- pair `{pair}` ({what}, faces {faces[0]} and {faces[1]}), credit "
+                             f"{credit:.0%}: {n_wrong} of its {counted} pixels differ, first on "
+                             f"row {int(rows[0]) + (region[0].start or 0)}")
         self._add(name, "probes_pairs", np.mean(values),
                   [f"Credit {np.mean(values):.1%}: the mean over {len(values)} pairs, each the "
                    "share of its pixels drawn right (of two overlapping faces, the pixels they "
@@ -525,10 +525,11 @@ def _flat_line(probe, expected, got, colour_ok, credit):
     row, the colour, and its credit."""
     right, near, counted = scoring.fill_rows(expected, got)
     not_right = np.flatnonzero((expected != got).any(axis=1))
-    first = f"; the first row not right: {int(not_right[0])}" if len(not_right) else ""
-    return (f"- probe `{probe.name}` ({probe.what}): {right} of its {counted} rows right, "
-            f"{near} one pixel off at an end, {counted - right - near} wrong{first}"
-            + ("; wrong colour" if not colour_ok else "") + f": {credit:.0%}")
+    first = f"; the first row not right is row {int(not_right[0])}" if len(not_right) else ""
+    return (f"- probe `{probe.name}` ({probe.what}), credit {credit:.0%}: {right} of its "
+            f"{counted} rows right, {near} one pixel off at an end, {counted - right - near} "
+            f"wrong{first}"
+            + ("; wrong colour" if not colour_ok else ""))
 
 
 def _call_keys(call_id):

@@ -114,7 +114,8 @@ def test_a_one_row_mistake_costs_less_than_a_reversed_order(tmp_path, sandbox_ok
     # tied pair: a stable ascending sort keeps ties in face order).
     pairs = next(t for t in reversed_order.tests if t.name.startswith("Probes: pairs"))
     assert pairs.score == pytest.approx(pairs.max_score * 2 / 3, abs=0.01), pairs.output
-    assert "pair `distinct_depths`" in pairs.output and pairs.output.endswith(": 0%")
+    assert ("pair `distinct_depths` (two overlapping faces, the farther drawn first, faces 4 "
+            "and 5), credit 0%") in pairs.output
     # The dropped row leaves most of each probe right: the fill tests keep 80 % and more.
     for t in one_row.tests:
         if t.name.startswith(("Probes: flat", "Probes: Gouraud")):

@@ -152,7 +152,9 @@ class Battery:
     # ---- scoring -----------------------------------------------------------------------------
     def grade(self, results):
         self.results = results
-        self._references = {}      # (scene label, shading): the reference and what goes with it
+        # (scene label, shading): the reference and what goes with it, kept only while the
+        # scene's tests use it (new 512 x 512 images kept alive cost page faults, not only memory).
+        self._references = {}
         runs = self.rubric.runs
         if runs("vector_interp") or runs("vector_interp_degenerate"):
             self._vector_interp()
@@ -167,6 +169,7 @@ class Battery:
                 self._scene_test(f"hidden{k + 1}_render_{shading}", (f"hidden{k + 1}", scene),
                                  shading, f"Hidden scene {k + 1}: {_SHADING[shading]} "
                                  "(render_img)", "hidden_scene", painter=True)
+                self._references.pop((f"hidden{k + 1}", shading), None)
         for shading in ("f", "g") if self.scene is not None else ():
             if "course_scene" in self._course_tests():
                 self._scene_test(f"course_render_{shading}", ("course", self.scene), shading,
@@ -177,6 +180,7 @@ class Battery:
                                  f"Course scene face by face: {_SHADING[shading]} "
                                  f"({'f' if shading == 'f' else 'g'}_shading in the painter's "
                                  "order)", "course_faces", painter=False)
+            self._references.pop(("course", shading), None)
         scoring.allot(self.tests, self.rubric.total)
         return self.tests
 
@@ -433,7 +437,7 @@ class Battery:
         fixed, causes = img, []
         if painter:
             fixed, causes = diagnose.diagnose_image(img, refs["reference"], refs["uncovered"],
-                                                    refs["alternatives"])
+                                                    refs.pop("alternatives"))
             self._add_causes(causes, f"{name}: ")
         credit, n_wrong, counted = scoring.image_credit(fixed, refs["reference"],
                                                         refs["uncovered"])
@@ -452,10 +456,10 @@ class Battery:
             refs["reference"] = scantrace.render_img(scene["faces"], scene["vertices"],
                                                      scene["vcolors"], scene["depth"], shading)
             # The pixels no face covers are the same in both shadings: found once per scene.
-            other = self._references.get((label, "g" if shading == "f" else "f"), {})
-            refs["uncovered"] = other.get("uncovered")
-            if refs["uncovered"] is None:
-                refs["uncovered"] = _uncovered(scene, shading, refs["reference"])
+            if (label, "uncovered") not in self._references:
+                self._references[(label, "uncovered")] = _uncovered(scene, shading,
+                                                                    refs["reference"])
+            refs["uncovered"] = self._references[(label, "uncovered")]
         if painter and "alternatives" not in refs:
             refs["alternatives"] = _painter_alternatives(scene, shading)
         return refs

@@ -11,7 +11,7 @@ import numpy as np
 
 import scantrace
 
-from . import diagnose, fill_models, hidden, scoring
+from . import diagnose, fill_models, hidden, report, scoring
 from .probes import (COLOURS, GOURAUD, PAIR_REGIONS, PAIRS, PAIRS_CORNER, PROBES,
                      SHARED_EDGE_FACES, SHARED_EDGE_SIZE)
 
@@ -192,9 +192,8 @@ class Battery:
                   verdict="missing")
 
     def _failed_call(self, result):
-        from .report import student_text    # report imports nothing of the battery
         detail = result.detail if len(result.detail) < 3000 else result.detail[:3000] + " …"
-        return f"**{result.status}**: " + student_text(detail)
+        return f"**{result.status}**: " + report.student_text(detail)
 
     def _add(self, name, key, fraction, lines, visibility=None, verdict=""):
         """A test: its rubric key and the fraction of it that is right (scoring.allot turns the

@@ -44,7 +44,8 @@ def _parser():
     p.add_argument("--jobs", type=int, default=1, metavar="INT",
                    help="submissions graded at once, each in its own sandbox (default 1)")
     p.add_argument("--rubric", metavar="R.toml",
-                   help="points per test and cause (default: the documented default rubric)")
+                   help="the total, each test's weight and visibility, the causes' deductions "
+                        "(default: the documented default rubric)")
     p.add_argument("--hidden-seed", type=int, metavar="INT",
                    help="generate the hidden scenes from this seed (never shown to the code)")
     p.add_argument("--scene", metavar="PATH",

@@ -3,7 +3,8 @@
 The zip holds, at its root (where Gradescope looks for them):
   setup.sh         run once as root when Gradescope builds the autograder's image: installs the
                    Ubuntu packages scantrace needs to build (and bubblewrap), builds the Python
-                   package from the source below into /autograder/source/build/python;
+                   package from the source below into /autograder/source/build/python, and
+                   (unless --no-sandbox) fails there if bwrap cannot make its namespaces;
   run_autograder   run as root for each submission: grades /autograder/submission with the
                    options baked in below and leaves /autograder/results/results.json (always:
                    when the grader itself fails, a results.json saying why, score 0);

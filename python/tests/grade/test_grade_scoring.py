@@ -88,6 +88,7 @@ def test_the_total_is_shared_out_exactly():
 USUAL = ["span_end_rounding", "closed_rule", "bottom_row_dropped", "order_reversed",
          "transposed", "flat_colour_not_mean", "gouraud_weights_permuted"]
 FILL = ("span_end_rounding", "closed_rule", "bottom_row_dropped")
+COLOUR = {"flat_colour_not_mean": "Probes: flat", "gouraud_weights_permuted": "Probes: Gouraud"}
 BACKGROUND_099 = _line("CANVAS", "img = np.full((512, 512, 3), 0.99)")(CORRECT)
 
 
@@ -103,6 +104,10 @@ def test_one_usual_mistake_keeps_at_least_half(tmp_path, sandbox_ok, mistake):
         for t in graded.tests:
             if t.name.startswith("Probes"):
                 assert t.score >= 0.5 * t.max_score, (t.name, t.score, t.output)
+    if mistake in COLOUR:
+        # A wrong colour on the right pixels keeps half of its probes' points (they were 2 and 0).
+        t = next(t for t in graded.tests if t.name.startswith(COLOUR[mistake]))
+        assert 0.5 * t.max_score <= t.score < t.max_score, (t.name, t.score, t.output)
 
 
 def test_a_one_row_mistake_costs_less_than_a_reversed_order(tmp_path, sandbox_ok):

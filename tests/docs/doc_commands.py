@@ -122,6 +122,11 @@ NOT_RUN = {
     "echo $?": "prints the previous command's status, which RUN checks",
     "scantrace grade subs/* -o class-out --jobs 2 --hidden-seed 2024": "needs a folder of "
         "submissions; python/tests/grade/test_grade_class.py grades a generated class of 30",
+    "PYTHONPATH=build/python python3 -c 'import resource, sys; from scantrace.grade.__main__ "
+    "import main; main(sys.argv[1:]); r = resource.getrusage(resource.RUSAGE_SELF); "
+    "print(f\"grader CPU {r.ru_utime + r.ru_stime:.2f} s\")' docs/grading/student_hw1.py -o "
+    "graded-hw1 --hidden-seed 2024 --quiet": "a measurement (its figures are in the table "
+    "below it); the grade command above runs the same grading",
 }
 
 PROGRAMS = ("build/cli/scantrace", "scantrace", "bash", "cmake", "python3", "PYTHONPATH=",

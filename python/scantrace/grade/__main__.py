@@ -27,7 +27,7 @@ run_autograder, the project's source and the grading options given with it (--hi
 --rubric, --scene, --module, the limits), for Gradescope's Ubuntu 24.04 image.
 
 Exit status: 0 every submission graded (whatever its score), 1 a submission could not be graded
-at all (or the sandbox cannot run here), 2 usage."""
+at all (or the sandbox cannot run here), 2 usage (a bad option or rubric)."""
 
 
 def _finite(text):
@@ -47,7 +47,8 @@ def _parser():
     p.add_argument("--jobs", type=int, default=1, metavar="INT",
                    help="submissions graded at once, each in its own sandbox (default 1)")
     p.add_argument("--rubric", metavar="R.toml",
-                   help="points per test and cause (default: the documented default rubric)")
+                   help="the total, each test's weight and visibility, the causes' deductions "
+                        "(default: the documented default rubric)")
     p.add_argument("--hidden-seed", type=int, metavar="INT",
                    help="generate the hidden scenes from this seed (never shown to the code)")
     p.add_argument("--scene", metavar="PATH",
@@ -118,9 +119,9 @@ def _main(args):
         _parser().error("--memory-mb: expected a number >= 64")
     try:
         rubric = rubric_module.load(args.rubric)
-    except rubric_module.RubricError as e:
+    except rubric_module.RubricError as e:    # a usage error, as a bad option is
         print(f"scantrace grade: {e}", file=sys.stderr)
-        return 1
+        return 2
     if args.gradescope_zip:
         return _gradescope_zip(args)
     if not args.no_sandbox:

@@ -5,12 +5,13 @@ causes.
 """
 
 import dataclasses
+import functools
 
 import numpy as np
 
 import scantrace
 
-from . import diagnose, fill_models, hidden, untrusted
+from . import diagnose, fill_models, hidden, scoring, untrusted
 from .probes import (COLOURS, GOURAUD, PAIR_REGIONS, PAIRS, PAIRS_CORNER, PROBES,
                      SHARED_EDGE_FACES, SHARED_EDGE_SIZE)
 
@@ -24,6 +25,9 @@ class TestResult:
     visibility: str = "visible"
     verdict: str = ""       # the sandbox's verdict when the code did not run to the end
     probes: list = dataclasses.field(default_factory=list)   # ProbeOutcome of each probe
+    key: str = ""           # the rubric key ("" for a deduction)
+    weight: float | None = None   # the rubric's weight (None: a deduction, its own points)
+    fraction: float = 0.0   # how much of the test is right, in [0, 1] (scoring.py)
 
     @property
     def status(self):
@@ -190,38 +194,62 @@ class Battery:
             if adapter:
                 call["adapter"] = adapter
 
+    def drop_unweighted(self):
+        """Leaves out the calls of the tests the rubric weights 0: a test weighted 0 is not run.
+        (The probes with non-integer vertices run with the flat probes, scored or not.)"""
+        runs = self.rubric.runs
+        self.calls = [c for c in self.calls if any(runs(k) for k in _call_keys(c["id"]))]
+        if not runs("hidden_scene"):
+            self.hidden = []
+        self.course_tests = [k for k in ("course_scene", "course_faces")
+                             if self.scene is not None and runs(k)]
+
     # ---- scoring -----------------------------------------------------------------------------
     def grade(self, results):
         self.results = results
         self.causes += diagnose.diagnose_api(self.functions)
-        self._vector_interp()
-        self._probes_flat()
-        self._probes_gouraud()
-        self._probes_pairs()
+        # (scene label, shading): the reference and what goes with it, kept only while the
+        # scene's tests use it (new 512 x 512 images kept alive cost page faults, not only memory).
+        self._references = {}
+        runs = self.rubric.runs
+        if runs("vector_interp") or runs("vector_interp_degenerate"):
+            self._vector_interp()
+        if runs("probes_flat") or runs("probes_beyond"):
+            self._probes_flat()
+        if runs("probes_gouraud"):
+            self._probes_gouraud()
+        if runs("probes_pairs"):
+            self._probes_pairs()
         for k, scene in enumerate(self.hidden):
             for shading in ("f", "g"):
-                self._scene_test(f"hidden{k + 1}_render_{shading}", scene, shading,
-                                 f"Hidden scene {k + 1}: {_SHADING[shading]} (render_img)",
-                                 "hidden_scene", "after_published", painter=True)
-        if self.scene is not None:
-            for shading in ("f", "g"):
-                self._scene_test(f"course_render_{shading}", self.scene, shading,
+                self._scene_test(f"hidden{k + 1}_render_{shading}", (f"hidden{k + 1}", scene),
+                                 shading, f"Hidden scene {k + 1}: {_SHADING[shading]} "
+                                 "(render_img)", "hidden_scene", painter=True)
+                self._references.pop((f"hidden{k + 1}", shading), None)
+        for shading in ("f", "g") if self.scene is not None else ():
+            if "course_scene" in self._course_tests():
+                self._scene_test(f"course_render_{shading}", ("course", self.scene), shading,
                                  f"Course scene: {_SHADING[shading]} (render_img)",
-                                 "course_scene", "visible", painter=True)
-                self._scene_test(f"course_faces_{shading}", self.scene, shading,
+                                 "course_scene", painter=True)
+            if "course_faces" in self._course_tests():
+                self._scene_test(f"course_faces_{shading}", ("course", self.scene), shading,
                                  f"Course scene face by face: {_SHADING[shading]} "
                                  f"({'f' if shading == 'f' else 'g'}_shading in the painter's "
-                                 "order)", "course_faces", "visible", painter=False)
+                                 "order)", "course_faces", painter=False)
+            self._references.pop(("course", shading), None)
         # A verdict on a probe beyond the assignment (a loop never reaching a float end) is in
         # that probe's line, not a cause: the course never passes such vertices.
         self.causes += diagnose.diagnose_verdicts(
             results, [c for c in self.calls if c["id"] not in self.beyond])
+        scoring.allot(self.tests, self.rubric.total)
         return self.tests
 
+    def _course_tests(self):
+        return getattr(self, "course_tests", ("course_scene", "course_faces"))
+
     def _missing(self, name, key, func):
-        self.tests.append(TestResult(name, self.rubric.points(key), 0.0,
-                                     f"No function `{func}` was found in the submission.",
-                                     verdict="missing"))
+        self._add(name, key, 0.0, [f"No function `{func}` was found in the submission."],
+                  verdict="missing")
 
     def _failed_call(self, result):
         detail = result.detail if len(result.detail) < 3000 else result.detail[:3000] + " …"
@@ -244,17 +272,32 @@ class Battery:
             lines.append(f"- {head}: {self._failed_call(members[0][1])}")
         return lines
 
-    def _add(self, name, key, fraction, lines, visibility="visible", verdict=""):
-        points = self.rubric.points(key)
-        self.tests.append(TestResult(name, points, round(points * fraction, 2),
-                                     "\n".join(lines), visibility, verdict))
+    def _add(self, name, key, fraction, lines, visibility=None, verdict=""):
+        """A test: its rubric key and the fraction of it that is right (scoring.allot turns the
+        weights into points once every test is in). The causes found while grading it, not yet
+        claimed by another test, are shown in its output (Cause.test)."""
+        self.tests.append(TestResult(name, 0.0, 0.0, "\n".join(lines),
+                                     visibility or self.rubric.visibility(key), verdict,
+                                     key=key, weight=self.rubric.points(key),
+                                     fraction=float(fraction)))
+        for c in self.causes:
+            if not c.test:
+                c.test = name
 
     def _vector_interp(self):
+        runs = self.rubric.runs
         if "vector_interp" not in self.functions:
-            self._missing("vector_interp: ordinary cases", "vector_interp", "vector_interp")
-            self._missing("vector_interp: degenerate cases", "vector_interp_degenerate",
-                          "vector_interp")
+            for name, key in (("vector_interp: ordinary cases", "vector_interp"),
+                              ("vector_interp: degenerate cases", "vector_interp_degenerate")):
+                if runs(key):
+                    self._missing(name, key, "vector_interp")
             return
+        if runs("vector_interp"):
+            self._vector_ordinary()
+        if runs("vector_interp_degenerate"):
+            self._vector_degenerate()
+
+    def _vector_ordinary(self):
         ok, lines, verdict, failed = 0, [], "", []
         for i, (text, args, _) in enumerate(VECTOR_CASES):
             r = self.results[f"vi_{i}"]
@@ -272,7 +315,11 @@ class Battery:
                   [f"{ok} of {len(VECTOR_CASES)} cases right."] + self._failure_lines(failed)
                   + lines, verdict=verdict)
         # An exception the ordinary cases raise too is not the degenerate case's own failure.
-        ordinary = {r.detail.strip().splitlines()[-1] for _, r in failed if r.detail.strip()}
+        self._ordinary_failures = {r.detail.strip().splitlines()[-1] for _, r in failed
+                                   if r.detail.strip()}
+
+    def _vector_degenerate(self):
+        ordinary = getattr(self, "_ordinary_failures", set())
         ok, lines, failures, verdict = 0, [], [], ""
         for j, (text, args, kind) in enumerate(VECTOR_DEGENERATE):
             r = self.results[f"vi_{len(VECTOR_CASES) + j}"]
@@ -291,10 +338,10 @@ class Battery:
                 failures.append((f"`vector_interp{show_args(args)}`",
                                  untrusted.md_code(r.detail.strip().splitlines()[-1])
                                  if r.status != "ok" and r.detail.strip() else what))
+        self.causes += diagnose.diagnose_vector_interp(failures)
         self._add("vector_interp: degenerate cases", "vector_interp_degenerate",
                   ok / len(VECTOR_DEGENERATE),
                   [f"{ok} of {len(VECTOR_DEGENERATE)} cases right."] + lines, verdict=verdict)
-        self.causes += diagnose.diagnose_vector_interp(failures)
 
     def _probe_images(self, func, probes):
         """The probes' canvases, and for the probes without one their outcome and lines."""
@@ -318,7 +365,7 @@ class Battery:
 
     def _untransposed(self, images):
         """Probe images written as img[x][y]: undone (the rest is graded) and named once."""
-        pairs = [(p, img, diagnose.covered(img), fill_models.correct(p.array, p.size))
+        pairs = [(p, img, diagnose.covered(img), expected_mask(p))
                  for p, img in images]
         straight = sum(int((got != want).sum()) for _, _, got, want in pairs)
         flipped = sum(int((got.T != want).sum()) for _, _, got, want in pairs)
@@ -338,42 +385,56 @@ class Battery:
             return self._missing(name, "probes_flat", "f_shading")
         images, lines, verdict, outcomes = self._probe_images("f_shading", PROBES)
         mean = COLOURS.mean(axis=0)
-        ok = 0
+        credit = {}
         for probe, img in images:
-            expected = fill_models.correct(probe.array, probe.size)
+            expected = expected_mask(probe)
             got = diagnose.covered(img)
             colour_ok = not got.any() or np.abs(img[got] - mean).max() <= 2 / 255
+            credit[probe.name] = scoring.flat_probe(expected, got, colour_ok)
             row = diagnose.first_wrong_row(got, expected)
             outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer,
                                                 not row and colour_ok, first_wrong_row=row)
-            if not row and colour_ok:
-                ok += 1
-            else:
-                n = int((got != expected).sum())
-                lines.append(f"- probe `{probe.name}` ({probe.what}){_domain(probe)}: {n} pixels "
-                             "differ" + (f"; {row}" if row else "")
-                             + ("" if colour_ok else ", wrong colour"))
-        shared_ok, shared_line = self._shared_edge_flat()
-        ok += shared_ok
-        lines += shared_line
+            if credit[probe.name] < 1:
+                lines.append(_flat_line(probe, expected, got, colour_ok, credit[probe.name], row))
+        shared, shared_line = self._shared_edge_flat()
         self.causes += diagnose.diagnose_fill(
             [(p, diagnose.covered(img)) for p, img in images])
         self.causes += diagnose.diagnose_flat(images, COLOURS)
-        self._add(name, "probes_flat", ok / (len(PROBES) + 1),
-                  [f"{ok} of {len(PROBES) + 1} probes filled exactly (the last: two faces "
-                   "sharing an edge)."] + lines, verdict=verdict)
-        self.tests[-1].probes = [outcomes[p.name] for p in PROBES]
+        scored = [p.name for p in PROBES if p.integer]
+        beyond = [p.name for p in PROBES if not p.integer]
+        mine = [l for l in lines if not any(f"probe `{b}`" in l for b in beyond)]
+        theirs = [l for l in lines if l not in mine]
+        values = [credit.get(p, 0.0) for p in scored] + [shared]
+        head = (f"Credit {np.mean(values):.1%}: the mean over {len(values)} probes "
+                f"({len(scored)} triangles with integer vertices, one at a time, and the pair of "
+                f"faces sharing an edge, drawn one after the other); "
+                f"{sum(v >= 1 for v in values)} of the {len(values)} are exactly right.")
+        if self.rubric.runs("probes_beyond"):
+            if self.rubric.runs("probes_flat"):
+                self._add(name, "probes_flat", np.mean(values), [head] + mine + shared_line,
+                          verdict=verdict)
+            self._add("Probes beyond the assignment: non-integer vertices (f_shading)",
+                      "probes_beyond", np.mean([credit.get(b, 0.0) for b in beyond]),
+                      [f"{len(beyond)} probes whose vertices are not integers."] + theirs)
+        elif self.rubric.runs("probes_flat"):
+            note = ([f"Beyond the assignment, not scored ({len(beyond)} probes with non-integer "
+                     "vertices; the course's vertices are integers):"] + theirs) if theirs else []
+            self._add(name, "probes_flat", np.mean(values), [head] + mine + shared_line + note,
+                      verdict=verdict)
+        for test in self.tests:
+            if test.key in ("probes_flat", "probes_beyond"):
+                test.probes = [outcomes[p.name] for p in PROBES if p.name in outcomes]
 
     def _shared_edge_flat(self):
         """f_shading on the two faces of the pairs' shared edge, one after the other on one
-        canvas: (1, []) when the canvas is the C++ fill's, else (0, [the line saying where])."""
-        r = self.results["f_shading_shared_edge"]
+        canvas, against the C++ fill's canvas: (credit, [the line saying where, if wrong])."""
+        r = self.results.get("f_shading_shared_edge")
         what = "probe pair `shared_edge` (f_shading on two faces sharing an edge)"
-        if r.status != "ok":
-            return 0, [f"- {what}: {self._failed_call(r)}"]
+        if r is None or r.status != "ok":
+            return 0.0, [f"- {what}: {self._failed_call(r)}"] if r is not None else []
         img, error = canvas(r.value, (*SHARED_EDGE_SIZE, 3))
         if img is None:
-            return 0, [f"- {what}: {error}"]
+            return 0.0, [f"- {what}: {error}"]
         if any(c.id == "transposed" for c in self.causes):
             img = np.ascontiguousarray(img.transpose(1, 0, 2))   # undone as on the probes
         reference = np.ones((*SHARED_EDGE_SIZE, 3))
@@ -381,40 +442,45 @@ class Battery:
             face = PAIRS["faces"][k]
             reference = scantrace.f_shading(reference, PAIRS["vertices"][face],
                                             PAIRS["vcolors"][face])
-        wrong = diagnose.channel_error(img, reference) > 1.5 / 255
-        if not wrong.any():
-            return 1, []
-        rows = np.flatnonzero(wrong.any(axis=1))
-        return 0, [f"- {what}: {int(wrong.sum())} pixels differ from the expected fill, first "
-                   f"on row {int(rows[0])} (each pixel of the shared edge belongs to one face "
-                   "only: the one whose left edge it is)"]
+        credit, n_wrong, counted = scoring.image_credit(img, reference,
+                                                        (reference == 1.0).all(axis=2))
+        if n_wrong == 0:
+            return 1.0, []
+        rows = np.flatnonzero((diagnose.channel_error(img, reference) > 1.5 / 255).any(axis=1))
+        return credit, [f"- {what}, credit {credit:.0%}: {n_wrong} of its {counted} pixels differ "
+                        f"from the expected fill, first on row {int(rows[0])} (each pixel of the "
+                        "shared edge belongs to one face only: the one whose left edge it is)"]
 
     def _probes_gouraud(self):
         name = "Probes: Gouraud fill (g_shading on single triangles)"
         if "g_shading" not in self.functions:
             return self._missing(name, "probes_gouraud", "g_shading")
         images, lines, verdict, outcomes = self._probe_images("g_shading", GOURAUD)
-        ok = 0
+        credit = {}
         for probe, img in images:
             ref = scantrace.g_shading(np.ones((*probe.size, 3)), probe.array, COLOURS)
             expected, got = diagnose.covered(ref), diagnose.covered(img)
-            both = expected & got
-            error = float(np.abs(img[both] - ref[both]).max()) if both.any() else 0.0
+            colour_right = diagnose.channel_error(img, ref) <= 0.02
+            credit[probe.name] = scoring.gouraud_probe(expected, got, colour_right)
             row = diagnose.first_wrong_row(got, expected)
             outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer,
-                                                not row and error <= 0.02, first_wrong_row=row)
-            if not row and error <= 0.02:
-                ok += 1
-            else:
-                lines.append(f"- probe `{probe.name}` ({probe.what}){_domain(probe)}: "
-                             f"{int((expected != got).sum())} pixels filled differently"
-                             + (f" ({row})" if row else "")
-                             + f", largest colour error {error:.3f}")
+                                                credit[probe.name] >= 1, first_wrong_row=row)
+            if credit[probe.name] < 1:
+                both = expected & got
+                error = float(np.abs(img[both] - ref[both]).max()) if both.any() else 0.0
+                lines.append(f"- probe `{probe.name}` ({probe.what}), credit "
+                             f"{credit[probe.name]:.0%}: {int((expected != got).sum())} of "
+                             f"{int((expected | got).sum())} pixels filled differently, "
+                             f"{int((both & ~colour_right).sum())} with a colour off by more "
+                             f"than 0.02 (the largest {error:.3f})" + (f"; {row}" if row else ""))
         self.causes += diagnose.diagnose_gouraud(images, COLOURS, scantrace.g_shading)
-        self._add(name, "probes_gouraud", ok / len(GOURAUD),
-                  [f"{ok} of {len(GOURAUD)} probes filled and coloured right."] + lines,
-                  verdict=verdict)
-        self.tests[-1].probes = [outcomes[p.name] for p in GOURAUD]
+        values = [credit.get(p.name, 0.0) for p in GOURAUD]
+        self._add(name, "probes_gouraud", np.mean(values),
+                  [f"Credit {np.mean(values):.1%}: the mean over {len(values)} probes, each the "
+                   "share of its pixels filled and coloured right (a pixel filled with a wrong "
+                   f"colour counts half); {sum(v >= 1 for v in values)} of the {len(values)} are "
+                   "exactly right."] + lines, verdict=verdict)
+        self.tests[-1].probes = [outcomes[p.name] for p in GOURAUD if p.name in outcomes]
 
     def _probes_pairs(self):
         """render_img on pairs of faces (probes.PAIRS): a shared edge, tied depths, distinct
@@ -429,56 +495,72 @@ class Battery:
         img, error = canvas(r.value, (512, 512, 3))
         if img is None:
             return self._add(name, "probes_pairs", 0.0, [f"`render_img` {error}."])
-        reference = scantrace.render_img(PAIRS["faces"], PAIRS["vertices"], PAIRS["vcolors"],
-                                         PAIRS["depth"], "f")
         # The pairs lie in the canvas's top-left corner: compared there only (a square, so a
         # transposed canvas is still the corner transposed), a tenth of the grader's time.
-        corner = (slice(0, PAIRS_CORNER), slice(0, PAIRS_CORNER))
-        alternatives = {k: v[corner] for k, v in _painter_alternatives(PAIRS, "f").items()}
+        refs = _pairs_references()
         fixed, causes = diagnose.diagnose_image(
-            np.ascontiguousarray(img[corner]), reference[corner],
-            _uncovered(PAIRS, "f", reference)[corner], alternatives)
-        reference = reference[corner]
+            np.ascontiguousarray(img[:PAIRS_CORNER, :PAIRS_CORNER]), refs["reference"],
+            refs["uncovered"], refs["alternatives"])
         self._add_causes(causes, "probe scene `pairs` (render_img, flat): ")
-        ok, lines = 0, []
-        for pair, what, faces, region in PAIR_REGIONS:
-            wrong = diagnose.channel_error(fixed[region], reference[region]) > 1.5 / 255
-            if not wrong.any():
-                ok += 1
-                continue
-            rows = np.flatnonzero(wrong.any(axis=1))
-            lines.append(f"- pair `{pair}` ({what}, faces {faces[0]} and {faces[1]}): "
-                         f"{int(wrong.sum())} pixels differ, first on row "
-                         f"{int(rows[0]) + (region[0].start or 0)}")
-        self._add(name, "probes_pairs", ok / len(PAIR_REGIONS),
-                  [f"{ok} of {len(PAIR_REGIONS)} pairs drawn exactly."] + lines)
+        values, lines = [], []
+        for (pair, what, faces, region), counts in zip(PAIR_REGIONS, refs["counted"]):
+            credit, n_wrong, counted = scoring.image_credit(
+                fixed[region], refs["reference"][region], ~counts[region])
+            values.append(credit)
+            if n_wrong:
+                error = diagnose.channel_error(fixed[region], refs["reference"][region])
+                rows = np.flatnonzero((error > scoring.CLOSE).any(axis=1))
+                lines.append(f"- pair `{pair}` ({what}, faces {faces[0]} and {faces[1]}), credit "
+                             f"{credit:.0%}: {n_wrong} of its {counted} pixels differ, first on "
+                             f"row {int(rows[0]) + (region[0].start or 0)}")
+        self._add(name, "probes_pairs", np.mean(values),
+                  [f"Credit {np.mean(values):.1%}: the mean over {len(values)} pairs, each the "
+                   "share of its pixels drawn right (of two overlapping faces, the pixels they "
+                   f"share: what the order decides); {sum(v >= 1 for v in values)} of the "
+                   f"{len(values)} are exactly right."] + lines)
 
-    def _scene_test(self, call_id, scene, shading, name, key, visibility, painter):
+    def _scene_test(self, call_id, labelled, shading, name, key, painter):
         func = "render_img" if painter else ("f_shading" if shading == "f" else "g_shading")
         if func not in self.functions:
             return self._missing(name, key, func)
         r = self.results[call_id]
         if r.status != "ok":
-            return self._add(name, key, 0.0, [self._failed_call(r)], visibility, r.status)
+            return self._add(name, key, 0.0, [self._failed_call(r)], verdict=r.status)
         img, error = canvas(r.value, (512, 512, 3))
         if img is None:
-            return self._add(name, key, 0.0, [f"`{func}` {error}."], visibility)
-        reference = scantrace.render_img(scene["faces"], scene["vertices"], scene["vcolors"],
-                                         scene["depth"], shading)
+            return self._add(name, key, 0.0, [f"`{func}` {error}."])
+        refs = self._scene_references(*labelled, shading, painter)
         # The whole-image mistakes are undone in every image test, face by face included (the
         # order's alternatives only where the student's own render_img chose the order).
-        uncovered = _uncovered(scene, shading, reference)
-        fixed, causes = diagnose.diagnose_image(
-            img, reference, uncovered, _painter_alternatives(scene, shading) if painter else {})
+        fixed, causes = diagnose.diagnose_image(img, refs["reference"], refs["uncovered"],
+                                                refs.pop("alternatives") if painter else {})
         self._add_causes(causes, f"{name}: ")
-        mismatch = diagnose.image_mismatch(fixed, reference)
-        fraction = min(max((1 - mismatch - 0.8) / 0.2, 0.0), 1.0)
+        credit, n_wrong, counted = scoring.image_credit(fixed, refs["reference"],
+                                                        refs["uncovered"])
         undone = [c.id for c in causes if c.id in ("transposed", "bgr", "background")]
         if r.value.max() > 1.5:
             undone.append("the 0–255 range of the painted pixels")
-        lines = [f"{mismatch:.2%} of the pixels differ from the reference"
-                 + (f" (after undoing {', '.join(undone)})" if undone else "") + "."]
-        self._add(name, key, fraction if mismatch > 0 else 1.0, lines, visibility)
+        self._add(name, key, credit,
+                  [f"Credit {credit:.1%}: {counted - n_wrong:,} of the {counted:,} pixels that "
+                   "a face covers (in the reference or yours) are right"
+                   + (f" (after undoing {', '.join(undone)})" if undone else "") + "."])
+
+    def _scene_references(self, label, scene, shading, painter):
+        """The reference of a scene and shading, the pixels no face covers, and (for render_img)
+        the images of the painter's-order mistakes: rendered once per submission, whichever tests
+        use them."""
+        refs = self._references.setdefault((label, shading), {})
+        if "reference" not in refs:
+            refs["reference"] = scantrace.render_img(scene["faces"], scene["vertices"],
+                                                     scene["vcolors"], scene["depth"], shading)
+            # The pixels no face covers are the same in both shadings: found once per scene.
+            if (label, "uncovered") not in self._references:
+                self._references[(label, "uncovered")] = _uncovered(scene, shading,
+                                                                    refs["reference"])
+            refs["uncovered"] = self._references[(label, "uncovered")]
+        if painter and "alternatives" not in refs:
+            refs["alternatives"] = _painter_alternatives(scene, shading)
+        return refs
 
     def _add_causes(self, causes, prefix):
         for c in causes:
@@ -513,3 +595,56 @@ def _painter_alternatives(scene, shading):
     reversed_order = scantrace.render_img(f, v, c, -np.asarray(d, np.float64), shading)
     ties_reversed = scantrace.render_img(f[::-1].copy(), v, c, d, shading)
     return {"order_reversed": reversed_order, "order_unstable_on_ties": ties_reversed}
+
+
+@functools.lru_cache(maxsize=None)
+def expected_mask(probe):
+    """A probe's exact fill (fill_models.correct, in exact arithmetic: the grader's slowest
+    Python), computed once per grading process: the probes are the same for every submission.
+    Read-only, as it is shared."""
+    mask = fill_models.correct(probe.array, probe.size)
+    mask.flags.writeable = False
+    return mask
+
+
+@functools.lru_cache(maxsize=1)
+def _pairs_references():
+    """The pairs probe's reference, uncovered pixels and painter's-order mistakes, in its corner:
+    the same for every submission, so computed once per grading process."""
+    corner = (slice(0, PAIRS_CORNER), slice(0, PAIRS_CORNER))
+    reference = scantrace.render_img(PAIRS["faces"], PAIRS["vertices"], PAIRS["vcolors"],
+                                     PAIRS["depth"], "f")
+    uncovered = _uncovered(PAIRS, "f", reference)[corner]
+    # What each pair is scored on: where its two faces overlap, the pixels the painter's order
+    # decides (a reversed order spoils all of them, not a sliver of the pair's area); two faces
+    # that only share an edge test the fill rule, on all their pixels.
+    counted = []
+    for _, _, faces, _ in PAIR_REGIONS:
+        a, b = (fill_models.correct(PAIRS["vertices"][PAIRS["faces"][f]].astype(float),
+                                    (PAIRS_CORNER, PAIRS_CORNER)) for f in faces)
+        counted.append(a & b if (a & b).any() else ~uncovered)
+    return {"reference": reference[corner], "uncovered": uncovered, "counted": counted,
+            "alternatives": {k: v[corner] for k, v in _painter_alternatives(PAIRS, "f").items()}}
+
+
+def _flat_line(probe, expected, got, colour_ok, credit, row):
+    """A flat probe not exactly right: its rows right, one pixel off and wrong, the first wrong
+    row as a reader checks it by hand (diagnose.first_wrong_row), the colour, and its credit."""
+    right, near, counted = scoring.fill_rows(expected, got)
+    return (f"- probe `{probe.name}` ({probe.what}){_domain(probe)}, credit {credit:.0%}: "
+            f"{right} of its {counted} rows right, {near} one pixel off at an end, "
+            f"{counted - right - near} wrong" + (f"; {row}" if row else "")
+            + ("; wrong colour" if not colour_ok else ""))
+
+
+def _call_keys(call_id):
+    """The rubric keys of the tests a call serves (a call is made when one of them runs)."""
+    if call_id.startswith("vi_"):
+        degenerate = int(call_id[3:]) >= len(VECTOR_CASES)
+        return ("vector_interp_degenerate",) if degenerate else ("vector_interp",)
+    if call_id.startswith("f_shading_"):
+        return ("probes_flat", "probes_beyond")
+    prefixes = (("g_shading_", "probes_gouraud"), ("pairs_", "probes_pairs"),
+                ("hidden", "hidden_scene"), ("course_render_", "course_scene"),
+                ("course_faces_", "course_faces"))
+    return tuple(k for p, k in prefixes if call_id.startswith(p)) or ("probes_flat",)

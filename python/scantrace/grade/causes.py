@@ -126,6 +126,7 @@ class Cause:
     picture: str | None = None          # file name of the evidence picture, beside the report
     picture_pixels: object = None       # the picture itself, written by the report
     legend: str = "grey: both; red: expected only; blue: yours only"   # what the picture shows
+    test: str = ""      # the name of the test whose visible output shows it (set by the battery)
 
     @property
     def sentence(self):

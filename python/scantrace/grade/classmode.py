@@ -71,12 +71,13 @@ def _one(path, out_dir, options):
     g = grade(path, out_dir, options)
     return {"name": pathlib.Path(out_dir).name, "score": g.score, "max_score": g.max_score,
             "causes": " ".join(c.id for c in g.causes), "verdicts": " ".join(g.verdicts),
-            "error": g.error[:2000]}
+            "error": g.error[:2000],
+            "tests": [(t.name, t.score, t.max_score) for t in g.tests]}
 
 
 def _error_row(name, error):
     return {"name": name, "score": 0.0, "max_score": 0.0, "causes": "", "verdicts": "",
-            "error": error}
+            "error": error, "tests": []}
 
 
 def not_graded(name, out_dir, error):
@@ -212,6 +213,35 @@ def _histogram(rows, bins=10):
                    for k, c in enumerate(counts))
 
 
+# A submission graded below this share of the maximum with no cause named and no verdict: the
+# grader could not say why, so a teaching assistant should look (class.html lists it).
+LOW_SCORE = 0.5
+
+
+def _breakdown(rows):
+    """Each student's points per test, one column a test (its name in the header's title)."""
+    names = []
+    for r in rows:
+        names += [n for n, _, _ in r.get("tests", ()) if n not in names]
+    head = "".join(f"<th title='{html.escape(n)}'>{k + 1}</th>" for k, n in enumerate(names))
+    legend = "".join(f"<li>{k + 1}: {html.escape(n)}</li>" for k, n in enumerate(names))
+    body = ""
+    for r in rows:
+        got = {n: (s, m) for n, s, m in r.get("tests", ())}
+        cells = "".join(f"<td class='{'low' if n in got and got[n][0] < got[n][1] else ''}'>"
+                        + (f"{got[n][0]:g}/{got[n][1]:g}" if n in got else "–") + "</td>"
+                        for n in names)
+        body += f"<tr><td>{html.escape(r['name'])}</td>{cells}</tr>"
+    return (f"<table><tr><th>submission</th>{head}</tr>{body}</table>"
+            f"<ol class='legend'>{legend}</ol>")
+
+
+def _unexplained(rows):
+    """Submissions scoring below LOW_SCORE of the maximum with no cause, verdict or error."""
+    return [r for r in rows if r["max_score"] and r["score"] < LOW_SCORE * r["max_score"]
+            and not (r["causes"] or r["verdicts"] or r["error"])]
+
+
 def class_html(rows):
     counts = {}
     for r in rows:
@@ -224,6 +254,9 @@ def class_html(rows):
                       f"{untrusted.html(r['name'])}</a>: "
                       f"{untrusted.html(r['verdicts'] or r['error'])}"
                       "</li>" for r in rows if r["verdicts"] or r["error"])
+    unexplained = "".join(f"<li><a href='{untrusted.html(untrusted.href(r['name']))}'>"
+                          f"{untrusted.html(r['name'])}</a>: {r['score']:g} / {r['max_score']:g}</li>"
+                          for r in _unexplained(rows))
     table = "".join(f"<tr><td><a href='{untrusted.html(untrusted.href(r['name']))}'>"
                     f"{untrusted.html(r['name'])}</a></td><td>{r['score']:g} / {r['max_score']:g}"
                     f"</td><td>{untrusted.html(r['causes'])}</td></tr>" for r in rows)
@@ -231,11 +264,15 @@ def class_html(rows):
 <html lang="en"><head><meta charset="utf-8"><title>Class report</title>
 <style>body{{font-family:sans-serif;max-width:60em;margin:2em auto}}
 td,th{{padding:.2em .8em;border-bottom:1px solid #ddd;text-align:left}}
-.bar{{display:inline-block;height:.9em;background:#48c}}</style></head><body>
+.bar{{display:inline-block;height:.9em;background:#48c}}.low{{color:#b00}}
+.legend{{font-size:small;color:#666}}</style></head><body>
 <h1>Class report: {len(rows)} submissions</h1>
 <h2>Scores</h2><table>{_histogram(rows)}</table>
 <h2>Causes</h2><table><tr><th>cause</th><th>students</th><th>what</th></tr>{causes}</table>
 <h2>Timed out, crashed, forbidden or not graded</h2><ul>{trouble or "<li>none</li>"}</ul>
+<h2>Low score, no cause</h2><p>Below {LOW_SCORE:.0%} of the maximum with no cause named and no
+verdict: the grader could not say why; look at these.</p><ul>{unexplained or "<li>none</li>"}</ul>
+<h2>Per test</h2>{_breakdown(rows)}
 <h2>Students</h2><table><tr><th>submission</th><th>score</th><th>causes</th></tr>{table}</table>
 </body></html>
 """

@@ -279,13 +279,16 @@ def channel_error(a, b):
     """Per pixel, the largest channel difference |a − b| of two H x W x 3 images. (A numpy
     reduction over the 3 channels is several times slower than two maxima of slices: it was most
     of the grader's own time on 512² scenes.)"""
-    d = np.abs(a - b)
-    return np.maximum(np.maximum(d[..., 0], d[..., 1]), d[..., 2])
+    d = np.subtract(a, b)
+    np.abs(d, out=d)          # in place: a third of the time of np.abs(a - b) on 512 x 512
+    error = np.maximum(d[..., 0], d[..., 1])
+    return np.maximum(error, d[..., 2], out=error)
 
 
 def image_mismatch(a, b):
     """The fraction of pixels whose colour differs by more than 1.5/255 in some channel."""
-    return float((channel_error(a, b) > 1.5 / 255).mean())
+    wrong = channel_error(a, b) > 1.5 / 255
+    return np.count_nonzero(wrong) / wrong.size
 
 
 _UNDO = {"transposed": lambda s: s.transpose(1, 0, 2), "bgr": lambda s: s[..., ::-1]}

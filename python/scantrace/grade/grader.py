@@ -54,11 +54,14 @@ class Options:
 
 
 def _deductions(causes, rubric):
+    """A cause the grader undid to grade the rest costs the rubric's [causes] points, as a test of
+    its own whose output shows the cause (Cause.test)."""
     tests = []
     for c in causes:
         points = rubric.deduction(c.id)
         if points:
-            tests.append(TestResult(f"Deduction: {c.id}", 0.0, -points, c.sentence))
+            c.test = f"Deduction: {c.id}"
+            tests.append(TestResult(c.test, 0.0, -points, f"{points:g} points taken off."))
     return tests
 
 
@@ -77,6 +80,7 @@ def grade(path, out_dir, options):
             battery = Battery(session, sub.functions, options.rubric, options.scene,
                               options.hidden_seed)
             battery.build()
+            battery.drop_unweighted()
             results = session.run(battery.calls)
             tests = battery.grade(results)
             notes = list(sub.notes)
@@ -85,7 +89,8 @@ def grade(path, out_dir, options):
                              + ", ".join(session.skipped_demo))
             if session.import_status is not None and session.import_status.status != "ok":
                 notes.append(f"importing the submission failed "
-                             f"({session.import_status.status}): {session.import_status.detail}")
+                             f"({session.import_status.status}): "
+                             + report.student_text(session.import_status.detail))
             tests += _deductions(battery.causes, options.rubric)
         finally:
             session.close()

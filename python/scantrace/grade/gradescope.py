@@ -3,7 +3,8 @@
 The zip holds, at its root (where Gradescope looks for them):
   setup.sh         run once as root when Gradescope builds the autograder's image: installs the
                    Ubuntu packages scantrace needs to build (and bubblewrap), builds the Python
-                   package from the source below into /autograder/source/build/python;
+                   package from the source below into /autograder/source/build/python, and
+                   (unless --no-sandbox) fails there if bwrap cannot make its namespaces;
   run_autograder   run as root for each submission: grades /autograder/submission with the
                    options baked in below and leaves /autograder/results/results.json (always:
                    when the grader itself fails, a results.json saying why, score 0);
@@ -63,7 +64,23 @@ cmake -S scantrace -B build -DCMAKE_BUILD_TYPE=Release -DSCANTRACE_BUILD_TESTS=O
       -DPython_EXECUTABLE=/usr/bin/python3 "${launcher[@]}"
 cmake --build build -j"$(nproc)" --target _scantrace
 PYTHONPATH="$PWD/build/python" /usr/bin/python3 -c 'import scantrace.grade.grader'
-echo "setup.sh: scantrace's grader is built in $PWD/build/python"
+@SANDBOX_CHECK@echo "setup.sh: scantrace's grader is built in $PWD/build/python"
+"""
+
+# setup.sh's last step (a constant of its own so the tests can run it against a stub package).
+SANDBOX_CHECK = r"""# The sandbox, checked now with the grader's own test (unless the zip was made
+# with --no-sandbox): an image where bwrap cannot make its namespaces fails here, once, with the
+# reason, rather than giving every student a score of 0 later.
+if ! grep -qx -- '--no-sandbox' grade_args; then
+  problem=$(PYTHONPATH="$PWD/build/python" /usr/bin/python3 -c \
+    'from scantrace.grade.sandbox import sandbox_problem; print(sandbox_problem() or "")')
+  if [ -n "$problem" ]; then
+    echo "setup.sh: the grader's sandbox cannot run in this image: $problem. Allow user" \
+         "namespaces, or make the zip with --no-sandbox (then the container is the only" \
+         "isolation: docs/grading.md)" >&2
+    exit 1
+  fi
+fi
 """
 
 RUN_AUTOGRADER = r"""#!/usr/bin/env bash
@@ -184,7 +201,8 @@ def write_zip(out_path, args):
     os.close(fd)
     try:
         with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as z:
-            _add_text(z, "setup.sh", SETUP_SH.replace("@PACKAGES@", UBUNTU_PACKAGES), True)
+            _add_text(z, "setup.sh", SETUP_SH.replace("@PACKAGES@", UBUNTU_PACKAGES)
+                      .replace("@SANDBOX_CHECK@", SANDBOX_CHECK), True)
             _add_text(z, "run_autograder", RUN_AUTOGRADER, True)
             _add_text(z, "grade_args", "".join(a + "\n" for a in grade_args(args, scene_name)))
             if args.rubric:

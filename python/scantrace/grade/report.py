@@ -25,16 +25,68 @@ def _write_atomic(path, data):
     os.replace(tmp, path)
 
 
+def student_text(text):
+    """Text that holds what the student's code produced (an exception's message, a value, a file
+    name) as Markdown that shows it literally: a code span for one line, a fenced block for
+    several (untrusted.py: control characters escaped, fences longer than any backtick run)."""
+    text = str(text)
+    if "\n" in text.strip("\n"):
+        return "\n" + untrusted.md_block(text.strip("\n"))
+    return untrusted.md_code(text.strip())
+
+
+# The parts a test's `number` is grouped by ("1.1", "1.2", "2.1", … as in Gradescope's
+# examples), by rubric key; deductions (no key) come last.
+PARTS = (("vector_interp", "vector_interp_degenerate"),
+         ("probes_flat", "probes_gouraud", "probes_pairs", "probes_beyond"),
+         ("hidden_scene",), ("course_scene", "course_faces"), ("",))
+
+
+def numbers(tests):
+    """Each test's number: its part (among the parts present, counted from 1) and its place."""
+    part_of = {k: i for i, keys in enumerate(PARTS) for k in keys}
+    present = sorted({part_of.get(t.key, len(PARTS) - 1) for t in tests})
+    counts, out = {}, []
+    for t in tests:
+        part = present.index(part_of.get(t.key, len(PARTS) - 1)) + 1
+        counts[part] = counts.get(part, 0) + 1
+        out.append(f"{part}.{counts[part]}")
+    return out
+
+
+def _cause_feedback(c):
+    """What a student reads of a cause in the output of the test it cost points in."""
+    return [f"**Mistake found: `{c.id}`.** {c.sentence}", "", f"**Fix:** {c.fix}", "",
+            "**Evidence:** " + student_text(c.evidence)]
+
+
+def test_output(t, causes):
+    """A test's visible output: the causes it shows (the sentence, the fix, the evidence), then
+    its own lines."""
+    lines = []
+    for c in causes:
+        if c.test == t.name:
+            lines += _cause_feedback(c) + [""]
+    return "\n".join(lines + [t.output]).strip()
+
+
 def results_json(graded):
-    """Gradescope's results.json: tests with name, score, max_score, status, output (Markdown),
+    """Gradescope's results.json: tests with name, number, score, max_score, status, output
+    (Markdown: each cause's sentence, fix and evidence in the test it cost points in),
     visibility; top-level score, execution_time, output; the causes under extra_data."""
-    tests = [{"name": t.name, "number": str(i + 1), "score": t.score, "max_score": t.max_score,
-              "status": t.status, "output": t.output, "output_format": "md",
+    tests = [{"name": t.name, "number": n, "score": t.score, "max_score": t.max_score,
+              "status": t.status, "output": test_output(t, graded.causes), "output_format": "md",
               "visibility": t.visibility,
               **({"extra_data": {"verdict": t.verdict}} if t.verdict else {})}
-             for i, t in enumerate(graded.tests)]
+             for t, n in zip(graded.tests, numbers(graded.tests))]
+    # A cause no test claimed (found after the last test) is shown in the top-level output,
+    # which students see too.
+    names = {t.name for t in graded.tests}
+    loose = [line for c in graded.causes if c.test not in names for line in _cause_feedback(c)]
     result = {"score": graded.score, "execution_time": round(graded.seconds, 2),
-              "output": graded.summary(), "output_format": "md", "visibility": "visible",
+              "output": "\n\n".join([graded.summary()] + (["\n".join(loose)] if loose else [])),
+              "output_format": "md",
+              "visibility": "visible",
               "stdout_visibility": "hidden", "tests": tests,
               "extra_data": {"max_score": graded.max_score,
                              "causes": [c.as_json() for c in graded.causes],
@@ -53,13 +105,24 @@ def results_json(graded):
 
 def _cause_md(c):
     lines = [f"### `{c.id}`", "", c.sentence, "", f"**Fix:** {c.fix}", "",
-             f"**Evidence:** {c.evidence}"]
+             "**Evidence:** " + student_text(c.evidence)]
     if c.picture:
         lines += ["", f"![{c.id}: {c.legend}]({c.picture})"]
     return lines
 
 
+def _not_graded_md(graded):
+    return "\n".join([
+        f"# {untrusted.md_code(graded.name)}: not graded", "",
+        "This submission could not be graded: none of its code was run, so it has no score "
+        "and no test results. The reason:", "", student_text(graded.error), "",
+        "Fix what the reason names (a file that does not parse, a function missing or "
+        "misnamed, an archive that is not a zip) and submit again.", ""])
+
+
 def markdown(graded):
+    if graded.error:
+        return _not_graded_md(graded)
     lines = [f"# {untrusted.md_code(graded.name)}: {graded.score:g} / {graded.max_score:g}", ""]
     if graded.causes:
         lines += ["## What is wrong", ""]
@@ -68,9 +131,9 @@ def markdown(graded):
     else:
         lines += ["No mistake found by the probes." if graded.score >= graded.max_score
                   else "No cause confirmed: see the tests below.", ""]
-    lines += ["## Tests", "", "| test | score | status |", "|---|---|---|"]
-    for t in graded.tests:
-        lines.append(f"| {t.name} | {t.score:g} / {t.max_score:g} | "
+    lines += ["## Tests", "", "| | test | score | status |", "|---|---|---|---|"]
+    for t, n in zip(graded.tests, numbers(graded.tests)):
+        lines.append(f"| {n} | {t.name} | {t.score:g} / {t.max_score:g} | "
                      f"{t.verdict or t.status} |")
     lines.append("")
     for t in graded.tests:
@@ -88,6 +151,12 @@ def _inline(text):
 
 
 def html_report(graded, directory):
+    if graded.error:
+        return (f"<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>"
+                f"{html.escape(graded.name)}: not graded</title></head><body>"
+                f"<h1>{html.escape(graded.name)}: not graded</h1><p>This submission could not be "
+                "graded: none of its code was run, so it has no score and no test results. The "
+                f"reason:</p><pre>{html.escape(graded.error)}</pre></body></html>\n")
     rows = "".join(f"<tr><td>{_inline(t.name)}</td><td>{t.score:g} / {t.max_score:g}</td>"
                    f"<td class='{t.status}'>{html.escape(t.verdict or t.status)}</td></tr>"
                    for t in graded.tests)

@@ -35,7 +35,8 @@ def test_class_csv_equals_the_reports(tmp_path, sandbox_ok):
             assert row["error"] and results["output"].startswith("Not graded")
         else:
             assert row["error"] == ""
-            assert float(row["max_score"]) == results["extra_data"]["max_score"] == 60   # no hidden scene: 5+5+20+20+10
+            # No hidden scene: the rubric's total all the same, shared over the tests that ran.
+            assert float(row["max_score"]) == results["extra_data"]["max_score"] == 100
     # Every third student is correct; the others each carry the one cause written into them.
     for k, row in enumerate(rows[:29]):
         expected = [] if k % 3 == 0 else [causes[k % len(causes)]]

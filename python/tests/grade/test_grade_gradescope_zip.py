@@ -68,8 +68,8 @@ def test_the_zip_holds_gradescopes_two_scripts_executable_and_the_options(tmp_pa
 
 def test_run_autograder_grades_the_submission_into_results_json(tmp_path, sandbox_ok):
     # The transposed student: everything right once img[x][y] is undone, so its score is the
-    # rubric's maximum (tests of the run: vector_interp, the three probe sets, 2 hidden scenes x 2
-    # shadings) less the rubric's deduction for `transposed`, here a custom 7 points.
+    # rubric's total (whatever tests ran) less the rubric's deduction for `transposed`, here a
+    # custom 7 points.
     custom = tmp_path / "r.toml"
     custom.write_text("[causes]\ntransposed = 7\n")
     out = _zip(tmp_path, "--hidden-seed", "5", "--rubric", custom, "--call-seconds", "4")
@@ -78,11 +78,8 @@ def test_run_autograder_grades_the_submission_into_results_json(tmp_path, sandbo
     assert r.returncode == 0, r.stderr
     results = json.loads((root / "results" / "results.json").read_text())
     jsonschema.validate(results, SCHEMA)
-    points = rubric.load(custom)
-    hidden = points.hidden_scenes * 2 * points.points("hidden_scene")
-    maximum = sum(points.points(k) for k in ("vector_interp", "vector_interp_degenerate",
-                                             "probes_flat", "probes_gouraud", "probes_pairs")) + hidden
-    assert results["extra_data"]["max_score"] == maximum
+    maximum = rubric.load(custom).total
+    assert results["extra_data"]["max_score"] == maximum == 100
     assert results["score"] == maximum - 7
     assert [c["id"] for c in results["extra_data"]["causes"]] == ["transposed"]
 
@@ -130,3 +127,26 @@ def test_setup_sh_installs_what_the_debian_build_installs_and_the_docs_list():
     table = section[section.index("| packages |"):section.index("\n\n", section.index("| packages |"))]
     named = {w for cell in re.findall(r"`([^`]*)`", table) for w in cell.split()}
     assert set(ubuntu) <= named, set(ubuntu) - named
+
+
+@pytest.mark.parametrize("no_sandbox", [False, True])
+def test_setup_sh_stops_at_image_build_when_the_sandbox_cannot_run(tmp_path, no_sandbox):
+    """setup.sh's last step asks the built grader whether bwrap can make its namespaces (here a
+    stub package that says it cannot) and fails the image's build with that reason, unless the zip
+    was made with --no-sandbox."""
+    grade = tmp_path / "build" / "python" / "scantrace" / "grade"
+    grade.mkdir(parents=True)
+    (grade.parent / "__init__.py").write_text("")
+    (grade / "__init__.py").write_text("")
+    (grade / "sandbox.py").write_text("def sandbox_problem():\n"
+                                      "    return 'no user namespaces in this container'\n")
+    (tmp_path / "grade_args").write_text("--hidden-seed\n5\n" + ("--no-sandbox\n" * no_sandbox))
+    setup = gradescope.SETUP_SH.replace("@SANDBOX_CHECK@", gradescope.SANDBOX_CHECK)
+    assert gradescope.SANDBOX_CHECK in setup
+    r = subprocess.run(["bash", "-euo", "pipefail", "-c", gradescope.SANDBOX_CHECK],
+                       cwd=tmp_path, capture_output=True, text=True)
+    if no_sandbox:
+        assert r.returncode == 0, r.stderr
+    else:
+        assert r.returncode == 1
+        assert "no user namespaces in this container" in r.stderr and "--no-sandbox" in r.stderr

@@ -75,7 +75,7 @@ def test_a_bad_rubric_is_named(tmp_path):
     rubric = tmp_path / "r.toml"
     rubric.write_text("[tests]\nprobes_flatt = 3\n")
     r = _run(tmp_path, "--rubric", rubric, "--no-sandbox")
-    assert r.returncode == 1 and "r.toml: [tests] probes_flatt: no such test" in r.stderr
+    assert r.returncode == 2 and "r.toml: [tests] probes_flatt: no such key" in r.stderr
 
 
 # A submission split over three files that import each other, zipped in a folder; its canvases

@@ -159,4 +159,5 @@ def test_refuses_without_namespaces_unless_no_sandbox(tmp_path, monkeypatch, cap
     assert not (tmp_path / "out").exists()
     assert cli.main([str(sub), "-o", str(tmp_path / "out"), "--quiet", "--no-sandbox",
                      "--call-seconds", "2"]) == 0
-    assert json.loads((tmp_path / "out" / "results.json").read_text())["score"] == 60
+    # No hidden scene: the rubric's total all the same (docs/grading.md, "The rubric").
+    assert json.loads((tmp_path / "out" / "results.json").read_text())["score"] == 100

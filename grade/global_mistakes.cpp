@@ -81,14 +81,32 @@ bool transform_applies(std::size_t t, int iw, int ih, int W, int H) {
   return t == kIdentity || (iw == W && ih == H);
 }
 
-// Colours in [0, 255]: a float array whose values go beyond 1 by more than the tolerance. Undone
-// (in `src`) when `undo`.
-void find_scaled_255(const SubmittedImage& in, double tol, bool undo, RgbImage& src,
-                     std::vector<GlobalMistake>& found) {
+// Colours in [0, 255]: a float array on that scale, that is most of its painted pixels (those
+// not of the scene's background) above 1. One bright pixel, or a Gouraud colour extrapolated a
+// little beyond a vertex's, is not a scale: the pixels above 1 are then a note saying what they
+// are, and are compared as they are (issue 47: one pixel at 1.01 gave "scaled_255" and 87,925
+// differing pixels). Undone (in `src`) when `undo`.
+void find_scaled_255(const Scene& scene, const SubmittedImage& in, double tol, bool undo,
+                     RgbImage& src, std::vector<GlobalMistake>& found,
+                     std::vector<std::string>& notes) {
   if (in.format != "npy" || in.eight_bit) return;
+  const Rgb32f background = Rgb32f::from(scene.background);
   float top = 0;
-  for (const Rgb32f p : src.pixels()) top = std::max({top, p.r, p.g, p.b});
-  if (!(top > 1 + tol && top <= 255 + tol)) return;
+  std::int64_t painted = 0, above = 0;
+  for (const Rgb32f p : src.pixels()) {
+    const float m = std::max({p.r, p.g, p.b});
+    top = std::max(top, m);
+    if (max_diff(p, background) > tol) ++painted;
+    above += m > 1.0f;
+  }
+  if (above == 0) return;
+  const bool scaled = 2 * above > painted && top <= 255 + tol;
+  if (!scaled) {
+    notes.push_back(fmt::format("{} pixel{} above 1.0 (largest {:.4g}): colours extrapolated "
+                                "outside the triangle?",
+                                above, above == 1 ? "" : "s", top));
+    return;
+  }
   found.push_back({"scaled_255",
                    fmt::format("colours are scaled to [0, 255] (the largest value is {:.4g}), "
                                "not [0, 1]",
@@ -217,10 +235,11 @@ void find_background(const Scene& scene, const FaceIdImage& ids,
 std::vector<GlobalMistake> find_global_mistakes(const Scene& scene, const RgbImage& reference,
                                                 const FaceIdImage& ids, const SubmittedImage& in,
                                                 double tol, bool undo, RgbImage& image,
-                                                std::vector<unsigned char>& compared) {
+                                                std::vector<unsigned char>& compared,
+                                                std::vector<std::string>& notes) {
   std::vector<GlobalMistake> found;
   RgbImage src = in.pixels;
-  find_scaled_255(in, tol, undo, src, found);
+  find_scaled_255(scene, in, tol, undo, src, found, notes);
   const std::size_t best = find_transform(scene, reference, ids, src, tol, undo, found);
   resample(scene, src, undo ? best : kIdentity, image, compared);
   find_background(scene, ids, compared, tol, undo, image, found);

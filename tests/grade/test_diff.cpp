@@ -246,6 +246,51 @@ TEST_CASE("8-bit truncation stays inside the tolerance and is noted", "[grade][d
   CHECK_FALSE(mentions(diff(s, opts(Shading::gouraud), as_npy(good)).notes, "truncation"));
 }
 
+TEST_CASE("a float render that never went through 8 bits gets no truncation note",
+          "[grade][diff]") {
+  // Every value 0.7 of a level below the exact colour: within the tolerance, never 8-bit. A few
+  // values land on a multiple of 1/255 by chance, and there floor(255·c) = round(255·c) - 1:
+  // they read as truncated, but the image is no 8-bit image (issue 47: 617 such values on the
+  // course scene gave the note).
+  const Scene s = generated_scene();
+  RgbImage img = render_wrong(s, Shading::gouraud, Mistake::none);
+  for (int y = 0; y < img.height(); ++y)
+    for (int x = 0; x < img.width(); ++x) {
+      Rgb32f& p = img(x, y);
+      p = {p.r - 0.7f / 255, p.g - 0.7f / 255, p.b - 0.7f / 255};
+    }
+  const DiffReport r = diff(s, opts(Shading::gouraud), as_npy(img));
+  CHECK(r.differing_pixels == 0);
+  CHECK_FALSE(mentions(r.notes, "truncation"));
+}
+
+TEST_CASE("one bright pixel is one differing pixel; values above 1 are a note, not a scale",
+          "[grade][diff]") {
+  const Scene s = generated_scene();
+  const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);
+  SECTION("one pixel at 1.01") {
+    RgbImage img = good;
+    img(50, 30) = {1.01f, 0.5f, 0.5f};
+    const long long expected = count_differing(good, img);  // 1, unless (50, 30) was that colour
+    REQUIRE(expected == 1);
+    const DiffReport r = diff(s, opts(Shading::gouraud), as_npy(img));
+    INFO(r.to_markdown());
+    CHECK(r.global.empty());
+    CHECK(r.differing_pixels == 1);
+    CHECK(mentions(r.notes, "1 pixel above 1.0 (largest 1.01)"));
+  }
+  SECTION("Gouraud colours extrapolated up to 1.28 on 12 pixels") {
+    RgbImage img = good;
+    for (int k = 0; k < 12; ++k) img(20 + 7 * k, 40 + 3 * k) = {1.0f + 0.02f * (k + 3), 0.2f, 0.9f};
+    const DiffReport r = diff(s, opts(Shading::gouraud), as_npy(img));
+    INFO(r.to_markdown());
+    CHECK(r.global.empty());
+    CHECK(r.differing_pixels == count_differing(good, img));
+    CHECK(r.differing_pixels == 12);
+    CHECK(mentions(r.notes, "12 pixels above 1.0 (largest 1.28)"));
+  }
+}
+
 TEST_CASE("global mistakes are one line each, undone, and the rest agrees", "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);

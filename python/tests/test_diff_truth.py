@@ -1,0 +1,73 @@
+"""`diff` tells the truth in plain words (issue 47): no global mistake made up from one bright
+pixel, notes only where they hold. The scene is the course's (the demo scene when
+../shared/data is absent); the command line and Python give the same answer."""
+
+import subprocess
+
+import numpy as np
+import pytest
+
+import scantrace
+from conftest import COURSE_SCENE, SCANTRACE, write_scene_json
+
+
+@pytest.fixture(scope="module")
+def scene_and_file(tmp_path_factory):
+    """(scene dict, the scene file the command reads)."""
+    if COURSE_SCENE.exists():
+        return scantrace.load_scene(COURSE_SCENE), COURSE_SCENE
+    s = scantrace.demo_scene()
+    path = tmp_path_factory.mktemp("scene") / "demo.json"
+    write_scene_json(path, s["vertices"], s["faces"], s["vcolors"], s["depth"],
+                     size=tuple(s["size"]), background=s["background"])
+    return s, path
+
+
+def _cli_diff(scene_path, image_path):
+    r = subprocess.run([SCANTRACE, "-q", "diff", str(scene_path), str(image_path), "--json"],
+                       capture_output=True, text=True)
+    assert r.returncode in (0, 3), r.stderr
+    import json
+    return json.loads(r.stdout)
+
+
+def test_one_bright_pixel_is_one_differing_pixel(scene_and_file, tmp_path):
+    scene, path = scene_and_file
+    img = scantrace.render(**scene)
+    img[300, 250] = [1.01, .5, .5]
+    # Independently: the pixel differed from the reference before (its colour was not this).
+    assert np.abs(scantrace.render(**scene)[300, 250] - [1.01, .5, .5]).max() > 1 / 255
+    report = scantrace.diff(scene, img)
+    assert report.differing_pixels == 1
+    assert report.global_mistakes == []
+    assert any("1 pixel above 1.0 (largest 1.01)" in n for n in report.notes), report.notes
+    np.save(tmp_path / "img.npy", img)
+    cli = _cli_diff(path, tmp_path / "img.npy")
+    assert cli["differing_pixels"] == 1
+    assert cli["global"] == []
+
+
+def test_extrapolated_colours_are_a_note(scene_and_file):
+    scene, _ = scene_and_file
+    good = scantrace.render(**scene)
+    img = good.copy()
+    ys, xs = np.nonzero((good < 0.9).all(axis=2))
+    pick = np.linspace(0, len(ys) - 1, 12).astype(int)
+    img[ys[pick], xs[pick], 0] = np.linspace(1.06, 1.28, 12)
+    report = scantrace.diff(scene, img)
+    assert report.global_mistakes == []
+    assert report.differing_pixels == 12
+    assert any("12 pixels above 1.0 (largest 1.28)" in n for n in report.notes), report.notes
+
+
+def test_a_float_render_gets_no_8bit_note(scene_and_file):
+    """A float64 image a little darker than the reference (within the tolerance) never went
+    through 8 bits: no truncation note, although a few of its values are k/255 by chance."""
+    scene, _ = scene_and_file
+    img = scantrace.render(**scene) - 0.7 / 255
+    report = scantrace.diff(scene, img)
+    assert report.differing_pixels == 0
+    assert not any("truncation" in n for n in report.notes), report.notes
+    # An image that did go through 8 bits, truncated, keeps the note (issue 36).
+    truncated = np.floor(scantrace.render(**scene) * 255 + 1e-9) / 255
+    assert any("truncation" in n for n in scantrace.diff(scene, truncated).notes)

@@ -7,6 +7,8 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "grade/mistake_catalogue.hpp"
+
 namespace scantrace::grade {
 namespace {
 
@@ -100,7 +102,9 @@ void find_scaled_255(const Scene& scene, const SubmittedImage& in, double tol, b
     above += m > 1.0f;
   }
   if (above == 0) return;
-  const bool scaled = 2 * above > painted && top <= 255 + tol;
+  const bool scaled = static_cast<double>(above) > whole_image_tolerance("scaled_share") *
+                                                       static_cast<double>(painted) &&
+                     top <= 255 + tol;
   if (!scaled) {
     notes.push_back(fmt::format("{} pixel{} above 1.0 (largest {:.4g}): colours extrapolated "
                                 "outside the triangle?",
@@ -143,8 +147,12 @@ std::size_t find_transform(const Scene& scene, const RgbImage& reference, const 
   std::size_t best = kIdentity;
   for (std::size_t t = 1; t < transforms().size(); ++t)
     if (score[t] > score[best]) best = t;
-  if (best != kIdentity &&
-      (score[best] < 2 * score[kIdentity] || 2 * score[best] < face_pixels))
+  // The thresholds are the catalogue's, shared with the Python grader's diagnose_image.
+  const double gain = whole_image_tolerance("transform_gain"),
+               share = whole_image_tolerance("transform_share");
+  const auto d = [](std::int64_t n) { return static_cast<double>(n); };
+  if (best != kIdentity && (d(score[best]) < gain * d(score[kIdentity]) ||
+                            d(score[best]) < share * d(face_pixels)))
     best = kIdentity;
   if (best != kIdentity) {
     found.push_back({transforms()[best].kind,
@@ -202,7 +210,9 @@ void find_background(const Scene& scene, const FaceIdImage& ids,
   std::int64_t mode_count = 0;
   for (const auto& [key, n] : counts)
     if (n > mode_count || (n == mode_count && key < mode)) mode = key, mode_count = n;
-  if (bg_pixels == 0 || 2 * mode_count < bg_pixels) return;
+  if (bg_pixels == 0 || static_cast<double>(mode_count) <
+                            whole_image_tolerance("background_share") * static_cast<double>(bg_pixels))
+    return;
   const Color seen{(mode >> 16) / 255.0, ((mode >> 8) & 255) / 255.0, (mode & 255) / 255.0};
   // The mode is 8-bit; compare with half a level of slack on top of the tolerance.
   const Rgb32f expected = Rgb32f::from(scene.background);

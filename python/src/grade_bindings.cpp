@@ -16,6 +16,7 @@
 #include "arrays.hpp"
 #include "grade/diff_picture.hpp"
 #include "grade/diff_report.hpp"
+#include "grade/mistake_catalogue.hpp"
 #include "grade/pixel_story.hpp"
 #include "io/npy_reader.hpp"
 #include "py_trace.hpp"
@@ -210,6 +211,9 @@ void bind_grade(py::module_& m) {
   py::list colours;
   for (const auto& c : grade::kCategoryColours) colours.append(py::make_tuple(c[0], c[1], c[2]));
   m.attr("DIFF_CATEGORY_COLOURS") = py::tuple(colours);
+  // The mistake catalogue as embedded in the C++ (the Python grader reads the package's copy of
+  // the same file; a test compares them).
+  m.attr("MISTAKE_CATALOGUE_JSON") = std::string(grade::mistake_catalogue_json());
 }
 
 }  // namespace scantrace::python

@@ -87,7 +87,7 @@ TEST_CASE("the closed rule's extra edge pixels are boundary", "[grade][diff]") {
 TEST_CASE("dropping every face's last row is near_boundary, missing, bottom row", "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
-  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::drop_last_row);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::bottom_row_dropped);
   const long long expected = count_differing(good, bad);
   REQUIRE(expected > 50);
   const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
@@ -139,7 +139,7 @@ TEST_CASE("spans one pixel too wide at both ends are widened, a face moved one p
           "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
-  const RgbImage wide = render_wrong(s, Shading::flat, Mistake::span_wide_both);
+  const RgbImage wide = render_wrong(s, Shading::flat, Mistake::span_too_wide);
   const RgbImage moved = render_wrong(s, Shading::flat, Mistake::shift_right);
   const long long n_wide = count_differing(good, wide), n_moved = count_differing(good, moved);
   REQUIRE(n_wide > 50);
@@ -163,7 +163,7 @@ TEST_CASE("spans one pixel too wide at both ends are widened, a face moved one p
 TEST_CASE("nearest-first painting is order", "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);
-  const RgbImage bad = render_wrong(s, Shading::gouraud, Mistake::nearest_first);
+  const RgbImage bad = render_wrong(s, Shading::gouraud, Mistake::order_reversed);
   const long long expected = count_differing(good, bad);
   REQUIRE(expected > 1000);
   const DiffReport r = diff(s, opts(Shading::gouraud), as_8bit(bad));
@@ -174,7 +174,7 @@ TEST_CASE("nearest-first painting is order", "[grade][diff]") {
 TEST_CASE("faces with a horizontal edge skipped are missing_face, each listed", "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
-  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::skip_horizontal);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::horizontal_edge_skipped);
   const long long expected = count_differing(good, bad);
   const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
   CHECK(r.differing_pixels == expected);
@@ -193,7 +193,7 @@ TEST_CASE("faces with a horizontal edge skipped are missing_face, each listed", 
 TEST_CASE("zero-area faces painted are degenerate_drawn", "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
-  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::paint_degenerate);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::degenerate_drawn);
   const long long expected = count_differing(good, bad);
   REQUIRE(expected > 20);
   const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
@@ -204,7 +204,7 @@ TEST_CASE("zero-area faces painted are degenerate_drawn", "[grade][diff]") {
 TEST_CASE("flat colour = the first vertex's colour is colour, diagnosed", "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
-  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::flat_first_vertex);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::flat_colour_not_mean);
   const long long expected = count_differing(good, bad);
   REQUIRE(expected > 1000);
   const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
@@ -218,7 +218,7 @@ TEST_CASE("flat colour = the first vertex's colour is colour, diagnosed", "[grad
 TEST_CASE("Gouraud with two vertex colours swapped is colour, permutation named", "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);
-  const RgbImage bad = render_wrong(s, Shading::gouraud, Mistake::swap_colours_01);
+  const RgbImage bad = render_wrong(s, Shading::gouraud, Mistake::gouraud_weights_permuted);
   // Counted on the 8-bit image the grader reads: near the tolerance, rounding decides.
   const long long expected = count_differing(good, as_8bit(bad).pixels);
   REQUIRE(expected > 1000);

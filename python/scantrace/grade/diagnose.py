@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from . import fill_models
-from .causes import CONFIDENCE, Cause  # noqa: F401 - Cause is used by battery too
+from .causes import CONFIDENCE, WHOLE_IMAGE, Cause  # noqa: F401 - Cause is used by battery too
 
 WHITE_TOLERANCE = 1e-6
 
@@ -231,7 +231,7 @@ def diagnose_image(student, reference, uncovered, alternatives):
             continue
         fixed = np.ascontiguousarray(fix(student))
         m = image_mismatch(fixed, reference)
-        if m < base * 0.5:
+        if m < base / WHOLE_IMAGE["transform_gain"]:  # the catalogue's, as diff's
             differ = channel_error(student, reference) > 1.5 / 255
             causes.append(Cause(cause_id, 1 - m / base,
                                 f"{base:.1%} of the pixels differ; {m:.1%} after undoing it",
@@ -243,7 +243,7 @@ def diagnose_image(student, reference, uncovered, alternatives):
         if np.abs(bg - 1.0).max() > 2 / 255:
             same = uncovered & (channel_error(student, bg) <= 1.5 / 255)
             share = same.sum() / uncovered.sum()
-            if share >= CONFIDENCE:
+            if share >= WHOLE_IMAGE["background_share"]:
                 picture = image_picture(student, reference, same)
                 student = student.copy()
                 student[same] = 1.0

@@ -11,6 +11,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "grade/diff_report.hpp"
+#include "grade/diff_verdict.hpp"
 #include "grade/face_geometry.hpp"
 #include "grade/face_id_render.hpp"
 #include "grade/global_mistakes.hpp"
@@ -118,6 +119,7 @@ class DiffRun {
     find_patterns();
     diagnose_colours();
     list_faces();
+    name_mistakes();
     explain_examples();
     return std::move(report_);
   }
@@ -334,6 +336,7 @@ class DiffRun {
     }
     widened_.assign(n_faces_, 0);
     for (std::size_t f = 0; f < n_faces_; ++f) {
+      evidence_.extended_left += left[f], evidence_.extended_right += right[f];
       widened_[f] = left[f] > 0 && right[f] > 0 && 4 * uncovered[f] <= left[f] + right[f];
       if (widened_[f]) shifted_[f] = 0;
     }
@@ -646,7 +649,50 @@ class DiffRun {
       }
   }
 
-  // Stage 14: a few pixels of each category, explained.
+  // Stage 14: the verdict (diff_verdict.hpp), with what the categories do not hold: the missing
+  // pixels' patterns, and where many centres on outlines went to the wrong face, how many of
+  // those the closed rule would change (a face-ID render under it).
+  void name_mistakes() {
+    evidence_.missing_tags = tags_missing_;
+    count_row_losses();
+    if (static_cast<double>(report_.categories.at("boundary")) >=
+        kVerdictShare * static_cast<double>(report_.differing_pixels)) {
+      FillOptions closed = options_;
+      closed.fill_rule = FillRule::closed;
+      const FaceIdImage c = render_face_ids(scene_, closed);
+      std::int64_t changed = 0, seen = 0;
+      std::vector<char> boundary(ids_.ids.size(), 0);
+      for (std::size_t k = 0; k < differing_.size(); ++k)
+        boundary[differing_[k]] = cats_[k] == "boundary";
+      for (std::size_t i = 0; i < c.ids.size(); ++i)
+        if (c.ids[i] != ids_.ids[i]) ++changed, seen += boundary[i];
+      evidence_.closed_rule_share =
+          changed ? static_cast<double>(seen) / static_cast<double>(changed) : 0.0;
+    }
+    report_.verdict = diff_verdict(report_, evidence_);
+  }
+
+  // Per face of two rows or more, its reference pixels in its first row, its last row and the
+  // rows between, and those the image does not show it on (pixels_ runs in y order per face).
+  void count_row_losses() {
+    for (std::size_t f = 0; f < n_faces_; ++f) {
+      if (start_[f + 1] == start_[f]) continue;
+      const int first = py(pixels_[start_[f]]), last = py(pixels_[start_[f + 1] - 1]);
+      if (first == last) continue;
+      for (std::size_t k = start_[f]; k < start_[f + 1]; ++k) {
+        const std::size_t i = pixels_[k];
+        if (!compared_[i]) continue;
+        const int y = py(i);
+        auto& rows = y == first ? evidence_.first_rows
+                     : y == last ? evidence_.last_rows
+                                 : evidence_.middle_rows;
+        ++rows.pixels;
+        rows.lost += seen_[i] != static_cast<int>(f);
+      }
+    }
+  }
+
+  // Stage 15: a few pixels of each category, explained.
   void explain_examples() {
     for (const char* cat : kCategories)
       for (std::size_t i : first_[cat]) {
@@ -693,6 +739,7 @@ class DiffRun {
   std::vector<std::string> cats_;
   std::vector<char> hidden_, ambiguous_;
   std::int64_t order_evidence_ = 0, edge_evidence_ = 0;
+  VerdictEvidence evidence_;
   std::map<int, std::map<std::string, std::int64_t>> damage_;
   std::vector<std::size_t> colour_pixels_;
   std::map<std::string, std::vector<std::size_t>> first_;

@@ -71,3 +71,48 @@ def test_a_float_render_gets_no_8bit_note(scene_and_file):
     # An image that did go through 8 bits, truncated, keeps the note (issue 36).
     truncated = np.floor(scantrace.render(**scene) * 255 + 1e-9) / 255
     assert any("truncation" in n for n in scantrace.diff(scene, truncated).notes)
+
+
+def _too_wide_render(scene):
+    """A flat render as a student's floor/ceil fill draws it: columns floor(x_L) .. ceil(x_R),
+    both included (the pixels a line drawing of the edges lights), painter's order, written here
+    independently of the package."""
+    v, f, c, d = (np.asarray(scene[k], float) for k in ("vertices", "faces", "vcolors", "depth"))
+    f = f.astype(int)
+    w, h = (int(n) for n in scene["size"])
+    img = np.ones((h, w, 3))
+    for face in np.argsort(-d[f].mean(axis=1), kind="stable"):
+        tri, colour = v[f[face]], c[f[face]].mean(axis=0)
+        for y in range(max(0, int(np.ceil(tri[:, 1].min()))),
+                       min(h, int(np.ceil(tri[:, 1].max())))):
+            xs = [a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
+                  for a, b in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0]))
+                  if min(a[1], b[1]) <= y < max(a[1], b[1])]
+            if len(xs) == 2:
+                x0, x1 = int(np.floor(min(xs))), int(np.ceil(max(xs)))
+                img[y, max(0, x0):min(w, x1 + 1)] = colour
+    return img
+
+
+def test_verdict_names_spans_too_wide_first(scene_and_file):
+    scene, _ = scene_and_file
+    report = scantrace.diff(scene, _too_wide_render(scene), shading="flat")
+    assert report.verdict, str(report)
+    first = report.verdict[0]
+    assert first["id"] == "span_too_wide", report.verdict
+    assert first["text"] == "spans are one pixel too wide on both sides (floor(x_L) .. ceil(x_R)?)"
+    text = str(report)
+    assert text.index(first["text"]) < text.index("pixels differ")
+    page = report._repr_html_()
+    assert page.index("spans are one pixel too wide") < page.index("<table>")
+    assert repr(report).startswith("<DiffReport: spans are one pixel too wide")
+
+
+def test_verdict_names_a_reversed_painters_order(scene_and_file):
+    scene, _ = scene_and_file
+    reversed_order = scantrace.render(scene["vertices"], scene["faces"], scene["vcolors"],
+                                      -np.asarray(scene["depth"], float), size=scene["size"],
+                                      background=scene["background"])
+    report = scantrace.diff(scene, reversed_order)
+    assert {"id": "order_reversed", "text": "faces are painted nearest first"}.items() <= \
+        report.verdict[0].items(), report.verdict

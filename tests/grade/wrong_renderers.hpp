@@ -83,22 +83,26 @@ inline std::vector<int> order(const Scene& s, bool reverse) {
 
 // The float canvas the test's renderer draws.
 // `painted` (when given) receives the face that wrote each pixel last (-1: none).
-inline RgbImage render_wrong(const Scene& s, Shading shading, Mistake m, int bits = 8,
-                             std::vector<int>* painted = nullptr) {
+// Several mistakes at once: `mistakes` (a span too wide and the bottom row dropped, say).
+inline RgbImage render_wrong(const Scene& s, Shading shading, std::vector<Mistake> mistakes,
+                             int bits = 8, std::vector<int>* painted = nullptr) {
+  const auto has = [&](Mistake m) {
+    return std::find(mistakes.begin(), mistakes.end(), m) != mistakes.end();
+  };
   RgbImage img(s.width, s.height, Rgb32f::from(s.background));
   if (painted) painted->assign(static_cast<std::size_t>(s.width) * s.height, -1);
   const auto mark = [&](long long x, long long y, int f) {
     if (painted) (*painted)[static_cast<std::size_t>(y) * s.width + x] = f;
   };
-  const FillRule rule = m == Mistake::closed_rule ? FillRule::closed : FillRule::top_left;
-  for (int f : order(s, m == Mistake::order_reversed)) {
+  const FillRule rule = has(Mistake::closed_rule) ? FillRule::closed : FillRule::top_left;
+  for (int f : order(s, has(Mistake::order_reversed))) {
     const auto p = points(s, f);
     auto c = colours(s, f);
-    if (m == Mistake::horizontal_edge_skipped && has_horizontal_edge(s, f, bits)) continue;
-    if (m == Mistake::gouraud_weights_permuted) std::swap(c[0], c[1]);
+    if (has(Mistake::horizontal_edge_skipped) && has_horizontal_edge(s, f, bits)) continue;
+    if (has(Mistake::gouraud_weights_permuted)) std::swap(c[0], c[1]);
     const reference::Polygon poly(p, bits);
     if (poly.degenerate()) {
-      if (m != Mistake::degenerate_drawn) continue;
+      if (!has(Mistake::degenerate_drawn)) continue;
       // The pixels whose centre is within half a pixel of the segment, in the flat colour.
       const Color flat = reference::mean_color(c);
       for (int y = 0; y < s.height; ++y)
@@ -125,17 +129,17 @@ inline RgbImage render_wrong(const Scene& s, Shading shading, Mistake m, int bit
       for (long long x = x0; x <= x1; ++x)
         if (poly.covers(x, y, FillRule::top_left)) last_row = y;
     for (long long y = y0; y <= y1; ++y) {
-      if (m == Mistake::bottom_row_dropped && y == last_row) continue;
+      if (has(Mistake::bottom_row_dropped) && y == last_row) continue;
       long long row_first = -1, row_last = -1;
       for (long long x = x0; x <= x1; ++x) {
         if (!poly.covers(x, y, rule)) continue;
         if (row_first < 0) row_first = x;
         row_last = x;
         const auto w = poly.barycentric(x, y);
-        Color col = shading == Shading::flat || m == Mistake::flat_colour_not_mean
-                        ? (m == Mistake::flat_colour_not_mean ? c[0] : reference::mean_color(c))
+        Color col = shading == Shading::flat || has(Mistake::flat_colour_not_mean)
+                        ? (has(Mistake::flat_colour_not_mean) ? c[0] : reference::mean_color(c))
                         : c[0] * w[0] + c[1] * w[1] + c[2] * w[2];
-        const long long to = m == Mistake::shift_right ? x + 1 : x;
+        const long long to = has(Mistake::shift_right) ? x + 1 : x;
         if (to >= s.width) continue;
         img(static_cast<int>(to), static_cast<int>(y)) = Rgb32f::from(col);
         mark(to, y, f);
@@ -148,12 +152,17 @@ inline RgbImage render_wrong(const Scene& s, Shading shading, Mistake m, int bit
         img(static_cast<int>(x), static_cast<int>(y)) = Rgb32f::from(col);
         mark(x, y, f);
       };
-      if ((m == Mistake::span_one_too_wide || m == Mistake::span_too_wide) && row_last >= 0)
+      if ((has(Mistake::span_one_too_wide) || has(Mistake::span_too_wide)) && row_last >= 0)
         extra(row_last + 1);
-      if (m == Mistake::span_too_wide && row_first >= 0) extra(row_first - 1);
+      if (has(Mistake::span_too_wide) && row_first >= 0) extra(row_first - 1);
     }
   }
   return img;
+}
+
+inline RgbImage render_wrong(const Scene& s, Shading shading, Mistake m, int bits = 8,
+                             std::vector<int>* painted = nullptr) {
+  return render_wrong(s, shading, std::vector<Mistake>{m}, bits, painted);
 }
 
 // As an 8-bit image file would hold it (round, or truncate for truncate_8bit).

@@ -189,7 +189,8 @@ def why(scene, x, y, *, shading="gouraud", fill_rule="top-left"):
 
     Every face whose bounding box holds the pixel centre, in drawing order, and what the fill did
     about the pixel. scene: a path, the dict of :func:`load_scene`, or the course's arrays
-    ``(faces, vertices, vcolors, depth)``. x, y: ints on the canvas (x the column, y the row).
+    ``(faces, vertices, vcolors, depth)``. x, y: ints on the canvas (x the column, y the row;
+    numpy integers too, as ``np.nonzero`` gives them).
     Only the faces around the pixel are traced.
     """
     s = _scene_arrays(scene, shading)
@@ -217,8 +218,8 @@ def diff(scene, image, *, shading="gouraud", fill_rule="top-left", tolerance=1 /
     """Compares ``image`` with the reference render of ``scene``: ``scantrace diff`` as a
     :class:`DiffReport`.
 
-    image: an H x W x 3 array, float in [0, 1] or uint8 (the course's format; read-only and
-    strided arrays are fine), or a path: a .npy file, or a PNG/JPEG/BMP (decoded by the OpenCV
+    image: an H x W x 3 array, float in [0, 1] or integers 0 .. 255 of any integer dtype (uint8,
+    int64, …: 8-bit values; read-only and strided arrays are fine), or a path: a .npy file, or a PNG/JPEG/BMP (decoded by the OpenCV
     part of the package). tolerance: the largest difference per channel that still counts as
     equal. undo: undo the global mistakes found before classifying the pixels (the command's
     default; ``--no-undo`` is ``undo=False``). ``report.agrees`` is the command's exit status 0.

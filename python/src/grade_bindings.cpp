@@ -26,14 +26,16 @@ namespace scantrace::python {
 
 namespace {
 
-// A pixel coordinate: a Python int on the canvas, named in the error.
+// A pixel coordinate: an int on the canvas (a numpy integer too: x and y from np.nonzero),
+// named in the error.
 int pixel_coordinate(py::handle value, const char* name, int size) {
-  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+  const std::optional<py::int_> n = integer_value(value);
+  if (!n)
     throw_type_error(std::string(name) + ": expected an int (a pixel " +
                      (name[0] == 'x' ? "column" : "row") + "), got " +
                      py::str(py::type::of(value).attr("__name__")).cast<std::string>());
   int overflow = 0;
-  const long long v = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+  const long long v = PyLong_AsLongLongAndOverflow(n->ptr(), &overflow);
   if (overflow || v < 0 || v >= size)
     throw_value_error(std::string(name) + ": expected a pixel " +
                       (name[0] == 'x' ? "column, 0 .. width - 1 = " : "row, 0 .. height - 1 = ") +
@@ -57,6 +59,19 @@ py::tuple why(py::handle vertices, py::handle faces, py::handle vcolors, py::han
   return py::make_tuple(story.to_json().dump(2), story.to_text());
 }
 
+// An integer image's values must be 8-bit ones: 0 .. 255 (the first one outside is named).
+void check_byte_range(const DoubleArray& f) {
+  const double* p = f.data();
+  for (py::ssize_t i = 0; i < f.size(); ++i)
+    if (p[i] < 0 || p[i] > 255) {
+      const py::ssize_t pixel = i / 3, w = f.shape(1);
+      throw_value_error("image[" + std::to_string(pixel / w) + ", " + std::to_string(pixel % w) +
+                        "]: an integer image holds 8-bit values 0 .. 255, got " +
+                        std::to_string(static_cast<long long>(p[i])) +
+                        " (a float image holds colours in [0, 1])");
+    }
+}
+
 // The submitted image: H×W×3, uint8 (bytes / 255, as a decoded PNG) or float32/float64 (as a
 // .npy, unscaled: [0, 255] floats are one of the global mistakes diff names).
 // `format`: "npy" for arrays and .npy files, else the image file's ("png", "jpeg", "bmp"), decoded
@@ -69,10 +84,12 @@ grade::SubmittedImage submitted_array(py::handle value, const std::string& forma
                      py::str(py::type::of(value).attr("__name__")).cast<std::string>());
   const auto a = py::reinterpret_borrow<py::array>(value);
   const char kind = a.dtype().kind();
-  const bool bytes = kind == 'u' && a.itemsize() == 1;
+  // Integers of any width are 8-bit values when they are 0 .. 255 (an int64 array from
+  // np.round(255 * img).astype(int), a uint16 holding bytes).
+  const bool bytes = kind == 'u' || kind == 'i';
   if (!bytes && !(kind == 'f' && (a.itemsize() == 4 || a.itemsize() == 8)))
-    throw_type_error("image: expected dtype uint8, float32 or float64, got " +
-                     py::str(a.dtype()).cast<std::string>());
+    throw_type_error("image: expected an integer dtype (values 0 .. 255), float32 or float64, "
+                     "got " + py::str(a.dtype()).cast<std::string>());
   if (a.ndim() != 3 || a.shape(2) != 3 || a.shape(0) == 0 || a.shape(1) == 0)
     throw_value_error(
         "image: expected an array of shape (H, W, 3), got " +
@@ -86,6 +103,7 @@ grade::SubmittedImage submitted_array(py::handle value, const std::string& forma
   // float32's range, so a float64 above FLT_MAX is refused instead of becoming inf.
   const DoubleArray f = DoubleArray::ensure(a);
   if (!f) throw py::error_already_set();
+  if (kind == 'i' || (kind == 'u' && a.itemsize() > 1)) check_byte_range(f);
   grade::SubmittedImage out;
   out.name = "image";
   out.format = format;

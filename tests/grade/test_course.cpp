@@ -30,12 +30,6 @@ const Scene& course_scene() {
   return scene;
 }
 
-FillOptions opts(Shading shading) {
-  FillOptions o;
-  o.shading = shading;
-  return o;
-}
-
 double share(const DiffReport& r, std::initializer_list<const char*> cats) {
   std::int64_t n = 0;
   for (const char* c : cats) n += r.categories.at(c);

@@ -16,12 +16,6 @@ using scantrace::grade::DiffReport;
 
 namespace {
 
-FillOptions opts(Shading shading) {
-  FillOptions o;
-  o.shading = shading;
-  return o;
-}
-
 bool mentions(const std::vector<std::string>& lines, const std::string& words) {
   return std::any_of(lines.begin(), lines.end(),
                      [&](const std::string& l) { return l.find(words) != std::string::npos; });

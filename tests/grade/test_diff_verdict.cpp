@@ -20,12 +20,6 @@ using scantrace::grade::DiffReport;
 
 namespace {
 
-FillOptions opts(Shading shading) {
-  FillOptions o;
-  o.shading = shading;
-  return o;
-}
-
 std::vector<std::string> ids(const DiffReport& r) {
   std::vector<std::string> out;
   for (const auto& v : r.verdict) out.push_back(v.id);

@@ -55,6 +55,13 @@ inline const char* catalogue_id(Mistake m) {
 }
 
 
+// The fill options of the reference a test compares with: the shading, the rest by default.
+inline FillOptions opts(Shading shading) {
+  FillOptions o;
+  o.shading = shading;
+  return o;
+}
+
 inline std::array<Vec2, 3> points(const Scene& s, int f) {
   return {s.vertices[s.faces[f][0]], s.vertices[s.faces[f][1]], s.vertices[s.faces[f][2]]};
 }

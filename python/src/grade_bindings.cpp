@@ -16,6 +16,7 @@
 #include "arrays.hpp"
 #include "grade/diff_picture.hpp"
 #include "grade/diff_report.hpp"
+#include "grade/global_mistakes.hpp"
 #include "grade/mistake_catalogue.hpp"
 #include "grade/pixel_story.hpp"
 #include "io/npy_reader.hpp"
@@ -175,6 +176,60 @@ py::tuple diff(py::handle vertices, py::handle faces, py::handle vcolors, py::ha
   return py::make_tuple(report.to_json().dump(2), report.to_markdown(), pic);
 }
 
+// diff's whole-image mistakes (grade/global_mistakes.cpp) on images alone, for the grader
+// (scantrace/grade/whole_image.py): `reference` H×W×3, `faces` H×W true where the reference
+// shows a face, the scene's `background`. One implementation and one set of thresholds (the
+// catalogue's) for `diff` and `scantrace grade`. Returns ([{'kind', 'text', 'undone'}], the
+// image on the reference's canvas with the mistakes undone (float64), notes).
+py::tuple whole_image_mistakes(py::handle image, py::handle reference, py::handle faces,
+                               py::handle background, py::handle tolerance, bool undo) {
+  const DoubleArray ref = float_array(reference, "reference", {'H', 'W', 3});
+  const int H = static_cast<int>(ref.shape(0)), W = static_cast<int>(ref.shape(1));
+  const py::array mask_any = py::module_::import("numpy").attr("asarray")(faces, "bool");
+  if (mask_any.ndim() != 2 || mask_any.shape(0) != H || mask_any.shape(1) != W)
+    throw_value_error("faces: expected a boolean array of the reference's shape (" +
+                      std::to_string(H) + ", " + std::to_string(W) + ")");
+  const auto mask = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(mask_any);
+  grade::SubmittedImage in = submitted_array(image, "npy");
+  const double tol = tolerance.cast<double>();
+  Scene canvas;  // what the detection needs of a scene: the canvas and its background
+  canvas.width = W, canvas.height = H;
+  canvas.background = color_argument(background, "background");
+  grade::FaceIdImage ids{W, H, std::vector<int>(static_cast<std::size_t>(W) * H, -1)};
+  RgbImage reference_image(W, H);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * W + x;
+      if (mask.data()[i]) ids.ids[i] = 0;
+      const double* p = ref.data() + 3 * i;
+      reference_image(x, y) = {static_cast<float>(p[0]), static_cast<float>(p[1]),
+                               static_cast<float>(p[2])};
+    }
+  RgbImage out;
+  std::vector<unsigned char> compared;
+  std::vector<std::string> notes;
+  std::vector<grade::GlobalMistake> found;
+  {
+    py::gil_scoped_release free;
+    found = grade::find_global_mistakes(canvas, reference_image, ids, in, tol, undo, out,
+                                        compared, notes);
+  }
+  py::list mistakes;
+  for (const auto& g : found) {
+    py::dict d;
+    d["kind"] = g.kind, d["text"] = g.text, d["undone"] = g.undone;
+    mistakes.append(d);
+  }
+  py::array_t<double> pixels({H, W, 3});
+  double* q = pixels.mutable_data();
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x, q += 3) {
+      const Rgb32f c = out(x, y);
+      q[0] = c.r, q[1] = c.g, q[2] = c.b;
+    }
+  return py::make_tuple(mistakes, pixels, py::cast(notes));
+}
+
 py::dict check(const PyTrace& t, const std::string& name) {
   py::dict d;
   try {
@@ -221,6 +276,9 @@ void bind_grade(py::module_& m) {
         py::arg("image"), py::kw_only(), py::arg("shading"), py::arg("fill_rule"), py::arg("size"),
         py::arg("background"), py::arg("tolerance"), py::arg("undo"), py::arg("format"));
   m.def("read_npy_image", &read_npy_image, py::arg("path"));
+  m.def("whole_image_mistakes", &whole_image_mistakes, py::arg("image"), py::arg("reference"),
+        py::arg("faces"), py::kw_only(), py::arg("background"), py::arg("tolerance"),
+        py::arg("undo"));
   m.def("check", &check, py::arg("trace"), py::arg("name"));
   m.def("check_file", &check_file, py::arg("path"));
   py::list categories;

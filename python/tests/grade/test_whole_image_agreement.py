@@ -8,6 +8,7 @@ import pytest
 
 import scantrace
 from scantrace.grade import diagnose
+from scantrace.grade.whole_image import whole_image_mistakes
 
 SHADING = "f"
 
@@ -54,7 +55,22 @@ def test_diff_and_the_grader_name_the_same_whole_image_mistakes(scene, reference
     make, expected = IMAGES[name]
     img = make(scene, reference)
     from_diff = {g["kind"] for g in scantrace.diff(scene, img, shading=SHADING).global_mistakes}
-    _, causes = diagnose.diagnose_image(img, reference, _uncovered(scene, reference), {})
+    uncovered = _uncovered(scene, reference)
+    _, causes = diagnose.diagnose_image(img, reference, uncovered, {})
     from_grader = {c.id for c in causes}
+    fixed, whole, _ = whole_image_mistakes(img, reference, uncovered)
     assert from_diff == expected
     assert from_grader == expected
+    assert {c.id for c in whole} == expected
+    # Undone, the image is the reference again (its wrong patch aside).
+    assert (np.abs(fixed - reference).max(axis=2) > 1.5 / 255).sum() <= 16
+
+
+def test_the_grader_side_call_names_a_0_255_scale(scene, reference):
+    """diff's scaled_255, through the grader's call (diagnose_image has no such cause yet)."""
+    img = reference * 255
+    fixed, causes, _ = whole_image_mistakes(img, reference, _uncovered(scene, reference))
+    assert [c.id for c in causes] == ["scaled_255"]
+    assert np.abs(fixed - reference).max() <= 1e-4
+    assert causes[0].sentence == "The image holds colours on a 0–255 scale; the course's images " \
+                                 "are floats in [0, 1]."

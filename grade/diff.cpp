@@ -329,8 +329,17 @@ class DiffRun {
       if (I == R) continue;
       const bool extension = I >= 0 && !faces_[I].degenerate() && !faces_[I].covers(x, y, rule_);
       if (extension) {
-        left[static_cast<std::size_t>(I)] += faces_[I].covers(x + 1, y, rule_);
-        right[static_cast<std::size_t>(I)] += faces_[I].covers(x - 1, y, rule_);
+        const bool l = faces_[I].covers(x + 1, y, rule_), r = faces_[I].covers(x - 1, y, rule_);
+        left[static_cast<std::size_t>(I)] += l;
+        right[static_cast<std::size_t>(I)] += r;
+        // Span ends rounded to the nearest pixel reach only centres at most half a pixel from
+        // the face along the row; floor(x_L) .. ceil(x_R) reaches farther ones too. (Centres on
+        // the outline, an exact crossing, both reach: they do not tell.)
+        if ((l || r) && faces_[I].on_outline(x, y) == OnOutline::no) {
+          ++evidence_.extended_off_outline;
+          evidence_.extended_beyond_half += (l && !faces_[I].within(x + 0.5, y, 0)) ||
+                                            (r && !faces_[I].within(x - 0.5, y, 0));
+        }
       }
       if (R >= 0 && !extension) ++uncovered[static_cast<std::size_t>(R)];
     }

@@ -17,11 +17,11 @@ class Verdicts {
     for (const auto& g : r_.global) name_if_known(g.kind, g.text);
     if (r_.differing_pixels == 0) return std::move(out_);
     explained_ = false;
-    const bool wide = spans_too_wide();
+    const std::string wide = spans_too_wide();
     order();
     rows();
     moved(wide);
-    if (!wide) outline();  // a span too wide puts its right end on outlines: not another rule
+    if (wide.empty()) outline();  // a span too wide puts its right end on outlines: not another rule
     missing_faces();
     colours();
     if (at("degenerate_drawn") >= share()) name("degenerate_drawn", count("degenerate_drawn"));
@@ -49,15 +49,20 @@ class Verdicts {
   }
 
   // Extra pixels on both ends of the spans (a face moved sideways gains on one side only, the
-  // closed rule on the right end only).
-  bool spans_too_wide() {
+  // closed rule on the right end only): floor(x_L) .. ceil(x_R), or span ends rounded to the
+  // nearest pixel when no extra pixel is more than half a pixel from its face.
+  // Returns the words for the mistake named ("" for none).
+  std::string spans_too_wide() {
     const std::int64_t L = e_.extended_left, R = e_.extended_right;
-    if (!(static_cast<double>(L + R) >= share() && 4 * std::min(L, R) >= L + R)) return false;
-    name("span_too_wide",
+    if (!(static_cast<double>(L + R) >= share() && 4 * std::min(L, R) >= L + R)) return "";
+    const bool rounded = 10 * e_.extended_beyond_half < e_.extended_off_outline;
+    name(rounded ? "span_end_rounding" : "span_too_wide",
          fmt::format("{} pixels show a face left of its span's start and {} right of its end; "
-                     "{} near-boundary pixels are missing",
-                     L, R, r_.near_boundary_missing));
-    return true;
+                     "of the {} not on its outline, {} are more than half a pixel from it; {} "
+                     "near-boundary pixels are missing",
+                     L, R, e_.extended_off_outline, e_.extended_beyond_half,
+                     r_.near_boundary_missing));
+    return rounded ? "span ends rounded" : "spans one pixel too wide";
   }
 
   void order() {
@@ -94,16 +99,14 @@ class Verdicts {
   }
 
   // Faces moved by one pixel; and what the image cannot tell.
-  void moved(bool wide) {
+  void moved(const std::string& wide) {
     const std::int64_t s = at("shifted");
     const std::string settle =
         "`scantrace grade` on the code settles it: its probes fill one triangle at a time";
-    if (wide && 10 * s >= r_.differing_pixels) {
-      out_.push_back({"",
-                      "an image cannot always tell spans one pixel too wide from faces moved by "
-                      "one pixel",
+    if (!wide.empty() && 10 * s >= r_.differing_pixels) {
+      out_.push_back({"", "an image cannot always tell " + wide + " from faces moved by one pixel",
                       fmt::format("{} pixels read as moved (`shifted`); {}", s, settle)});
-    } else if (!wide && static_cast<double>(s) >= share()) {
+    } else if (wide.empty() && static_cast<double>(s) >= share()) {
       name("edge_lag", count("shifted"));
       out_.push_back({"",
                       "an image cannot always tell a face moved by one pixel from span ends "

@@ -17,6 +17,10 @@ namespace scantrace::grade {
 struct VerdictEvidence {
   // Pixels showing a face just outside its spans: left of a span's start, right of its end.
   std::int64_t extended_left = 0, extended_right = 0;
+  // Of those, the ones whose centre is not on the face's outline, and of these the ones more
+  // than half a pixel from the face along the row: none when span ends are rounded to the
+  // nearest pixel, about half when they are floor(x_L) .. ceil(x_R).
+  std::int64_t extended_off_outline = 0, extended_beyond_half = 0;
   // The missing near-boundary pixels by pattern (diff.cpp's tag_missing).
   std::map<std::string, std::int64_t> missing_tags;
   // Of the reference's pixels of faces two rows high or more: those in each face's first row,

@@ -31,10 +31,13 @@ bool names(const DiffReport& r, const std::string& id) {
   return std::find(v.begin(), v.end(), id) != v.end();
 }
 
+enum class SpanEnds { ceil, rounded, floor_ceil };
+
 // A flat scanline fill as students write it: per edge, x starts at the edge's first row and is
 // accumulated with x += dx/dy (`accumulate`), or computed from the edge's start on every row;
-// spans ceil(x_L) .. ceil(x_R) - 1, rows ceil(y_min) .. ceil(y_max) - 1, painter's order.
-RgbImage scanline_render(const Scene& s, bool accumulate) {
+// spans ceil(x_L) .. ceil(x_R) - 1 (or round(x_L) .. round(x_R), or floor(x_L) .. ceil(x_R)),
+// rows ceil(y_min) .. ceil(y_max) - 1, painter's order.
+RgbImage scanline_render(const Scene& s, bool accumulate, SpanEnds ends = SpanEnds::ceil) {
   RgbImage img(s.width, s.height, Rgb32f::from(s.background));
   for (int f : order(s, false)) {
     const auto p = points(s, f);
@@ -61,7 +64,13 @@ RgbImage scanline_render(const Scene& s, bool accumulate) {
         }
       if (xs.size() != 2 || y < 0 || y >= s.height) continue;
       const auto [xl, xr] = std::minmax(xs[0], xs[1]);
-      for (double x = std::max(0.0, std::ceil(xl)); x < std::min<double>(s.width, std::ceil(xr)); ++x)
+      const double first = ends == SpanEnds::ceil      ? std::ceil(xl)
+                           : ends == SpanEnds::rounded ? std::nearbyint(xl)
+                                                       : std::floor(xl);
+      const double end = ends == SpanEnds::ceil ? std::ceil(xr)  // exclusive
+                         : ends == SpanEnds::rounded ? std::nearbyint(xr) + 1
+                                                     : std::ceil(xr) + 1;
+      for (double x = std::max(0.0, first); x < std::min<double>(s.width, end); ++x)
         img(static_cast<int>(x), static_cast<int>(y)) = colour;
     }
   }
@@ -156,4 +165,16 @@ TEST_CASE("verdict: x accumulated in floating point drifts, and is not the close
   CHECK(names(r, "float_drift"));
   CHECK_FALSE(names(r, "closed_rule"));
   CHECK(r.verdict.front().text == "x drifts: accumulated with x += dx/dy in floating point");
+}
+
+TEST_CASE("verdict: span ends rounded to the nearest pixel are told from spans too wide",
+          "[grade][diff][verdict]") {
+  const Scene s = drift_scene();
+  for (const auto& [ends, id] : {std::pair{SpanEnds::rounded, "span_end_rounding"},
+                                 std::pair{SpanEnds::floor_ceil, "span_too_wide"}}) {
+    const DiffReport r = diff(s, opts(Shading::flat), as_8bit(scanline_render(s, false, ends)));
+    INFO(id << ": " << r.to_json()["verdict"].dump() << " " << r.to_json()["categories"].dump());
+    REQUIRE_FALSE(r.verdict.empty());
+    CHECK(r.verdict.front().id == id);
+  }
 }

@@ -79,7 +79,8 @@ Command add_diff_command(CLI::App& app, grade::JpegBmpDecoder jpeg_bmp) {
   CLI::App* cmd = app.add_subcommand(
       "diff",
       "Compares IMAGE, what another renderer produced for SCENE, with the reference\n"
-      "render, and says where and why they differ: global mistakes first (canvas\n"
+      "render, and says where and why they differ: a verdict first, naming the\n"
+      "mistakes in the words of the grader's catalogue; the global mistakes (canvas\n"
       "size, background colour, transposed, flipped, BGR, [0, 255] floats), each\n"
       "undone before the pixels are classified (boundary, near_boundary, widened,\n"
       "shifted, order, order_tie, missing_face, degenerate_drawn, colour,\n"

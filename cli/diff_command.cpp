@@ -92,7 +92,7 @@ Command add_diff_command(CLI::App& app, grade::JpegBmpDecoder jpeg_bmp) {
       ->required();
   cmd->add_option("IMAGE", args->image,
                   "the image to grade: 8-bit PNG, JPEG or BMP, or a NumPy\n"
-                  ".npy array HxWx3 (float in [0, 1] or uint8, RGB)")
+                  ".npy array HxWx3 (float in [0, 1] or integers 0..255, RGB)")
       ->required();
   add_fill_flags(*cmd, args->fill);
   add_model_flags(*cmd, args->model, false);

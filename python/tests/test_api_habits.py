@@ -102,3 +102,24 @@ def test_a_single_face_trace_keeps_its_id(scene):
     assert spans == [(t0.scanline(0, y).span.x_begin, t0.scanline(0, y).span.x_end) for y in rows]
     assert scantrace.check(t).ok
     assert np.array_equal(t.image, t0.image)
+
+
+def test_integer_npy_files_of_any_dtype(scene, tmp_path):
+    """np.save of an int64 0..255 image: diff reads it, from Python and from the command."""
+    import json
+    import subprocess
+
+    from conftest import SCANTRACE, write_scene_json
+    img = np.round(scantrace.render(**scene) * 255).astype(np.int64)
+    img[5:9, 5:9] = 0  # 16 pixels wrong
+    np.save(tmp_path / "img.npy", img)
+    expected = scantrace.diff(scene, img.astype(np.uint8))
+    assert scantrace.diff(scene, tmp_path / "img.npy").differing_pixels == \
+        expected.differing_pixels > 0
+    path = write_scene_json(tmp_path / "scene.json", scene["vertices"], scene["faces"],
+                            scene["vcolors"], scene["depth"], size=tuple(scene["size"]),
+                            background=scene["background"])
+    r = subprocess.run([SCANTRACE, "-q", "diff", str(path), str(tmp_path / "img.npy"), "--json"],
+                       capture_output=True, text=True)
+    assert r.returncode == 3, r.stderr
+    assert json.loads(r.stdout)["differing_pixels"] == expected.differing_pixels

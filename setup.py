@@ -32,8 +32,35 @@ import subprocess
 import sys
 import time
 
-from setuptools import Extension, setup
-from setuptools.command.build_ext import build_ext
+
+def refuse_an_interpreter_that_cannot_build():
+    """Fails at once, with the one command that works, when this interpreter cannot build or run
+    scantrace without a package index: a pyenv or conda python3 (or a venv made from one) has no
+    setuptools, wheel or numpy, and `pip install --no-build-isolation .` then failed late ("invalid
+    command 'bdist_wheel'", then no numpy). An isolated build (plain `pip install .` with an
+    index, or `python -m build`) brings setuptools and wheel itself, and pip installs numpy as a
+    dependency: numpy is then not needed here."""
+    import importlib.util
+    isolated = any("pip-build-env" in p or "build-env-" in p for p in sys.path)
+    needed = ("setuptools", "wheel") + (() if isolated else ("numpy",))
+    missing = [m for m in needed if importlib.util.find_spec(m) is None]
+    if not missing:
+        return
+    sys.exit(
+        f"scantrace: {sys.executable} has no {', '.join(missing)} (a pyenv or conda python3?), "
+        "and without a package index pip cannot fetch them.\n"
+        "Build with Debian's python3, which has numpy, setuptools and wheel (deps.sh installs "
+        "them):\n"
+        "    /usr/bin/python3 -m venv --system-site-packages ~/venvs/scantrace\n"
+        "    ~/venvs/scantrace/bin/pip install --no-build-isolation .\n"
+        "With a package index, plain `pip install .` works from any python3 (it fetches "
+        "setuptools, wheel and numpy).")
+
+
+refuse_an_interpreter_that_cannot_build()
+
+from setuptools import Extension, setup  # noqa: E402 (after the check: it may be missing)
+from setuptools.command.build_ext import build_ext  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent
 

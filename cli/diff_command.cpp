@@ -79,7 +79,8 @@ Command add_diff_command(CLI::App& app, grade::JpegBmpDecoder jpeg_bmp) {
   CLI::App* cmd = app.add_subcommand(
       "diff",
       "Compares IMAGE, what another renderer produced for SCENE, with the reference\n"
-      "render, and says where and why they differ: global mistakes first (canvas\n"
+      "render, and says where and why they differ: a verdict first, naming the\n"
+      "mistakes in the words of the grader's catalogue; the global mistakes (canvas\n"
       "size, background colour, transposed, flipped, BGR, [0, 255] floats), each\n"
       "undone before the pixels are classified (boundary, near_boundary, widened,\n"
       "shifted, order, order_tie, missing_face, degenerate_drawn, colour,\n"
@@ -91,7 +92,7 @@ Command add_diff_command(CLI::App& app, grade::JpegBmpDecoder jpeg_bmp) {
       ->required();
   cmd->add_option("IMAGE", args->image,
                   "the image to grade: 8-bit PNG, JPEG or BMP, or a NumPy\n"
-                  ".npy array HxWx3 (float in [0, 1] or uint8, RGB)")
+                  ".npy array HxWx3 (float in [0, 1] or integers 0..255, RGB)")
       ->required();
   add_fill_flags(*cmd, args->fill);
   add_model_flags(*cmd, args->model, false);

@@ -54,6 +54,11 @@ nlohmann::json DiffReport::to_json() const {
                              {"reference_face", e.reference_face},
                              {"image_face", e.image_face},
                              {"why", e.why}});
+  nlohmann::json verdict_json = nlohmann::json::array();
+  for (const auto& v : verdict)
+    verdict_json.push_back({{"id", v.id.empty() ? nlohmann::json(nullptr) : nlohmann::json(v.id)},
+                            {"text", v.text},
+                            {"evidence", v.evidence}});
   nlohmann::json cats = nlohmann::json::object();
   for (const char* c : kCategories) cats[c] = categories.at(c);
   return {{"format", "scantrace-diff"},
@@ -64,6 +69,7 @@ nlohmann::json DiffReport::to_json() const {
           {"compared_pixels", compared_pixels},
           {"differing_pixels", differing_pixels},
           {"agrees", agrees()},
+          {"verdict", verdict_json},
           {"global", global_json},
           {"categories", cats},
           {"near_boundary", {{"extra", near_boundary_extra}, {"missing", near_boundary_missing}}},
@@ -86,6 +92,11 @@ std::string DiffReport::to_markdown() const {
     for (const auto& n : notes) md += "\nNote: " + n + "\n";
     return md;
   }
+  // The verdict first, in the catalogue's words; the categories after it say where.
+  for (const auto& v : verdict)
+    md += fmt::format("{} **{}**{}\n", v.id.empty() ? "-" : "- Verdict:", v.text,
+                      v.evidence.empty() ? "" : " (" + v.evidence + ")");
+  if (!verdict.empty()) md += "\n";
   md += fmt::format("**{} of {} pixels differ ({:.2f} %).**\n\n", differing_pixels, compared_pixels,
                     percent(differing_pixels, compared_pixels));
   if (!global.empty()) {

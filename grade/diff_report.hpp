@@ -9,6 +9,9 @@
 //      around it (which face does the image show there?) and put into the first category that
 //      applies (kCategories, in that order; docs/grading.md explains each).
 //
+//   3. The verdict: the mistakes of the catalogue the global mistakes and the categories point to,
+//      in the catalogue's words (diff_verdict.hpp), printed first.
+//
 // The result is a value type: the CLI prints it (Markdown, JSON) and draws it (diff.png); tests
 // read its numbers.
 #include <array>
@@ -67,6 +70,14 @@ struct Example {
   std::string why;                           // the one-paragraph story of the pixel
 };
 
+// One line of the verdict: a mistake of the catalogue (grade/mistake_catalogue.hpp) in its words,
+// or (id empty) what the image cannot tell and what would.
+struct Verdict {
+  std::string id;        // the catalogue's id; "" for a line that names no mistake
+  std::string text;      // the catalogue's verdict sentence
+  std::string evidence;  // the counts behind it, in words
+};
+
 struct DiffReport {
   int width = 0, height = 0;              // the scene's canvas
   int image_width = 0, image_height = 0;  // the submitted image's
@@ -74,6 +85,7 @@ struct DiffReport {
   std::int64_t compared_pixels = 0;
   std::int64_t differing_pixels = 0;
   std::vector<GlobalMistake> global;
+  std::vector<Verdict> verdict;  // the mistakes named, first in the report (diff_verdict.hpp)
   std::map<std::string, std::int64_t> categories;  // every name of kCategories
   std::int64_t near_boundary_extra = 0, near_boundary_missing = 0;
   std::vector<std::string> patterns;  // dominant patterns in words

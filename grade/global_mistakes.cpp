@@ -7,6 +7,8 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "grade/mistake_catalogue.hpp"
+
 namespace scantrace::grade {
 namespace {
 
@@ -81,14 +83,34 @@ bool transform_applies(std::size_t t, int iw, int ih, int W, int H) {
   return t == kIdentity || (iw == W && ih == H);
 }
 
-// Colours in [0, 255]: a float array whose values go beyond 1 by more than the tolerance. Undone
-// (in `src`) when `undo`.
-void find_scaled_255(const SubmittedImage& in, double tol, bool undo, RgbImage& src,
-                     std::vector<GlobalMistake>& found) {
+// Colours in [0, 255]: a float array on that scale, that is most of its painted pixels (those
+// not of the scene's background) above 1. One bright pixel, or a Gouraud colour extrapolated a
+// little beyond a vertex's, is not a scale: the pixels above 1 are then a note saying what they
+// are, and are compared as they are (issue 47: one pixel at 1.01 gave "scaled_255" and 87,925
+// differing pixels). Undone (in `src`) when `undo`.
+void find_scaled_255(const Scene& scene, const SubmittedImage& in, double tol, bool undo,
+                     RgbImage& src, std::vector<GlobalMistake>& found,
+                     std::vector<std::string>& notes) {
   if (in.format != "npy" || in.eight_bit) return;
+  const Rgb32f background = Rgb32f::from(scene.background);
   float top = 0;
-  for (const Rgb32f p : src.pixels()) top = std::max({top, p.r, p.g, p.b});
-  if (!(top > 1 + tol && top <= 255 + tol)) return;
+  std::int64_t painted = 0, above = 0;
+  for (const Rgb32f p : src.pixels()) {
+    const float m = std::max({p.r, p.g, p.b});
+    top = std::max(top, m);
+    if (max_diff(p, background) > tol) ++painted;
+    above += m > 1.0f;
+  }
+  if (above == 0) return;
+  const bool scaled = static_cast<double>(above) > whole_image_tolerance("scaled_share") *
+                                                       static_cast<double>(painted) &&
+                     top <= 255 + tol;
+  if (!scaled) {
+    notes.push_back(fmt::format("{} pixel{} above 1.0 (largest {:.4g}): colours extrapolated "
+                                "outside the triangle?",
+                                above, above == 1 ? "" : "s", top));
+    return;
+  }
   found.push_back({"scaled_255",
                    fmt::format("colours are scaled to [0, 255] (the largest value is {:.4g}), "
                                "not [0, 1]",
@@ -125,8 +147,12 @@ std::size_t find_transform(const Scene& scene, const RgbImage& reference, const 
   std::size_t best = kIdentity;
   for (std::size_t t = 1; t < transforms().size(); ++t)
     if (score[t] > score[best]) best = t;
-  if (best != kIdentity &&
-      (score[best] < 2 * score[kIdentity] || 2 * score[best] < face_pixels))
+  // The thresholds are the catalogue's, shared with the Python grader's diagnose_image.
+  const double gain = whole_image_tolerance("transform_gain"),
+               share = whole_image_tolerance("transform_share");
+  const auto d = [](std::int64_t n) { return static_cast<double>(n); };
+  if (best != kIdentity && (d(score[best]) < gain * d(score[kIdentity]) ||
+                            d(score[best]) < share * d(face_pixels)))
     best = kIdentity;
   if (best != kIdentity) {
     found.push_back({transforms()[best].kind,
@@ -184,7 +210,9 @@ void find_background(const Scene& scene, const FaceIdImage& ids,
   std::int64_t mode_count = 0;
   for (const auto& [key, n] : counts)
     if (n > mode_count || (n == mode_count && key < mode)) mode = key, mode_count = n;
-  if (bg_pixels == 0 || 2 * mode_count < bg_pixels) return;
+  if (bg_pixels == 0 || static_cast<double>(mode_count) <
+                            whole_image_tolerance("background_share") * static_cast<double>(bg_pixels))
+    return;
   const Color seen{(mode >> 16) / 255.0, ((mode >> 8) & 255) / 255.0, (mode & 255) / 255.0};
   // The mode is 8-bit; compare with half a level of slack on top of the tolerance.
   const Rgb32f expected = Rgb32f::from(scene.background);
@@ -217,10 +245,11 @@ void find_background(const Scene& scene, const FaceIdImage& ids,
 std::vector<GlobalMistake> find_global_mistakes(const Scene& scene, const RgbImage& reference,
                                                 const FaceIdImage& ids, const SubmittedImage& in,
                                                 double tol, bool undo, RgbImage& image,
-                                                std::vector<unsigned char>& compared) {
+                                                std::vector<unsigned char>& compared,
+                                                std::vector<std::string>& notes) {
   std::vector<GlobalMistake> found;
   RgbImage src = in.pixels;
-  find_scaled_255(in, tol, undo, src, found);
+  find_scaled_255(scene, in, tol, undo, src, found, notes);
   const std::size_t best = find_transform(scene, reference, ids, src, tol, undo, found);
   resample(scene, src, undo ? best : kIdentity, image, compared);
   find_background(scene, ids, compared, tol, undo, image, found);

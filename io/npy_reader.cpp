@@ -3,8 +3,11 @@
 #include <bit>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
+#include <utility>
 
 #include "io/input_error.hpp"
 #include "io/json_input.hpp"
@@ -141,6 +144,17 @@ NpyHeader parse_npy_header(std::string_view bytes, const std::string& name) {
   return h;
 }
 
+// (bytes per value, signed) of a little-endian (or single-byte) integer dtype string.
+static std::optional<std::pair<std::size_t, bool>> integer_descr(const std::string& d) {
+  static const std::pair<const char*, std::pair<std::size_t, bool>> kTypes[] = {
+      {"|u1", {1, false}}, {"<u1", {1, false}}, {"u1", {1, false}}, {"|i1", {1, true}},
+      {"<i1", {1, true}},  {"i1", {1, true}},   {"<u2", {2, false}}, {"<i2", {2, true}},
+      {"<u4", {4, false}}, {"<i4", {4, true}},  {"<u8", {8, false}}, {"<i8", {8, true}}};
+  for (const auto& [name, type] : kTypes)
+    if (d == name) return type;
+  return std::nullopt;
+}
+
 NpyLayout parse_npy_layout(std::string_view bytes, const std::string& name,
                            std::uint64_t max_bytes) {
   const NpyHeader header = parse_npy_header(bytes, name);
@@ -153,15 +167,17 @@ NpyLayout parse_npy_layout(std::string_view bytes, const std::string& name,
     out.item = 4;
   } else if (descr == "<f8") {
     out.item = 8;
-  } else if (descr == "|u1" || descr == "<u1" || descr == "u1") {
-    out.item = 1, out.integer = true;
+  } else if (const auto bits = integer_descr(descr)) {
+    // Integers of any width hold 8-bit values (np.round(255 * img).astype(int) saved as int64);
+    // each value is checked to be 0..255 as it is read (npy_value).
+    out.item = bits->first, out.integer = true, out.is_signed = bits->second;
   } else if (descr == "|O" || descr == "O") {
     throw InputError(name, "header descr",
                      "object arrays (pickles) are refused; save the canvas as float or uint8");
   } else {
     throw InputError(
         name, "header descr",
-        "dtype '" + descr + "' is not supported (little-endian float32, float64 or uint8 only)");
+        "dtype '" + descr + "' is not supported (little-endian float32, float64 or integers only)");
   }
   out.dtype = descr;
   if (fortran)
@@ -188,14 +204,40 @@ NpyLayout parse_npy_layout(std::string_view bytes, const std::string& name,
   return out;
 }
 
+// Value k of an integer array, as a double (exact for the 0..255 range that is accepted; larger
+// magnitudes only need to compare outside it).
+static double integer_value(const NpyLayout& layout, const char* p, std::size_t k) {
+  const char* at = p + layout.item * k;
+  const auto read = [at](auto zero) {
+    decltype(zero) x;
+    std::memcpy(&x, at, sizeof x);
+    return static_cast<double>(x);
+  };
+  switch (layout.item) {
+    case 1: return layout.is_signed ? read(std::int8_t{}) : read(std::uint8_t{});
+    case 2: return layout.is_signed ? read(std::int16_t{}) : read(std::uint16_t{});
+    case 4: return layout.is_signed ? read(std::int32_t{}) : read(std::uint32_t{});
+    default: return layout.is_signed ? read(std::int64_t{}) : read(std::uint64_t{});
+  }
+}
+
 float npy_value(const NpyLayout& layout, std::string_view bytes, std::size_t k,
                 const std::string& name) {
   static_assert(std::endian::native == std::endian::little,
                 "the reader assumes a little-endian host");
   const char* p = bytes.data() + layout.data;
   double v;
-  if (layout.item == 1) {
-    v = static_cast<unsigned char>(p[k]);
+  if (layout.integer) {
+    v = integer_value(layout, p, k);
+    if (v < 0 || v > 255) {
+      const std::size_t pixel = k / 3;
+      throw InputError(name,
+                       "pixel [" + std::to_string(pixel / layout.width) + "][" +
+                           std::to_string(pixel % layout.width) + "]",
+                       "value " + std::to_string(static_cast<long long>(v)) +
+                           " is not 0..255 (an integer image holds 8-bit values; a float image, "
+                           "colours in [0, 1])");
+    }
   } else if (layout.item == 4) {
     float f;
     std::memcpy(&f, p + 4 * k, 4);

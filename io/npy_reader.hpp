@@ -14,8 +14,8 @@ namespace scantrace {
 
 struct NpyImage {
   int height = 0, width = 0;
-  std::string dtype;          // "<f4", "<f8" or "|u1" (as written in the header)
-  bool integer = false;       // uint8: values are 0..255
+  std::string dtype;          // "<f4", "<f8", "|u1", "<i8", … (as written in the header)
+  bool integer = false;       // an integer dtype: values are 0..255
   std::vector<float> values;  // height·width·3, row-major, RGB as stored (not scaled)
 };
 
@@ -33,8 +33,9 @@ NpyHeader parse_npy_header(std::string_view bytes, const std::string& name);
 struct NpyLayout {
   int height = 0, width = 0;
   std::string dtype;
-  bool integer = false;
-  std::size_t item = 0;  // bytes per value: 1, 4 or 8
+  bool integer = false;   // an integer dtype: 8-bit values 0..255 (any width, issue 47)
+  bool is_signed = false;  // of an integer dtype
+  std::size_t item = 0;    // bytes per value: 1, 2, 4 or 8
   std::size_t data = 0;  // offset of the first value
   std::size_t values() const { return static_cast<std::size_t>(height) * width * 3; }
 };

@@ -65,7 +65,9 @@ def render_img(faces, vertices, vcolors, depth, shading):
 
     faces: K x 3 vertex indices (0-based). vertices: L x 2 ``[x, y]``. vcolors: L x 3 RGB in
     [0, 1]. depth: L (or L x 1), one depth per vertex. shading: ``'f'`` (flat) or ``'g'``
-    (Gouraud); ``'flat'`` and ``'gouraud'`` are accepted too.
+    (Gouraud); ``'flat'`` and ``'gouraud'`` are accepted too, in any case (``'F'``,
+    ``'Flat'``). Note the course's order, faces first; :func:`render` takes vertices first (a
+    swap is named in the error).
 
     Painter's order: a face's depth is the mean of its vertex depths; the deepest is drawn
     first, ties keep face order. The result equals the C++ render (``scantrace render``) value
@@ -130,11 +132,16 @@ def write_png(img, path):
 
 
 def trace_triangle(vertices, vcolors, *, shading="gouraud", fill_rule="top-left",
-                   level="scanline", size=_COURSE_SIZE, background=_WHITE):
+                   level="scanline", size=_COURSE_SIZE, background=_WHITE, face=0):
     """Fills one triangle with the real fill and returns its :class:`Trace`, recorded in memory.
 
     level: ``'triangle'`` (edge table), ``'scanline'`` (adds every row: active edges, active
-    points, span, span colours) or ``'pixel'`` (adds every pixel). The triangle is face 0::
+    points, span, span colours) or ``'pixel'`` (adds every pixel). face: the index the trace
+    calls the triangle by, 0 unless given: a face taken out of a scene keeps its number with
+    ``trace_triangle(v[f[3109]], c[f[3109]], face=3109)`` (then ``t.scanline(3109, y)``).
+    ``t.scanline(i, y)`` for a row the triangle does not fill raises IndexError saying why (its
+    rows are ``ceil(y_min) .. ceil(y_max) − 1``: the top-left rule leaves the bottom vertex's row
+    out). With face 0::
 
         t = trace_triangle([[20, 20], [250, 80], [300, 400]], np.eye(3))
         t.edge_table(0).edges[1].dx_dy
@@ -144,7 +151,7 @@ def trace_triangle(vertices, vcolors, *, shading="gouraud", fill_rule="top-left"
         t.image                               # the image the traced fill drew (float64)
     """
     return _scantrace.trace_triangle(vertices, vcolors, shading=shading, fill_rule=fill_rule,
-                                     level=level, size=size, background=background)
+                                     level=level, size=size, background=background, face=face)
 
 
 def trace_scene(vertices, faces, vcolors, depth, *, shading="gouraud", fill_rule="top-left",

@@ -90,6 +90,9 @@ class DiffReport:
     """Where and why an image differs from the reference render, as ``scantrace diff`` says it.
 
     ``agrees``: the command's exit status 0 (no differing pixel, no global mistake).
+    ``verdict``: the mistakes named, first in every form of the report, in the words of the mistake
+    catalogue (scantrace/grade/mistakes.json, the grader's): [{'id', 'text', 'evidence'}], id
+    None for a line that names no mistake (what the image cannot tell, and what would).
     ``differing_pixels``, ``compared_pixels``, ``tolerance``; ``categories``: the count of
     differing pixels per category (boundary, near_boundary, widened, shifted, order, order_tie,
     missing_face, degenerate_drawn, colour, background, other; docs/grading.md);
@@ -109,6 +112,7 @@ class DiffReport:
         self._picture = picture
         d = json.loads(json_text)
         self.agrees = d["agrees"]
+        self.verdict = d["verdict"]
         self.differing_pixels = d["differing_pixels"]
         self.compared_pixels = d["compared_pixels"]
         self.tolerance = d["tolerance"]
@@ -143,8 +147,10 @@ class DiffReport:
         kinds = ", ".join(f"{c} {n}" for n, c in top)
         mistakes = f"; global: {', '.join(g['kind'] for g in self.global_mistakes)}" \
             if self.global_mistakes else ""
-        return (f"<DiffReport: {self.differing_pixels} of {self.compared_pixels} pixels differ"
-                f"{' (' + kinds + ')' if kinds else ''}{mistakes}>")
+        named = "; ".join(v["text"] for v in self.verdict if v["id"])
+        return (f"<DiffReport: {named + '; ' if named else ''}{self.differing_pixels} of "
+                f"{self.compared_pixels} pixels differ{' (' + kinds + ')' if kinds else ''}"
+                f"{mistakes}>")
 
     def _repr_html_(self):
         return _jupyter.diff_html(self)
@@ -183,7 +189,8 @@ def why(scene, x, y, *, shading="gouraud", fill_rule="top-left"):
 
     Every face whose bounding box holds the pixel centre, in drawing order, and what the fill did
     about the pixel. scene: a path, the dict of :func:`load_scene`, or the course's arrays
-    ``(faces, vertices, vcolors, depth)``. x, y: ints on the canvas (x the column, y the row).
+    ``(faces, vertices, vcolors, depth)``. x, y: ints on the canvas (x the column, y the row;
+    numpy integers too, as ``np.nonzero`` gives them).
     Only the faces around the pixel are traced.
     """
     s = _scene_arrays(scene, shading)
@@ -211,8 +218,8 @@ def diff(scene, image, *, shading="gouraud", fill_rule="top-left", tolerance=1 /
     """Compares ``image`` with the reference render of ``scene``: ``scantrace diff`` as a
     :class:`DiffReport`.
 
-    image: an H x W x 3 array, float in [0, 1] or uint8 (the course's format; read-only and
-    strided arrays are fine), or a path: a .npy file, or a PNG/JPEG/BMP (decoded by the OpenCV
+    image: an H x W x 3 array, float in [0, 1] or integers 0 .. 255 of any integer dtype (uint8,
+    int64, …: 8-bit values; read-only and strided arrays are fine), or a path: a .npy file, or a PNG/JPEG/BMP (decoded by the OpenCV
     part of the package). tolerance: the largest difference per channel that still counts as
     equal. undo: undo the global mistakes found before classifying the pixels (the command's
     default; ``--no-undo`` is ``undo=False``). ``report.agrees`` is the command's exit status 0.

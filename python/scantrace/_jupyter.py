@@ -130,7 +130,13 @@ def diff_html(report):
         share = 100 * report.differing_pixels / max(1, report.compared_pixels)
         head = (f"<b>{report.differing_pixels} of {report.compared_pixels} pixels differ "
                 f"({share:.2f} %).</b>")
-    parts = [f"<div><p>{head}</p>"]
+    parts = ["<div>"]
+    if report.verdict:  # the mistakes named, first, in the catalogue's words
+        items = "".join(f"<li><b>{e(v['text'])}</b>"
+                        f"{' (' + e(v['evidence']) + ')' if v['evidence'] else ''}</li>"
+                        for v in report.verdict)
+        parts.append(f"<p>Verdict:</p><ul>{items}</ul>")
+    parts.append(f"<p>{head}</p>")
     if report.global_mistakes:
         items = "".join(f"<li><code>{e(g['kind'])}</code>: {e(g['text'])}"
                         f"{' (undone before classifying)' if g['undone'] else ''}</li>"

@@ -1,5 +1,6 @@
 #include "arrays.hpp"
 
+#include <cctype>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -121,6 +122,18 @@ bool all_in_unit_range(const double* p, py::ssize_t n) {
   return (flags >> 63) == 0;
 }
 
+// The course's render_img takes (faces, vertices, …), render and the others (vertices, faces, …):
+// a K×3 array where the vertices go and an L×2 one where the faces go are the two swapped.
+void refuse_swapped(py::handle vertices, py::handle faces) {
+  if (vertices.is_none() || faces.is_none()) return;
+  const py::array v = as_numpy(vertices, "vertices"), f = as_numpy(faces, "faces");
+  if (v.ndim() == 2 && v.shape(1) == 3 && f.ndim() == 2 && f.shape(1) == 2)
+    throw_value_error("faces and vertices look swapped (vertices: an array of shape " +
+                      shape_text(v) + ", faces: " + shape_text(f) +
+                      "): render and trace_scene take (vertices, faces, …); render_img, and a "
+                      "scene given to why or diff as a tuple, the course's (faces, vertices, …)");
+}
+
 }  // namespace
 
 DoubleArray float_array(py::handle value, const char* name, const std::vector<Dim>& shape) {
@@ -215,10 +228,24 @@ std::pair<int, int> size_argument(py::handle value, const char* name) {
   return {static_cast<int>(w), static_cast<int>(h)};
 }
 
-Shading shading_argument(const std::string& s) {
+std::optional<py::int_> integer_value(py::handle value) {
+  if (py::isinstance<py::bool_>(value)) return std::nullopt;
+  if (py::isinstance<py::int_>(value)) return py::reinterpret_borrow<py::int_>(value);
+  // numpy's integer scalars (not np.bool_, which numpy does not count as an integer).
+  const py::module_ np = py::module_::import("numpy");
+  if (py::isinstance(value, np.attr("integer")))
+    return py::reinterpret_steal<py::int_>(PyNumber_Index(value.ptr()));
+  return std::nullopt;
+}
+
+Shading shading_argument(const std::string& given) {
+  std::string s = given;
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (s == "f" || s == "flat") return Shading::flat;
   if (s == "g" || s == "gouraud") return Shading::gouraud;
-  throw_value_error("shading: expected 'f', 'g', 'flat' or 'gouraud', got '" + s + "'");
+  const std::string& s_given = given;
+  throw_value_error("shading: expected 'f', 'g', 'flat' or 'gouraud' (in any case), got '" +
+                    s_given + "'");
 }
 
 FillRule fill_rule_argument(const std::string& s) {
@@ -236,6 +263,7 @@ FillOptions fill_options(const std::string& shading, const std::string& fill_rul
 
 Scene scene_from_arrays(py::handle vertices, py::handle faces, py::handle vcolors, py::handle depth,
                         std::pair<int, int> size, Color background) {
+  refuse_swapped(vertices, faces);
   const DoubleArray v = float_array(vertices, "vertices", {'L', 2});
   const py::ssize_t n = v.shape(0);
   const DoubleArray c = float_array(vcolors, "vcolors", {n == 0 ? Dim('L') : Dim(n), 3});

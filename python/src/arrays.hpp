@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,10 @@ struct Dim {
 // `value` as a C-contiguous float64 array of the given shape: no copy when it already is one.
 // Refuses non-numeric and boolean dtypes (TypeError), other shapes and non-finite values
 // (ValueError).
+// An integer from Python: an int or a numpy integer scalar (x and y from np.nonzero are
+// np.int64), never a bool; nullopt for anything else, whose message the caller words.
+std::optional<py::int_> integer_value(py::handle value);
+
 DoubleArray float_array(py::handle value, const char* name, const std::vector<Dim>& shape);
 // The same for indices: integer dtypes only.
 IndexArray index_array(py::handle value, const char* name, const std::vector<Dim>& shape);
@@ -45,7 +50,8 @@ Color color_argument(py::handle value, const char* name);
 // (width, height), both positive.
 std::pair<int, int> size_argument(py::handle value, const char* name = "size");
 
-Shading shading_argument(const std::string& value);     // 'f', 'g', 'flat', 'gouraud'
+// 'f', 'g', 'flat', 'gouraud', in any case ('F', 'Flat', 'GOURAUD').
+Shading shading_argument(const std::string& value);
 FillRule fill_rule_argument(const std::string& value);  // 'top-left', 'closed'
 FillOptions fill_options(const std::string& shading, const std::string& fill_rule);
 

@@ -16,6 +16,8 @@
 #include "arrays.hpp"
 #include "grade/diff_picture.hpp"
 #include "grade/diff_report.hpp"
+#include "grade/global_mistakes.hpp"
+#include "grade/mistake_catalogue.hpp"
 #include "grade/pixel_story.hpp"
 #include "io/npy_reader.hpp"
 #include "py_trace.hpp"
@@ -25,14 +27,16 @@ namespace scantrace::python {
 
 namespace {
 
-// A pixel coordinate: a Python int on the canvas, named in the error.
+// A pixel coordinate: an int on the canvas (a numpy integer too: x and y from np.nonzero),
+// named in the error.
 int pixel_coordinate(py::handle value, const char* name, int size) {
-  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+  const std::optional<py::int_> n = integer_value(value);
+  if (!n)
     throw_type_error(std::string(name) + ": expected an int (a pixel " +
                      (name[0] == 'x' ? "column" : "row") + "), got " +
                      py::str(py::type::of(value).attr("__name__")).cast<std::string>());
   int overflow = 0;
-  const long long v = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+  const long long v = PyLong_AsLongLongAndOverflow(n->ptr(), &overflow);
   if (overflow || v < 0 || v >= size)
     throw_value_error(std::string(name) + ": expected a pixel " +
                       (name[0] == 'x' ? "column, 0 .. width - 1 = " : "row, 0 .. height - 1 = ") +
@@ -56,6 +60,19 @@ py::tuple why(py::handle vertices, py::handle faces, py::handle vcolors, py::han
   return py::make_tuple(story.to_json().dump(2), story.to_text());
 }
 
+// An integer image's values must be 8-bit ones: 0 .. 255 (the first one outside is named).
+void check_byte_range(const DoubleArray& f) {
+  const double* p = f.data();
+  for (py::ssize_t i = 0; i < f.size(); ++i)
+    if (p[i] < 0 || p[i] > 255) {
+      const py::ssize_t pixel = i / 3, w = f.shape(1);
+      throw_value_error("image[" + std::to_string(pixel / w) + ", " + std::to_string(pixel % w) +
+                        "]: an integer image holds 8-bit values 0 .. 255, got " +
+                        std::to_string(static_cast<long long>(p[i])) +
+                        " (a float image holds colours in [0, 1])");
+    }
+}
+
 // The submitted image: H×W×3, uint8 (bytes / 255, as a decoded PNG) or float32/float64 (as a
 // .npy, unscaled: [0, 255] floats are one of the global mistakes diff names).
 // `format`: "npy" for arrays and .npy files, else the image file's ("png", "jpeg", "bmp"), decoded
@@ -68,10 +85,12 @@ grade::SubmittedImage submitted_array(py::handle value, const std::string& forma
                      py::str(py::type::of(value).attr("__name__")).cast<std::string>());
   const auto a = py::reinterpret_borrow<py::array>(value);
   const char kind = a.dtype().kind();
-  const bool bytes = kind == 'u' && a.itemsize() == 1;
+  // Integers of any width are 8-bit values when they are 0 .. 255 (an int64 array from
+  // np.round(255 * img).astype(int), a uint16 holding bytes).
+  const bool bytes = kind == 'u' || kind == 'i';
   if (!bytes && !(kind == 'f' && (a.itemsize() == 4 || a.itemsize() == 8)))
-    throw_type_error("image: expected dtype uint8, float32 or float64, got " +
-                     py::str(a.dtype()).cast<std::string>());
+    throw_type_error("image: expected an integer dtype (values 0 .. 255), float32 or float64, "
+                     "got " + py::str(a.dtype()).cast<std::string>());
   if (a.ndim() != 3 || a.shape(2) != 3 || a.shape(0) == 0 || a.shape(1) == 0)
     throw_value_error(
         "image: expected an array of shape (H, W, 3), got " +
@@ -85,6 +104,7 @@ grade::SubmittedImage submitted_array(py::handle value, const std::string& forma
   // float32's range, so a float64 above FLT_MAX is refused instead of becoming inf.
   const DoubleArray f = DoubleArray::ensure(a);
   if (!f) throw py::error_already_set();
+  if (kind == 'i' || (kind == 'u' && a.itemsize() > 1)) check_byte_range(f);
   grade::SubmittedImage out;
   out.name = "image";
   out.format = format;
@@ -156,6 +176,60 @@ py::tuple diff(py::handle vertices, py::handle faces, py::handle vcolors, py::ha
   return py::make_tuple(report.to_json().dump(2), report.to_markdown(), pic);
 }
 
+// diff's whole-image mistakes (grade/global_mistakes.cpp) on images alone, for the grader
+// (scantrace/grade/whole_image.py): `reference` H×W×3, `faces` H×W true where the reference
+// shows a face, the scene's `background`. One implementation and one set of thresholds (the
+// catalogue's) for `diff` and `scantrace grade`. Returns ([{'kind', 'text', 'undone'}], the
+// image on the reference's canvas with the mistakes undone (float64), notes).
+py::tuple whole_image_mistakes(py::handle image, py::handle reference, py::handle faces,
+                               py::handle background, py::handle tolerance, bool undo) {
+  const DoubleArray ref = float_array(reference, "reference", {'H', 'W', 3});
+  const int H = static_cast<int>(ref.shape(0)), W = static_cast<int>(ref.shape(1));
+  const py::array mask_any = py::module_::import("numpy").attr("asarray")(faces, "bool");
+  if (mask_any.ndim() != 2 || mask_any.shape(0) != H || mask_any.shape(1) != W)
+    throw_value_error("faces: expected a boolean array of the reference's shape (" +
+                      std::to_string(H) + ", " + std::to_string(W) + ")");
+  const auto mask = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(mask_any);
+  grade::SubmittedImage in = submitted_array(image, "npy");
+  const double tol = tolerance.cast<double>();
+  Scene canvas;  // what the detection needs of a scene: the canvas and its background
+  canvas.width = W, canvas.height = H;
+  canvas.background = color_argument(background, "background");
+  grade::FaceIdImage ids{W, H, std::vector<int>(static_cast<std::size_t>(W) * H, -1)};
+  RgbImage reference_image(W, H);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * W + x;
+      if (mask.data()[i]) ids.ids[i] = 0;
+      const double* p = ref.data() + 3 * i;
+      reference_image(x, y) = {static_cast<float>(p[0]), static_cast<float>(p[1]),
+                               static_cast<float>(p[2])};
+    }
+  RgbImage out;
+  std::vector<unsigned char> compared;
+  std::vector<std::string> notes;
+  std::vector<grade::GlobalMistake> found;
+  {
+    py::gil_scoped_release free;
+    found = grade::find_global_mistakes(canvas, reference_image, ids, in, tol, undo, out,
+                                        compared, notes);
+  }
+  py::list mistakes;
+  for (const auto& g : found) {
+    py::dict d;
+    d["kind"] = g.kind, d["text"] = g.text, d["undone"] = g.undone;
+    mistakes.append(d);
+  }
+  py::array_t<double> pixels({H, W, 3});
+  double* q = pixels.mutable_data();
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x, q += 3) {
+      const Rgb32f c = out(x, y);
+      q[0] = c.r, q[1] = c.g, q[2] = c.b;
+    }
+  return py::make_tuple(mistakes, pixels, py::cast(notes));
+}
+
 py::dict check(const PyTrace& t, const std::string& name) {
   py::dict d;
   try {
@@ -202,6 +276,9 @@ void bind_grade(py::module_& m) {
         py::arg("image"), py::kw_only(), py::arg("shading"), py::arg("fill_rule"), py::arg("size"),
         py::arg("background"), py::arg("tolerance"), py::arg("undo"), py::arg("format"));
   m.def("read_npy_image", &read_npy_image, py::arg("path"));
+  m.def("whole_image_mistakes", &whole_image_mistakes, py::arg("image"), py::arg("reference"),
+        py::arg("faces"), py::kw_only(), py::arg("background"), py::arg("tolerance"),
+        py::arg("undo"));
   m.def("check", &check, py::arg("trace"), py::arg("name"));
   m.def("check_file", &check_file, py::arg("path"));
   py::list categories;
@@ -210,6 +287,9 @@ void bind_grade(py::module_& m) {
   py::list colours;
   for (const auto& c : grade::kCategoryColours) colours.append(py::make_tuple(c[0], c[1], c[2]));
   m.attr("DIFF_CATEGORY_COLOURS") = py::tuple(colours);
+  // The mistake catalogue as embedded in the C++ (the Python grader reads the package's copy of
+  // the same file; a test compares them).
+  m.attr("MISTAKE_CATALOGUE_JSON") = std::string(grade::mistake_catalogue_json());
 }
 
 }  // namespace scantrace::python

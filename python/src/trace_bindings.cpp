@@ -6,7 +6,12 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
+#include <climits>
+#include <cmath>
 #include <cstring>
+#include <optional>
+#include <variant>
 
 #include "arrays.hpp"
 #include "casters.hpp"
@@ -52,11 +57,12 @@ TraceLevel level_argument(const std::string& s) {
 
 // A count from Python: an int (not a bool, not a float) in 0 .. 2^63 - 1.
 std::int64_t count_argument(py::handle value, const char* name) {
-  if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+  const std::optional<py::int_> v = integer_value(value);  // numpy integers too
+  if (!v)
     throw_type_error(std::string(name) + ": expected an int, got " +
                      py::str(py::type::of(value).attr("__name__")).cast<std::string>());
   int overflow = 0;
-  const long long n = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+  const long long n = PyLong_AsLongLongAndOverflow(v->ptr(), &overflow);
   if (overflow || n < 0)
     throw_value_error(std::string(name) + ": expected a count in 0 .. 2^63 - 1, got " +
                       py::repr(value).cast<std::string>());
@@ -106,6 +112,33 @@ TraceFilter filter_argument(const std::string& level, py::handle triangles, py::
   }
   if (!max_events.is_none()) f.max_events = count_argument(max_events, "max_events");
   return f;
+}
+
+// The face index a single triangle's trace calls it by (its index in a scene: a face taken out
+// of the course scene keeps its number).
+int face_id_argument(py::handle face) {
+  const std::optional<py::int_> v = integer_value(face);
+  if (!v)
+    throw_type_error("face: expected an int (the face's index in its scene), got " +
+                     py::str(py::type::of(face).attr("__name__")).cast<std::string>());
+  int overflow = 0;
+  const long long n = PyLong_AsLongLongAndOverflow(v->ptr(), &overflow);
+  if (overflow || n < 0 || n > INT_MAX)
+    throw_value_error("face: expected an index in 0 .. 2^31 - 1, got " +
+                      py::repr(face).cast<std::string>());
+  return static_cast<int>(n);
+}
+
+// The trace of triangle 0 with every event's triangle called `id` instead.
+Trace renumbered(const Trace& t, int id) {
+  std::vector<Event> events = t.events();
+  for (Event& e : events)
+    std::visit(
+        [id](auto& ev) {
+          if constexpr (requires { ev.triangle; }) ev.triangle = id;
+        },
+        e);
+  return Trace::from_events(std::move(events), "memory");
 }
 
 std::string trace_repr(const PyTrace& t) {
@@ -309,6 +342,48 @@ void bind_events(py::module_& m) {
   bind_pixel_history(m);
 }
 
+// Trace.scanline(i, y) for a row the trace does not hold: why, in the fill's terms (issue 47:
+// the row of a triangle's bottom vertex was a bare IndexError).
+Scanline scanline_or_why_not(const PyTrace& t, int i, std::int64_t y) {
+  if (const Scanline* s = t.trace.find_scanline(i, y)) return *s;
+  const std::string row = "row " + std::to_string(y);
+  const TriangleBegin* begin = t.trace.has_triangle(i) ? t.trace.find_triangle_begin(i) : nullptr;
+  if (t.trace.has_triangle(i))
+    if (const auto skipped = t.trace.skipped(i))
+      throw py::index_error(row + " is not filled: triangle " + std::to_string(i) +
+                            " is skipped by the fill (" + skipped->reason + ")");
+  if (!begin) {
+    std::string held;
+    for (int k : t.trace.triangles()) held += (held.empty() ? "" : ", ") + std::to_string(k);
+    throw py::index_error("triangle " + std::to_string(i) + " is not in the trace; it holds " +
+                          (held.empty() ? "no triangle" : "triangle(s) " + held) +
+                          " (trace_triangle calls its triangle by face=, 0 unless given)");
+  }
+  double y_min = begin->snapped.at(0).y, y_max = y_min;
+  for (const Vec2& v : begin->snapped) y_min = std::min(y_min, v.y), y_max = std::max(y_max, v.y);
+  const auto first = static_cast<std::int64_t>(std::ceil(y_min)),
+             last = static_cast<std::int64_t>(std::ceil(y_max)) - 1;
+  const std::string rows = "triangle " + std::to_string(i) + "'s rows are " +
+                           std::to_string(first) + ".." + std::to_string(last) +
+                           " (ceil(y_min) .. ceil(y_max) − 1";
+  if (t.trace.header().level == "triangle")
+    throw py::index_error(row + " is not in the trace: it was recorded at level 'triangle', "
+                          "without rows (trace at level='scanline'); " + rows + ")");
+  if (y >= first && y <= last)
+    throw py::index_error(row + " is not in the trace (its rows= selection left it out); " +
+                          rows + ")");
+  std::string why;
+  if (y < first)
+    why = ": row " + std::to_string(y) + " is above the triangle's top, y_min = " +
+          py::repr(py::float_(y_min)).cast<std::string>() + ")";
+  else if (static_cast<double>(y) == y_max)
+    why = ": the top-left rule leaves the bottom vertex's row out)";
+  else
+    why = ": row " + std::to_string(y) + " is below the triangle's bottom, y_max = " +
+          py::repr(py::float_(y_max)).cast<std::string>() + ")";
+  throw py::index_error(row + " is not filled: " + rows + why);
+}
+
 void bind_trace_class(py::module_& m) {
   py::class_<PyTrace>(m, "Trace", R"(A trace of the fill: what it did, event by event, with queries.
 
@@ -351,7 +426,7 @@ A query about a triangle or row that is not in the trace raises IndexError.)")
           py::arg("triangle"))
       .def(
           "scanline",
-          [](const PyTrace& t, int i, std::int64_t y) { return t.trace.scanline(i, y); },
+          [](const PyTrace& t, int i, std::int64_t y) { return scanline_or_why_not(t, i, y); },
           py::arg("triangle"), py::arg("y"))
       .def("has_scanline",
            [](const PyTrace& t, int i, std::int64_t y) { return t.trace.has_scanline(i, y); })
@@ -386,7 +461,8 @@ void bind_trace(py::module_& m) {
       "trace_triangle",
       [](py::handle vertices, py::handle vcolors, const std::string& shading,
          const std::string& fill_rule, const std::string& level, py::handle size,
-         py::handle background) {
+         py::handle background, py::handle face) {
+        const int id = face_id_argument(face);
         TriangleInput in;
         in.vertices = triangle_vertices(vertices);
         in.colors = triangle_colors(vcolors);
@@ -400,10 +476,12 @@ void bind_trace(py::module_& m) {
         py::gil_scoped_release free;
         RgbImage image;
         Trace t = record_triangle(in, opt, filter, &image);
+        if (id != 0) t = renumbered(t, id);
         return PyTrace{std::move(t), std::move(image)};
       },
       py::arg("vertices"), py::arg("vcolors"), py::kw_only(), py::arg("shading"),
-      py::arg("fill_rule"), py::arg("level"), py::arg("size"), py::arg("background"));
+      py::arg("fill_rule"), py::arg("level"), py::arg("size"), py::arg("background"),
+      py::arg("face") = 0);
   m.def(
       "trace_scene",
       [](py::handle vertices, py::handle faces, py::handle vcolors, py::handle depth,

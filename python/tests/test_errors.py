@@ -54,7 +54,7 @@ def scene(**change):
     (lambda: scantrace.render(**scene(depth=np.array([0, 1, np.nan, 3]))), ValueError,
      "depth[2]: NaN and infinity are not allowed, got nan"),
     (lambda: scantrace.render(**scene(), shading="phong"), ValueError,
-     "shading: expected 'f', 'g', 'flat' or 'gouraud', got 'phong'"),
+     "shading: expected 'f', 'g', 'flat' or 'gouraud' (in any case), got 'phong'"),
     (lambda: scantrace.render(**scene(), fill_rule="open"), ValueError,
      "fill_rule: expected 'top-left' or 'closed', got 'open'"),
     (lambda: scantrace.render(**scene(), size=(0, 10)), ValueError,
@@ -93,7 +93,7 @@ def test_bad_files_name_the_file_and_element(tmp_path):
 
 def test_query_of_a_missing_row_is_an_index_error():
     t = scantrace.trace_triangle(TRI, RGB)
-    with pytest.raises(IndexError, match="triangle 0 has no scanline 500"):
+    with pytest.raises(IndexError, match="row 500 is not filled: triangle 0's rows are"):
         t.scanline(0, 500)
     # A pixel no triangle wrote is not an error: its history is empty and final() is None.
     assert t.pixel_history(5, 5).final() is None

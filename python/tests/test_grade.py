@@ -127,7 +127,10 @@ def test_diff_reads_read_only_and_strided_arrays_as_copies(scene):
     (np.zeros((512, 512)), ValueError, "expected an array of shape (H, W, 3), got (512, 512)"),
     (np.zeros((512, 512, 4)), ValueError, "got (512, 512, 4)"),
     (np.zeros((0, 5, 3)), ValueError, "got (0, 5, 3)"),
-    (np.zeros((512, 512, 3), np.int32), TypeError, "dtype uint8, float32 or float64, got int32"),
+    (np.zeros((512, 512, 3), bool), TypeError, "an integer dtype (values 0 .. 255), float32 or "
+                                               "float64, got bool"),
+    (np.full((512, 512, 3), 256, np.int32), ValueError, "image[0, 0]: an integer image holds "
+                                                        "8-bit values 0 .. 255, got 256"),
     (np.full((512, 512, 3), np.nan), ValueError, "image[0, 0]: NaN and infinity are not allowed"),
     (np.full((512, 512, 3), 1e300), ValueError, "beyond float32's range"),
     ([[1, 2, 3]], TypeError, "expected an H x W x 3 numpy array or a path, got list"),

@@ -6,6 +6,7 @@ trace player stepping. Without the course scene the notebook runs on the built-i
 import json
 import os
 import shutil
+import sys
 
 import pytest
 
@@ -28,8 +29,17 @@ def execute(tmp_path, monkeypatch, scene):
     nb = nbformat.read(NOTEBOOK, as_version=4)
     for cell in nb.cells:  # the notebook is kept without outputs (a clean diff)
         assert cell.cell_type != "code" or not cell.outputs
-    # The kernel is this interpreter (ipykernel's own "python3"): it inherits PYTHONPATH.
-    nbclient.NotebookClient(nb, timeout=300, kernel_name="python3",
+    # Executed as shipped: with the kernel its metadata names, the README's `scantrace` (what
+    # `python -m ipykernel install --user --name scantrace` makes), here one of this interpreter
+    # in a kernel directory of the test's own: it inherits PYTHONPATH.
+    name = nb.metadata.kernelspec.name
+    kernel_dir = tmp_path / "jupyter" / "kernels" / name
+    kernel_dir.mkdir(parents=True, exist_ok=True)
+    (kernel_dir / "kernel.json").write_text(json.dumps({
+        "argv": [sys.executable, "-m", "ipykernel_launcher", "-f", "{connection_file}"],
+        "display_name": name, "language": "python"}))
+    monkeypatch.setenv("JUPYTER_PATH", str(tmp_path / "jupyter"))
+    nbclient.NotebookClient(nb, timeout=300,
                             resources={"metadata": {"path": str(tmp_path)}}).execute()
     return nb
 
@@ -52,6 +62,15 @@ def builtin_run(tmp_path_factory):
     tmp = tmp_path_factory.mktemp("notebook")
     with pytest.MonkeyPatch.context() as mp:
         return execute(tmp, mp, tmp / "absent.npy"), tmp
+
+
+def test_the_notebook_names_the_readmes_kernel():
+    """The README makes a kernel named `scantrace`; the shipped notebook asks for that one (it
+    named `python3`, whose interpreter need not have scantrace: ModuleNotFoundError)."""
+    nb = nbformat.read(NOTEBOOK, as_version=4)
+    assert nb.metadata.kernelspec.name == "scantrace"
+    readme = (SOURCE_DIR / "README.md").read_text(encoding="utf-8")
+    assert f"-m ipykernel install --user --name {nb.metadata.kernelspec.name}" in readme
 
 
 def test_the_notebook_runs_on_the_builtin_scene(builtin_run):

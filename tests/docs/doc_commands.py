@@ -115,8 +115,10 @@ NOT_RUN = {
     "bash scripts/model_images.sh": "regenerates committed images in the source tree",
     "cmake --install build --prefix ~/.local": "installs into the home directory; "
         "the install test installs into a temporary prefix",
-    "python3 -m venv --system-site-packages ~/venvs/scantrace": "makes a venv in the home "
-        "directory; python/tests/test_install.py installs a wheel into a fresh venv",
+    "/usr/bin/python3 -m venv --system-site-packages ~/venvs/scantrace": "makes a venv in the "
+        "home directory; python/tests/test_setup_interpreter.py runs it into a temporary one "
+        "with another python3 first on PATH, python/tests/test_install.py installs a wheel into "
+        "a fresh venv",
     "build/cli/scantrace step scantrace-demo/triangle.jsonl": "a window: tests/interactive",
     'build/cli/scantrace step --triangle "20,20 250,80 300,400"': "a window: tests/interactive",
     "echo $?": "prints the previous command's status, which RUN checks",
@@ -129,7 +131,8 @@ NOT_RUN = {
     "below it); the grade command above runs the same grading",
 }
 
-PROGRAMS = ("build/cli/scantrace", "scantrace", "bash", "cmake", "python3", "PYTHONPATH=",
+PROGRAMS = ("build/cli/scantrace", "scantrace", "bash", "cmake", "python3", "/usr/bin/python3",
+            "PYTHONPATH=",
             "echo", "build/bench/")
 
 

@@ -30,12 +30,6 @@ const Scene& course_scene() {
   return scene;
 }
 
-FillOptions opts(Shading shading) {
-  FillOptions o;
-  o.shading = shading;
-  return o;
-}
-
 double share(const DiffReport& r, std::initializer_list<const char*> cats) {
   std::int64_t n = 0;
   for (const char* c : cats) n += r.categories.at(c);
@@ -74,7 +68,7 @@ TEST_CASE("course scene: each wrong renderer lands in its category", "[course]")
     REQUIRE(count_differing(good, render<Rgb32f>(s, opts(sh))) == 0);
     CHECK(diff(s, opts(sh), as_8bit(good)).agrees());
     {
-      const RgbImage bad = render_wrong(s, sh, Mistake::nearest_first);
+      const RgbImage bad = render_wrong(s, sh, Mistake::order_reversed);
       const DiffReport r = diff(s, opts(sh), as_8bit(bad));
       CHECK_SIMILAR_COUNT(r.differing_pixels, count_differing(good, as_8bit(bad).pixels));
       // Measured: 99.5 % (flat), 92.9 % (Gouraud: the rest are centres on a shared edge, which
@@ -82,7 +76,7 @@ TEST_CASE("course scene: each wrong renderer lands in its category", "[course]")
       CHECK(share(r, {"order", "order_tie"}) > (sh == Shading::flat ? 0.98 : 0.9));
     }
     {
-      const RgbImage bad = render_wrong(s, sh, Mistake::drop_last_row);
+      const RgbImage bad = render_wrong(s, sh, Mistake::bottom_row_dropped);
       const DiffReport r = diff(s, opts(sh), as_8bit(bad));
       CHECK_SIMILAR_COUNT(r.differing_pixels, count_differing(good, as_8bit(bad).pixels));
       // Measured: 96.8 % (flat), 92.7 % (Gouraud); the rest are centres on a shared edge
@@ -90,7 +84,7 @@ TEST_CASE("course scene: each wrong renderer lands in its category", "[course]")
       CHECK(share(r, {"near_boundary", "missing_face"}) > 0.9);
     }
     {
-      const RgbImage bad = render_wrong(s, sh, Mistake::skip_horizontal);
+      const RgbImage bad = render_wrong(s, sh, Mistake::horizontal_edge_skipped);
       const DiffReport r = diff(s, opts(sh), as_8bit(bad));
       CHECK_SIMILAR_COUNT(r.differing_pixels, count_differing(good, as_8bit(bad).pixels));
       // Measured: 92.6 % (flat), 85.9 % (Gouraud).
@@ -106,7 +100,7 @@ TEST_CASE("course scene: each wrong renderer lands in its category", "[course]")
   }
   {
     const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
-    const RgbImage bad = render_wrong(s, Shading::flat, Mistake::flat_first_vertex);
+    const RgbImage bad = render_wrong(s, Shading::flat, Mistake::flat_colour_not_mean);
     const DiffReport r = diff(s, opts(Shading::flat), as_8bit(bad));
     CHECK_SIMILAR_COUNT(r.differing_pixels, count_differing(good, as_8bit(bad).pixels));
     CHECK(share(r, {"colour"}) > 0.88);  // measured 90.6 %

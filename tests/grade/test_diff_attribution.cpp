@@ -92,7 +92,7 @@ TEST_CASE("the missing faces listed are those the table counts as missing_face",
   add_face(s, {Vec2{6, 6}, Vec2{14, 6}, Vec2{6, 14}}, {0.1, 0.3, 0.9}, 5);
   const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
 
-  const RgbImage reversed = render_wrong(s, Shading::flat, Mistake::nearest_first);
+  const RgbImage reversed = render_wrong(s, Shading::flat, Mistake::order_reversed);
   const long long n_hidden = count_differing(good, reversed);
   REQUIRE(n_hidden > 20);
   const DiffReport r = diff(s, flat(), as_8bit(reversed));
@@ -102,7 +102,7 @@ TEST_CASE("the missing faces listed are those the table counts as missing_face",
   CHECK(r.missing_faces.empty());
   CHECK(r.to_markdown().find("## Missing faces") == std::string::npos);
 
-  const RgbImage skipped = render_wrong(s, Shading::flat, Mistake::skip_horizontal);
+  const RgbImage skipped = render_wrong(s, Shading::flat, Mistake::horizontal_edge_skipped);
   const DiffReport m = diff(s, flat(), as_8bit(skipped));
   INFO(m.to_markdown());
   CHECK(m.categories.at("missing_face") == count_differing(good, skipped));
@@ -150,7 +150,7 @@ TEST_CASE("report.json carries every differing pixel's category as runs", "[grad
   const Scene s = generated_scene();
   std::vector<int> painted;
   const RgbImage good = render_wrong(s, Shading::flat, Mistake::none);
-  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::nearest_first);
+  const RgbImage bad = render_wrong(s, Shading::flat, Mistake::order_reversed);
   const DiffReport r = diff(s, flat(), as_8bit(bad));
   const nlohmann::json j = r.to_json();
   REQUIRE(j.contains("category_map"));

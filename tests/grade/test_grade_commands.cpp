@@ -82,7 +82,7 @@ TEST_CASE("diff: bad inputs are one line and exit 1, usage errors exit 2", "[gra
            data;
   };
   scantrace::test::write_text(dir / "pickle.npy", npy_file("|O", "(160, 200, 3)", "\x80\x04"));
-  scantrace::test::write_text(dir / "int.npy", npy_file("<i8", "(160, 200, 3)", ""));
+  scantrace::test::write_text(dir / "complex.npy", npy_file("<c16", "(160, 200, 3)", ""));
   scantrace::test::write_text(dir / "shape.npy",
                               npy_file("<f4", "(160, 200)", std::string(160 * 200 * 4, '\0')));
   std::string nan(160 * 200 * 3 * 4, '\0');
@@ -92,7 +92,7 @@ TEST_CASE("diff: bad inputs are one line and exit 1, usage errors exit 2", "[gra
   for (const auto& [file, words] :
        std::vector<std::pair<std::string, std::string>>{{"cut.png", "truncated"},
                                                         {"pickle.npy", "pickles"},
-                                                        {"int.npy", "dtype '<i8'"},
+                                                        {"complex.npy", "dtype '<c16'"},
                                                         {"shape.npy", "shape (160, 200)"},
                                                         {"nan.npy", "pixel [7][9]: NaN"},
                                                         {"missing.png", "cannot read file"}}) {

@@ -69,9 +69,30 @@ TEST_CASE("npy: float32, float64 and uint8 H×W×3 arrays are read exactly", "[g
   CHECK(image.pixels(0, 0).g == Approx(128.0 / 255));
 }
 
+TEST_CASE("npy: integer arrays of any width are 8-bit values, checked to be 0..255",
+          "[grade][npy]") {
+  // np.round(255 * img).astype(int) saved: int64 (and int32, uint16, int8) hold 8-bit values.
+  const auto i8 = parse_npy(npy("<i8", "(1, 1, 3)", bytes<std::int64_t>({0, 128, 255})), "d.npy");
+  CHECK(i8.integer);
+  CHECK(i8.values == std::vector<float>{0.f, 128.f, 255.f});
+  const auto u2 = parse_npy(npy("<u2", "(1, 1, 3)", bytes<std::uint16_t>({7, 8, 9})), "e.npy");
+  CHECK(u2.values == std::vector<float>{7.f, 8.f, 9.f});
+  const auto image = scantrace::grade::decode_image(
+      npy("<i4", "(1, 1, 3)", bytes<std::int32_t>({0, 128, 255})), "f.npy", nullptr);
+  CHECK(image.eight_bit);
+  CHECK(image.pixels(0, 0).g == Approx(128.0 / 255));
+  CHECK(error_of(npy("<i4", "(1, 2, 3)", bytes<std::int32_t>({0, 0, 0, 1, 300, 2}))) ==
+        "img.npy: pixel [0][1]: value 300 is not 0..255 (an integer image holds 8-bit values; a "
+        "float image, colours in [0, 1])");
+  CHECK(error_of(npy("|i1", "(1, 1, 3)", std::string("\x01\xff\x02", 3))).find("value -1") !=
+        std::string::npos);
+}
+
 TEST_CASE("npy: bad inputs are one line naming the file and the field", "[grade][npy]") {
   CHECK(error_of(npy("|O", "(1, 1, 3)", "")).find("pickles") != std::string::npos);
-  CHECK(error_of(npy("<i4", "(1, 1, 3)", std::string(12, '\0'))).find("dtype '<i4'") !=
+  CHECK(error_of(npy(">i4", "(1, 1, 3)", std::string(12, '\0'))).find("dtype '>i4'") !=
+        std::string::npos);
+  CHECK(error_of(npy("<c8", "(1, 1, 3)", std::string(24, '\0'))).find("dtype '<c8'") !=
         std::string::npos);
   CHECK(error_of(npy(">f4", "(1, 1, 3)", std::string(12, '\0'))).find("dtype '>f4'") !=
         std::string::npos);

@@ -22,20 +22,45 @@ namespace gradetest {
 
 using namespace scantrace;
 
+// The mistakes are named by the catalogue's ids (python/scantrace/grade/mistakes.json, the
+// grader's causes); the three that are no cause of the catalogue are variants only the test needs.
 enum class Mistake {
   none,
-  closed_rule,        // both span ends inclusive, the last row too
-  drop_last_row,      // range(ymin, ymax): the last row of every face is missing
-  span_one_too_wide,  // one extra pixel right of every span
-  span_wide_both,     // one extra pixel left of every span and one right of it
-  shift_right,        // every face drawn one pixel to the right of its place
-  nearest_first,      // painter's order reversed
-  skip_horizontal,    // faces with a horizontal edge are not drawn
-  paint_degenerate,   // zero-area faces drawn as the pixels their segment crosses
-  flat_first_vertex,  // flat colour = the first vertex's colour
-  swap_colours_01,    // Gouraud with vertices 0 and 1's colours swapped
-  truncate_8bit,      // 8-bit output truncated instead of rounded
+  closed_rule,               // both span ends inclusive, the last row too
+  bottom_row_dropped,        // range(ymin, ymax): the last row of every face is missing
+  span_one_too_wide,         // (test only) one extra pixel right of every span
+  span_too_wide,             // one extra pixel left of every span and one right of it
+  shift_right,               // (test only) every face drawn one pixel to the right of its place
+  order_reversed,            // painter's order reversed: nearest first
+  horizontal_edge_skipped,   // faces with a horizontal edge are not drawn
+  degenerate_drawn,          // zero-area faces drawn as the pixels their segment crosses
+  flat_colour_not_mean,      // flat colour = the first vertex's colour
+  gouraud_weights_permuted,  // Gouraud with vertices 0 and 1's colours swapped
+  truncate_8bit,             // (test only) 8-bit output truncated instead of rounded
 };
+
+// The catalogue id of a mistake; nullptr for the test's own variants.
+inline const char* catalogue_id(Mistake m) {
+  switch (m) {
+    case Mistake::closed_rule: return "closed_rule";
+    case Mistake::bottom_row_dropped: return "bottom_row_dropped";
+    case Mistake::span_too_wide: return "span_too_wide";
+    case Mistake::order_reversed: return "order_reversed";
+    case Mistake::horizontal_edge_skipped: return "horizontal_edge_skipped";
+    case Mistake::degenerate_drawn: return "degenerate_drawn";
+    case Mistake::flat_colour_not_mean: return "flat_colour_not_mean";
+    case Mistake::gouraud_weights_permuted: return "gouraud_weights_permuted";
+    default: return nullptr;
+  }
+}
+
+
+// The fill options of the reference a test compares with: the shading, the rest by default.
+inline FillOptions opts(Shading shading) {
+  FillOptions o;
+  o.shading = shading;
+  return o;
+}
 
 inline std::array<Vec2, 3> points(const Scene& s, int f) {
   return {s.vertices[s.faces[f][0]], s.vertices[s.faces[f][1]], s.vertices[s.faces[f][2]]};
@@ -65,22 +90,26 @@ inline std::vector<int> order(const Scene& s, bool reverse) {
 
 // The float canvas the test's renderer draws.
 // `painted` (when given) receives the face that wrote each pixel last (-1: none).
-inline RgbImage render_wrong(const Scene& s, Shading shading, Mistake m, int bits = 8,
-                             std::vector<int>* painted = nullptr) {
+// Several mistakes at once: `mistakes` (a span too wide and the bottom row dropped, say).
+inline RgbImage render_wrong(const Scene& s, Shading shading, std::vector<Mistake> mistakes,
+                             int bits = 8, std::vector<int>* painted = nullptr) {
+  const auto has = [&](Mistake m) {
+    return std::find(mistakes.begin(), mistakes.end(), m) != mistakes.end();
+  };
   RgbImage img(s.width, s.height, Rgb32f::from(s.background));
   if (painted) painted->assign(static_cast<std::size_t>(s.width) * s.height, -1);
   const auto mark = [&](long long x, long long y, int f) {
     if (painted) (*painted)[static_cast<std::size_t>(y) * s.width + x] = f;
   };
-  const FillRule rule = m == Mistake::closed_rule ? FillRule::closed : FillRule::top_left;
-  for (int f : order(s, m == Mistake::nearest_first)) {
+  const FillRule rule = has(Mistake::closed_rule) ? FillRule::closed : FillRule::top_left;
+  for (int f : order(s, has(Mistake::order_reversed))) {
     const auto p = points(s, f);
     auto c = colours(s, f);
-    if (m == Mistake::skip_horizontal && has_horizontal_edge(s, f, bits)) continue;
-    if (m == Mistake::swap_colours_01) std::swap(c[0], c[1]);
+    if (has(Mistake::horizontal_edge_skipped) && has_horizontal_edge(s, f, bits)) continue;
+    if (has(Mistake::gouraud_weights_permuted)) std::swap(c[0], c[1]);
     const reference::Polygon poly(p, bits);
     if (poly.degenerate()) {
-      if (m != Mistake::paint_degenerate) continue;
+      if (!has(Mistake::degenerate_drawn)) continue;
       // The pixels whose centre is within half a pixel of the segment, in the flat colour.
       const Color flat = reference::mean_color(c);
       for (int y = 0; y < s.height; ++y)
@@ -101,23 +130,23 @@ inline RgbImage render_wrong(const Scene& s, Shading shading, Mistake m, int bit
                     x1 = std::min<long long>(poly.max_px(), s.width - 1);
     const long long y0 = std::max<long long>(poly.min_py(), 0),
                     y1 = std::min<long long>(poly.max_py(), s.height - 1);
-    // The face's last covered row (under the true rule), for drop_last_row.
+    // The face's last covered row (under the true rule), for bottom_row_dropped.
     long long last_row = -1;
     for (long long y = y0; y <= y1; ++y)
       for (long long x = x0; x <= x1; ++x)
         if (poly.covers(x, y, FillRule::top_left)) last_row = y;
     for (long long y = y0; y <= y1; ++y) {
-      if (m == Mistake::drop_last_row && y == last_row) continue;
+      if (has(Mistake::bottom_row_dropped) && y == last_row) continue;
       long long row_first = -1, row_last = -1;
       for (long long x = x0; x <= x1; ++x) {
         if (!poly.covers(x, y, rule)) continue;
         if (row_first < 0) row_first = x;
         row_last = x;
         const auto w = poly.barycentric(x, y);
-        Color col = shading == Shading::flat || m == Mistake::flat_first_vertex
-                        ? (m == Mistake::flat_first_vertex ? c[0] : reference::mean_color(c))
+        Color col = shading == Shading::flat || has(Mistake::flat_colour_not_mean)
+                        ? (has(Mistake::flat_colour_not_mean) ? c[0] : reference::mean_color(c))
                         : c[0] * w[0] + c[1] * w[1] + c[2] * w[2];
-        const long long to = m == Mistake::shift_right ? x + 1 : x;
+        const long long to = has(Mistake::shift_right) ? x + 1 : x;
         if (to >= s.width) continue;
         img(static_cast<int>(to), static_cast<int>(y)) = Rgb32f::from(col);
         mark(to, y, f);
@@ -130,12 +159,17 @@ inline RgbImage render_wrong(const Scene& s, Shading shading, Mistake m, int bit
         img(static_cast<int>(x), static_cast<int>(y)) = Rgb32f::from(col);
         mark(x, y, f);
       };
-      if ((m == Mistake::span_one_too_wide || m == Mistake::span_wide_both) && row_last >= 0)
+      if ((has(Mistake::span_one_too_wide) || has(Mistake::span_too_wide)) && row_last >= 0)
         extra(row_last + 1);
-      if (m == Mistake::span_wide_both && row_first >= 0) extra(row_first - 1);
+      if (has(Mistake::span_too_wide) && row_first >= 0) extra(row_first - 1);
     }
   }
   return img;
+}
+
+inline RgbImage render_wrong(const Scene& s, Shading shading, Mistake m, int bits = 8,
+                             std::vector<int>* painted = nullptr) {
+  return render_wrong(s, shading, std::vector<Mistake>{m}, bits, painted);
 }
 
 // As an 8-bit image file would hold it (round, or truncate for truncate_8bit).

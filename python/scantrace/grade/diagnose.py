@@ -9,7 +9,7 @@ import math
 import numpy as np
 
 from . import fill_models
-from .causes import CONFIDENCE, Cause  # noqa: F401 - Cause is used by battery too
+from .causes import CONFIDENCE, WHOLE_IMAGE, Cause  # noqa: F401 - Cause is used by battery too
 
 WHITE_TOLERANCE = 1e-6
 
@@ -304,7 +304,8 @@ def _background(student, uncovered):
         return None
     same = uncovered & (channel_error(student, bg) <= 1.5 / 255)
     share = same.sum() / uncovered.sum()
-    return (bg, same, share) if share >= CONFIDENCE else None
+    # The catalogue's share, as diff's (grade/global_mistakes.cpp).
+    return (bg, same, share) if share >= WHOLE_IMAGE["background_share"] else None
 
 
 def _undone(student, reference, uncovered, mistakes):
@@ -345,7 +346,8 @@ def undo_global(student, reference, uncovered):
 
     for k in (k for k in kinds if k in best):
         without = mismatch(best - {k})
-        if without <= 2 * m or without == 0:
+        # Named when undoing it cuts what differs by the catalogue's gain, as diff names it.
+        if without <= WHOLE_IMAGE["transform_gain"] * m or without == 0:
             continue
         if k == "background":
             colour, same, share = bg

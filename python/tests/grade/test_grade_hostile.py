@@ -171,7 +171,7 @@ def test_staging_copies_regular_files_only(tmp_path, sandbox_ok):
     assert "deep200k.py: cannot be parsed (MemoryError" in notes
     assert "hard.py: a hard link (2 names), not staged" in notes
     assert "folders deeper than 32 levels, not staged" in notes
-    assert results["score"] == results["extra_data"]["max_score"] == 60
+    assert results["score"] == results["extra_data"]["max_score"] == 100
 
 
 @pytest.mark.parametrize("name", ["hw1.py", "hw1.zip"])
@@ -220,7 +220,7 @@ def test_hostile_zips_get_a_verdict_and_results_json(tmp_path, sandbox_ok, case)
         assert status == 1 and "Bad CRC-32" in results["output"]
         assert results["output"].startswith("Not graded")
         return
-    assert status == 0 and results["score"] == 60
+    assert status == 0 and results["score"] == 100
     notes = "\n".join(results["extra_data"]["notes"])
     if case == "symlink":
         assert "shadow.py: a symbolic link, not staged" in notes and "root:" not in text
@@ -247,7 +247,7 @@ def test_a_dotted_file_name_scores_full_marks(tmp_path, sandbox_ok):
     out = tmp_path / "out"
     assert _grade([sub], out) == 0
     _, results = _results(out)
-    assert results["score"] == results["extra_data"]["max_score"] == 60
+    assert results["score"] == results["extra_data"]["max_score"] == 100
 
 
 LIMIT_ATTACKS = textwrap.dedent('''\
@@ -347,7 +347,7 @@ def test_a_student_killing_its_parent_without_the_sandbox_costs_only_itself(tmp_
     _grade(paths, out, "--no-sandbox", jobs=2)
     with open(out / "class.csv", newline="") as f:
         rows = {r["name"]: r for r in csv.DictReader(f)}
-    assert rows["good"]["score"] == rows["good2"]["score"] == "60"
+    assert rows["good"]["score"] == rows["good2"]["score"] == "100"
     # As root the student's process runs as a uid of its own (the kill is refused: EPERM);
     # otherwise the kill lands on its worker alone. Either way it has a results.json.
     assert (out / "killer" / "results.json").exists()
@@ -371,7 +371,7 @@ def test_colliding_names_keep_their_folders(tmp_path):
     _grade(paths, out, "--no-sandbox", jobs=2)
     with open(out / "class.csv", newline="") as f:
         rows = [(r["name"], r["score"]) for r in csv.DictReader(f)]
-    assert rows == [("a-hw1", "60"), ("b-hw1", "0"), ("hw1_2", "60")]
+    assert rows == [("a-hw1", "100"), ("b-hw1", "0"), ("hw1_2", "100")]
     assert {p.name for p in out.iterdir() if p.is_dir()} == {"a-hw1", "b-hw1", "hw1_2"}
 
 
@@ -495,7 +495,7 @@ def test_results_json_stays_under_100_kb_with_200_long_file_names(tmp_path, sand
     text, results = _results(out)
     assert len(text.encode()) <= 100_000
     assert "characters cut" in text or "more notes" in text
-    assert results["score"] == 60
+    assert results["score"] == 100
 
 
 def test_bwrap_over_the_process_limit_names_it(tmp_path):

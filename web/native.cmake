@@ -36,6 +36,14 @@ if(SCANTRACE_BUILD_TESTS)
                    ${CMAKE_BINARY_DIR}/examples/demo/demo_scene.json)
   set_tests_properties("web: node module equals the native command" PROPERTIES
                        FIXTURES_REQUIRED demo_files LABELS "web" TIMEOUT 600)
+  # The API checks its arguments as the command does, caps a trace's text, and pre-checks an
+  # image against the scene's canvas (web/tests/node_arguments.mjs; issue 46).
+  add_test(NAME "web: node API checks its arguments as the command does"
+           COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/node_arguments.mjs ${web_dir}
+                   $<TARGET_FILE:scantrace> ${CMAKE_BINARY_DIR}/web-tests/arguments
+                   ${CMAKE_BINARY_DIR}/examples/demo/demo_scene.json)
+  set_tests_properties("web: node API checks its arguments as the command does" PROPERTIES
+                       FIXTURES_REQUIRED demo_files LABELS "web" TIMEOUT 300)
   # The trace page's module against the full one: its exports, its steps and frames
   # (web/tests/node_player.mjs).
   add_test(NAME "web: node player module composes the full module's frames"

@@ -12,6 +12,8 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 
+import { check, summary } from './check.mjs';
+
 const [webDir, scantraceArg, work, demoScene] = process.argv.slice(2);
 const scantrace = path.resolve(scantraceArg);
 const { load, ScantraceError } = await import(pathToFileURL(path.join(webDir, 'scantrace.mjs')));
@@ -20,17 +22,6 @@ const st = await load({ printErr: (line) => warnings.push(line) });
 fs.mkdirSync(work, { recursive: true });
 fs.copyFileSync(demoScene, path.join(work, 'demo.json'));
 const demo = { name: 'demo.json', data: fs.readFileSync(demoScene) };
-
-let checks = 0;
-function check(what, f) {
-  try {
-    f();
-    ++checks;
-  } catch (e) {
-    console.error(`FAIL ${what}: ${e.message.split('\n').slice(0, 8).join('\n')}`);
-    process.exitCode = 1;
-  }
-}
 
 // The native command in WORK_DIR: {status, line}, line its first stderr line without the
 // "scantrace: usage error: " / "scantrace: error: " prefix.
@@ -186,4 +177,4 @@ check('checkImage with the scene: a 16000x16000 PNG header is diff\'s canvas_siz
   assert.equal(report.compared_pixels, 0);
 });
 
-console.log(`${checks} checks passed${process.exitCode ? ', some FAILED' : ''}`);
+console.log(summary());

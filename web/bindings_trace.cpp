@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <optional>
@@ -369,6 +370,8 @@ EMSCRIPTEN_KEEPALIVE int st_trace(const char* input_json, const char* options_js
     }
     web::trace_to_file(in, o);
     web::result().text = web::read_file(web::kTraceFile);
+    // The file's bytes (up to the cap) stay out of the module's memory between calls.
+    std::remove(web::kTraceFile);
   });
 }
 

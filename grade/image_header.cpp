@@ -24,11 +24,7 @@ std::int32_t le32(std::string_view b, std::size_t at) {
 // is (`bytes_per_pixel`: the decoder's buffer and the float copy together).
 void check_pixels(std::int64_t w, std::int64_t h, std::uint64_t bytes_per_pixel,
                   const std::string& name, const std::string& element) {
-  // Each side first: two 32-bit sides can multiply past 2^63.
-  if (w <= 0 || h <= 0 || w > kMaxCanvasPixels || h > kMaxCanvasPixels || w * h > kMaxCanvasPixels)
-    throw InputError(name, element,
-                     "declares " + std::to_string(w) + "x" + std::to_string(h) +
-                         " pixels, outside what can be compared (at most 2^28 pixels)");
+  check_pixel_limit(w, h, name, element);
   check_memory(static_cast<std::uint64_t>(w * h) * bytes_per_pixel,
                "decoding the " + std::to_string(w) + "x" + std::to_string(h) + " image", name,
                element);
@@ -72,6 +68,15 @@ void bmp_size(std::string_view b, const std::string& name, std::int64_t& width,
 
 }  // namespace
 
+void check_pixel_limit(std::int64_t w, std::int64_t h, const std::string& name,
+                       const std::string& element) {
+  // Each side first: two 32-bit sides can multiply past 2^63.
+  if (w <= 0 || h <= 0 || w > kMaxCanvasPixels || h > kMaxCanvasPixels || w * h > kMaxCanvasPixels)
+    throw InputError(name, element,
+                     "declares " + std::to_string(w) + "x" + std::to_string(h) +
+                         " pixels, outside what can be compared (at most 2^28 pixels)");
+}
+
 bool is_npy(std::string_view bytes) {
   return bytes.size() >= 6 && bytes.substr(0, 6) == "\x93NUMPY";
 }
@@ -96,7 +101,9 @@ bool declared_png_or_bmp_size(std::string_view b, const std::string& name, std::
 
 void check_before_decoding(std::string_view bytes, const std::string& name, std::int64_t width,
                            std::int64_t height, const std::string& format) {
-  // Decoded bytes plus the float copy.
+  // A .npy is converted straight into the float image (decode_npy); an image file's decoded
+  // bytes come first, then the float copy.
+  if (format == "npy") return check_pixels(width, height, sizeof(Rgb32f), name, "npy header shape");
   check_pixels(width, height, 3 + sizeof(Rgb32f), name, format + " header");
   if (format == "png") check_png_chunks(bytes, name);
 }
@@ -105,9 +112,8 @@ void check_before_decoding(std::string_view bytes, const std::string& name, std:
 // not: 8000x8000x3 uint8 took 1.72 GB under a 500 MB budget), and is converted straight into
 // the float image, with no float copy of the whole array on the way.
 SubmittedImage decode_npy(std::string_view bytes, const std::string& name) {
-  const NpyLayout npy = parse_npy_layout(bytes, name, 8 * static_cast<std::uint64_t>(3) *
-                                                          static_cast<std::uint64_t>(kMaxCanvasPixels));
-  check_pixels(npy.width, npy.height, sizeof(Rgb32f), name, "npy header shape");
+  const NpyLayout npy = parse_npy_layout(bytes, name, kMaxNpyImageBytes);
+  check_before_decoding(bytes, name, npy.width, npy.height, "npy");
   SubmittedImage out;
   out.name = name;
   out.format = "npy";

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "src/image.hpp"
+#include "src/scene.hpp"
 
 namespace scantrace::grade {
 
@@ -26,6 +27,9 @@ struct SubmittedImage {
 // then refused with one line naming its format).
 using JpegBmpDecoder = void (*)(std::string_view bytes, SubmittedImage& out);
 
+// The most data a .npy image may declare: 2^28 pixels of three float64 values.
+inline constexpr std::uint64_t kMaxNpyImageBytes = 8 * 3 * static_cast<std::uint64_t>(kMaxCanvasPixels);
+
 // A NumPy .npy file, by its magic.
 bool is_npy(std::string_view bytes);
 
@@ -35,9 +39,15 @@ bool is_npy(std::string_view bytes);
 bool declared_png_or_bmp_size(std::string_view bytes, const std::string& name, std::int64_t& width,
                               std::int64_t& height, std::string& format);
 
-// The checks made before an image file of `format` declaring width × height is decoded: the size
-// within the pixel limit and the memory available (the decoded bytes and the float copy), and a
-// PNG's chunks inside the file (a truncated one would otherwise decode partly). Throws InputError.
+// A declared size within what can be compared (2^28 pixels, both sides positive): a property of
+// the header alone, checked before anything else. Throws InputError.
+void check_pixel_limit(std::int64_t width, std::int64_t height, const std::string& name,
+                       const std::string& element);
+
+// The checks made before an image file of `format` ("npy" too) declaring width × height is
+// decoded: the size within the pixel limit and the memory available (the decoded bytes and the
+// float copy), and a PNG's chunks inside the file (a truncated one would otherwise decode partly).
+// Throws InputError. (Against a scene, grade/image_precheck.hpp's precheck_image runs it.)
 void check_before_decoding(std::string_view bytes, const std::string& name, std::int64_t width,
                            std::int64_t height, const std::string& format);
 

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "grade/diff_report.hpp"
 #include "grade/jpeg_header.hpp"
 #include "grade/png_decoder.hpp"
 #include "io/input_error.hpp"
@@ -46,11 +47,25 @@ SubmittedImage decode_image(std::string_view bytes, const std::string& name,
   return out;
 }
 
-SubmittedImage read_submitted_image(const std::filesystem::path& file, JpegBmpDecoder jpeg_bmp) {
-  return within_memory(file.string(), [&] {
+std::optional<SubmittedImage> read_submitted_image(const std::filesystem::path& file,
+                                                   JpegBmpDecoder jpeg_bmp, int canvas_width,
+                                                   int canvas_height, ImageHeader& header) {
+  return within_memory(file.string(), [&]() -> std::optional<SubmittedImage> {
     const std::string bytes = json_input::read_text_file(file);
+    if (precheck_image(bytes, file.string(), &declared_size, canvas_width, canvas_height, header))
+      return std::nullopt;
     return decode_image(bytes, file.string(), jpeg_bmp);
   });
+}
+
+DiffReport diff_image_file(const Scene& scene, const FillOptions& options,
+                           const std::filesystem::path& file, JpegBmpDecoder jpeg_bmp,
+                           const DiffOptions& diff_options) {
+  ImageHeader header;
+  const std::optional<SubmittedImage> image =
+      read_submitted_image(file, jpeg_bmp, scene.width, scene.height, header);
+  if (!image) return canvas_size_report(scene, options, header, diff_options);
+  return diff(scene, options, *image, diff_options);
 }
 
 }  // namespace scantrace::grade

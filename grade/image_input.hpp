@@ -8,10 +8,12 @@
 // need no OpenCV nor libpng (the WebAssembly module has them), are in grade/image_header.hpp.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "grade/image_header.hpp"
+#include "grade/image_precheck.hpp"
 
 namespace scantrace::grade {
 
@@ -26,7 +28,17 @@ bool declared_size(std::string_view bytes, const std::string& name, std::int64_t
 SubmittedImage decode_image(std::string_view bytes, const std::string& name,
                             JpegBmpDecoder jpeg_bmp);
 
-// Reads `file`: a .npy by its magic or extension, an image file otherwise. Throws InputError.
-SubmittedImage read_submitted_image(const std::filesystem::path& file, JpegBmpDecoder jpeg_bmp);
+// Reads `file` through the pre-check against a canvas_width x canvas_height scene
+// (image_precheck.hpp, JPEG headers included): the decoded image, or nullopt when the header
+// decides (`header` then says the declared size; nothing was decoded). Throws InputError.
+std::optional<SubmittedImage> read_submitted_image(const std::filesystem::path& file,
+                                                   JpegBmpDecoder jpeg_bmp, int canvas_width,
+                                                   int canvas_height, ImageHeader& header);
+
+// `file` compared with the scene as `scantrace diff` compares them: canvas_size_report when the
+// header decides, else the decoded image's diff. Throws InputError.
+DiffReport diff_image_file(const Scene& scene, const FillOptions& options,
+                           const std::filesystem::path& file, JpegBmpDecoder jpeg_bmp,
+                           const DiffOptions& diff_options);
 
 }  // namespace scantrace::grade

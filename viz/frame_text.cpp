@@ -101,9 +101,56 @@ std::string hex_colour(const Scalar& c) {
   return out;
 }
 
+namespace {
+
+// The code point of the well-formed UTF-8 sequence at s[i] (RFC 3629: no overlong form, no
+// surrogate, nothing above U+10FFFF) and its length; 0 when none starts there.
+std::size_t utf8_at(const std::string& s, std::size_t i, char32_t& cp) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = byte(i);
+  std::size_t n = 1;
+  char32_t least = 0;
+  if (c < 0x80) {
+    cp = c;
+    return 1;
+  }
+  if (c >= 0xC2 && c <= 0xDF) n = 2, cp = c & 0x1Fu, least = 0x80;
+  else if (c >= 0xE0 && c <= 0xEF) n = 3, cp = c & 0x0Fu, least = 0x800;
+  else if (c >= 0xF0 && c <= 0xF4) n = 4, cp = c & 0x07u, least = 0x10000;
+  else return 0;
+  if (s.size() - i < n) return 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    if ((byte(i + k) & 0xC0) != 0x80) return 0;
+    cp = cp << 6 | (byte(i + k) & 0x3Fu);
+  }
+  if (cp < least || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+  return n;
+}
+
+// XML 1.0's Char production (§2.2): what a document may hold at all, escaped or not.
+bool xml_char(char32_t c) {
+  return c == 0x9 || c == 0xA || c == 0xD || (c >= 0x20 && c <= 0xD7FF) ||
+         (c >= 0xE000 && c <= 0xFFFD) || (c >= 0x10000 && c <= 0x10FFFF);
+}
+
+}  // namespace
+
 std::string xml_escape(const std::string& s) {
+  // A trace's strings (its generator, its file's name) are anyone's bytes: a character XML 1.0
+  // forbids (ESC, U+FFFF) or a byte that is not UTF-8 made the SVG frame a document no parser
+  // reads (issue 46, "PCDATA invalid Char value 27"). XML has no escape for them (&#27; is not
+  // well-formed either): each becomes U+FFFD, as a UTF-8 decoder shows a byte it cannot read.
   std::string out;
-  for (char c : s) switch (c) {
+  out.reserve(s.size());
+  for (std::size_t i = 0; i < s.size();) {
+    char32_t cp = 0;
+    const std::size_t n = utf8_at(s, i, cp);
+    if (n == 0 || !xml_char(cp)) {
+      out += "\xEF\xBF\xBD";  // U+FFFD
+      i += n == 0 ? 1 : n;
+      continue;
+    }
+    switch (cp) {
       case '&':
         out += "&amp;";
         break;
@@ -117,8 +164,10 @@ std::string xml_escape(const std::string& s) {
         out += "&quot;";
         break;
       default:
-        out += c;
+        out.append(s, i, n);
     }
+    i += n;
+  }
   return out;
 }
 

@@ -17,7 +17,9 @@ double number_value(double v);
 std::string number_by_printf(double v);
 // "#rrggbb" of a BGR colour.
 std::string hex_colour(const Scalar& c);
-// `s` with & < > " escaped (XML attribute and text content).
+// `s` with & < > " escaped (XML attribute and text content), and every character XML 1.0 forbids
+// (C0 controls but tab, LF and CR; U+FFFE, U+FFFF) and every byte that is not well-formed UTF-8
+// (a lone surrogate too) replaced by U+FFFD: always well-formed XML, whatever the bytes.
 std::string xml_escape(const std::string& s);
 // Standard base64 (RFC 4648, with padding), as data: URLs need it.
 std::string base64(std::string_view bytes);

@@ -3,10 +3,13 @@
 
 #include <emscripten/emscripten.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <new>
 #include <stdexcept>
+
+#include <spdlog/fmt/fmt.h>
 
 #include "io/input_error.hpp"
 #include "io/obj_loader.hpp"
@@ -26,7 +29,43 @@ Result& result() {
 int run(const std::function<void()>& work) {
   Result& r = result();
   r = Result{};
-  return call_status(work, r.error);
+  return call_status(
+      [&] {
+        try {
+          work();
+        } catch (const nlohmann::json::exception& e) {
+          // An option of the wrong type read with nlohmann's value(): a bad argument, said
+          // without the library's "[json.exception.type_error.302]" (issue 46 #13).
+          const std::string what = e.what();
+          const std::size_t end = what.find("] ");
+          throw std::invalid_argument("options: a value of the wrong type (" +
+                                      (end == std::string::npos ? what : what.substr(end + 2)) + ")");
+        }
+      },
+      r.error);
+}
+
+int pixel_coordinate(double v, char axis) {
+  // The command reads X and Y with from_chars into an int: an integer, 0 or more, that fits.
+  if (!(v >= 0 && v <= 2147483647.0 && std::floor(v) == v))
+    throw std::invalid_argument(std::string(1, axis) + ": must be a pixel " +
+                                (axis == 'X' ? "column, 0 to the canvas width" : "row, 0 to the canvas height") +
+                                " - 1 (got \"" + fmt::format("{}", v) + "\")");
+  return static_cast<int>(v);
+}
+
+double tolerance_option(const nlohmann::json& o) {
+  if (!o.contains("tolerance")) return 1.0 / 255.0;
+  const nlohmann::json& t = o["tolerance"];
+  // (JSON has no NaN: JSON.stringify writes NaN and the infinities as null.)
+  if (!t.is_number() || !std::isfinite(t.get<double>()))
+    throw std::invalid_argument("tolerance: \"" + t.dump() + "\" is not a finite number");
+  const double v = t.get<double>();
+  // --tolerance's check, CLI::Range(0.0, 1.0), and its words.
+  if (!(v >= 0 && v <= 1))
+    throw std::invalid_argument("tolerance: Value " + fmt::format("{}", v) +
+                                " not in range 0.000000 to 1.000000");
+  return v;
 }
 
 bool same_bytes(const void* a, const void* b, std::size_t n) {
@@ -155,6 +194,7 @@ EMSCRIPTEN_KEEPALIVE std::size_t st_result_size() { return web::result().text.si
 EMSCRIPTEN_KEEPALIVE const std::uint8_t* st_result_bytes() { return web::result().bytes_out().data(); }
 EMSCRIPTEN_KEEPALIVE std::size_t st_result_bytes_size() { return web::result().bytes_out().size(); }
 EMSCRIPTEN_KEEPALIVE const char* st_error() { return web::result().error.c_str(); }
+EMSCRIPTEN_KEEPALIVE const char* st_warning() { return web::result().warning.c_str(); }
 
 // The scene file at `path` rendered as `scantrace render` renders it (one thread): the result's
 // bytes are RGBA, 8 bits a channel, converted by to_byte as the PNG writer converts; its text

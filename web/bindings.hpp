@@ -24,6 +24,7 @@ struct Result {
   // calls (st_trace's image, web/traced_image.hpp), handed over without a copy.
   const std::vector<std::uint8_t>* kept_bytes = nullptr;
   std::string error;
+  std::string warning;  // a line the command would print as a warning (a trace its cap cut)
   const std::vector<std::uint8_t>& bytes_out() const { return kept_bytes ? *kept_bytes : bytes; }
 };
 Result& result();
@@ -41,6 +42,15 @@ FillOptions fill_options(const nlohmann::json& options, bool model);
 Scene load_scene(const std::string& path, const nlohmann::json& options);
 
 nlohmann::json parse_options(const char* text);
+
+// A pixel coordinate handed over as a double (no truncating conversion on the way): an integer
+// from 0 to 2^31 - 1, or std::invalid_argument with `scantrace why`'s line for `axis` 'X' or 'Y'
+// ("X: must be a pixel column, 0 to the canvas width - 1 (got "100.9")").
+int pixel_coordinate(double v, char axis);
+
+// options.tolerance as `scantrace diff --tolerance` takes it: 1/255 when absent, else a finite
+// number from 0 to 1, or std::invalid_argument with the command's line.
+double tolerance_option(const nlohmann::json& options);
 
 // Whether n bytes at a and b are equal, eight at a time: emscripten's memcmp compares byte by
 // byte (comparing each row of a block with the one above was 1.8 ms of a drag's move).

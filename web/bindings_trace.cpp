@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <variant>
 
 #include "demo/demo_scene.hpp"
 #include "io/obj_loader.hpp"
@@ -94,18 +96,69 @@ void require_input(const nlohmann::json& in) {
     throw std::invalid_argument("input: give scene (a file), triangle or polygon");
 }
 
-void trace_to_file(const nlohmann::json& in, const nlohmann::json& o) {
+// The command's byte cap of a trace (`scantrace trace --max-bytes`: 1 GiB by default, 1024 to
+// 2^50), which the module applies to a trace's text and to frames' result: options.max_bytes,
+// lowered to the longest string a JavaScript engine makes (V8: 2^29 - 24 characters; the text is
+// ASCII), with room for the footer line the cap leaves on top. Without it a pixel-level trace of
+// 2048^2 was 493 MiB of text, and at 2600^2 V8 refused to make the string (issue 46 #14).
+constexpr std::int64_t kCommandMaxBytes = std::int64_t{1} << 30;
+constexpr std::int64_t kLongestText = (std::int64_t{1} << 29) - 24 - 128;
+
+std::int64_t max_bytes_option(const nlohmann::json& o) {
+  if (!o.contains("max_bytes")) return std::min(kCommandMaxBytes, kLongestText);
+  const nlohmann::json& v = o["max_bytes"];
+  // --max-bytes' check, CLI::Range(1024LL, 1LL << 50), and its words.
+  if (!v.is_number_integer() || v.get<std::int64_t>() < 1024 ||
+      v.get<std::int64_t>() > (std::int64_t{1} << 50))
+    throw std::invalid_argument("max_bytes: Value " + v.dump() +
+                                " not in range 1024 to 1125899906842624");
+  return std::min(v.get<std::int64_t>(), kLongestText);
+}
+
+// The command's warning for a trace its budget cut (cli/trace_command.cpp), the budget named by
+// the option that set it.
+std::string truncated_warning(const trace::Footer& footer, const trace::TraceFilter& filter) {
+  const bool by_events = filter.max_events && footer.events >= *filter.max_events;
+  const std::string budget = by_events ? "max_events " + std::to_string(*filter.max_events)
+                                       : "max_bytes " + std::to_string(*filter.max_bytes);
+  return "warning: trace: the trace was truncated after " + std::to_string(footer.events) +
+         " events by its budget " + budget + "; its footer says \"truncated\": true";
+}
+
+trace::Footer trace_to_file(const nlohmann::json& in, const nlohmann::json& o) {
   require_input(in);
-  const trace::TraceFilter filter = filter_of(o);
+  trace::TraceFilter filter = filter_of(o);
+  filter.max_bytes = max_bytes_option(o);
+  trace::Footer footer;
   if (in.contains("scene")) {
     const std::string path = in["scene"].get<std::string>();
     const Scene scene = load_scene(path, o);
-    trace::write_scene_trace(kTraceFile, scene, fill_options(o, is_obj_file(path)), filter);
+    footer = trace::write_scene_trace(kTraceFile, scene, fill_options(o, is_obj_file(path)), filter);
   } else if (in.contains("triangle")) {
-    trace::write_triangle_trace(kTraceFile, triangle_input(in), fill_options(o, false), filter);
+    footer = trace::write_triangle_trace(kTraceFile, triangle_input(in), fill_options(o, false), filter);
   } else {
-    trace::write_polygon_trace(kTraceFile, polygon_input(in), fill_options(o, false), filter);
+    footer = trace::write_polygon_trace(kTraceFile, polygon_input(in), fill_options(o, false), filter);
   }
+  if (footer.truncated) result().warning = truncated_warning(footer, filter);
+  return footer;
+}
+
+// The JSON Lines of `events` as the file writer writes them under the byte cap `max_bytes`: the
+// header and the event lines within it, then, where the next line would pass it, a footer saying
+// truncated (trace/jsonl_writer.hpp's write_within), and the command's warning.
+std::string capped_text(const std::vector<trace::Event>& events, const trace::TraceFilter& filter) {
+  std::string text;
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const std::string line = trace::event_to_json(events[i]).dump() + "\n";
+    if (i > 0 && !std::holds_alternative<trace::Footer>(events[i]) &&
+        static_cast<std::int64_t>(text.size() + line.size()) > *filter.max_bytes) {
+      const trace::Footer cut{static_cast<i64>(i) - 1, true};
+      result().warning = truncated_warning(cut, filter);
+      return text + trace::event_to_json(trace::Event{cut}).dump() + "\n";
+    }
+    text += line;
+  }
+  return text;
 }
 
 // The trace kept in memory by the last st_trace with options.keep, for st_frames without a file:
@@ -177,9 +230,9 @@ std::string trace_in_memory(const nlohmann::json& in, const nlohmann::json& o) {
   // Without the text (options.text false: a drag's mouse move, which reads the step's events
   // with st_kept_step): the events' JSON was half of the call's time.
   if (!o.value("text", true)) return {};
-  std::string text;
-  for (const trace::Event& e : kept_trace()->events()) text += trace::event_to_json(e).dump() + "\n";
-  return text;
+  trace::TraceFilter capped = filter;
+  capped.max_bytes = max_bytes_option(o);
+  return capped_text(kept_trace()->events(), capped);
 }
 
 // A pixel block as the runs of equal rows and of equal columns it is made of, and one texel per
@@ -317,6 +370,8 @@ EMSCRIPTEN_KEEPALIVE int st_trace(const char* input_json, const char* options_js
     }
     web::trace_to_file(in, o);
     web::result().text = web::read_file(web::kTraceFile);
+    // The file's bytes (up to the cap) stay out of the module's memory between calls.
+    std::remove(web::kTraceFile);
   });
 }
 
@@ -347,9 +402,18 @@ EMSCRIPTEN_KEEPALIVE int st_frames(const char* path, const char* options_json) {
     std::string out = "{\"steps\":" + web::StepsJson()(s) + ",\"frames\":[";
     const bool raw = o.value("blocks", std::string("png")) == "rgba";
     const bool numbers = o.value("encoding", std::string("json")) == "binary";
-    for (std::size_t i = first; i < last; ++i)
+    // The trace's byte cap on the result too: a scene's every step asked for at once is
+    // hundreds of megabytes of frames.
+    const std::int64_t max_bytes = web::max_bytes_option(o);
+    for (std::size_t i = first; i < last; ++i) {
       out += (i > first ? "," : "") + (numbers ? web::frame_numbers(s.frame(i), web::result().bytes)
                                                : web::frame_json(s.frame(i), raw, web::result().bytes));
+      if (static_cast<std::int64_t>(out.size() + web::result().bytes.size()) > max_bytes)
+        throw std::runtime_error("frames: the " + std::to_string(last - first) +
+                                 " frames asked for pass the budget max_bytes " +
+                                 std::to_string(max_bytes) + " at frame " + std::to_string(i - first + 1) +
+                                 "; ask for fewer (first, count)");
+    }
     out += "]}";
     web::result().text = std::move(out);
   });

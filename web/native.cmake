@@ -29,13 +29,22 @@ add_custom_target(scantrace_web ALL
   USES_TERMINAL)
 
 if(SCANTRACE_BUILD_TESTS)
+  # A Node test of the module against the native command (its binary, a work folder and the demo
+  # scene as arguments).
+  function(add_node_command_test name script timeout)
+    add_test(NAME "${name}"
+             COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/${script}.mjs ${web_dir}
+                     $<TARGET_FILE:scantrace> ${CMAKE_BINARY_DIR}/web-tests/${ARGN}
+                     ${CMAKE_BINARY_DIR}/examples/demo/demo_scene.json)
+    set_tests_properties("${name}" PROPERTIES FIXTURES_REQUIRED demo_files LABELS "web"
+                         TIMEOUT ${timeout})
+  endfunction()
   # The module against the native command: pixels, traces, why and diff (web/tests/node_compare.mjs).
-  add_test(NAME "web: node module equals the native command"
-           COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/node_compare.mjs ${web_dir}
-                   $<TARGET_FILE:scantrace> ${CMAKE_BINARY_DIR}/web-tests/node
-                   ${CMAKE_BINARY_DIR}/examples/demo/demo_scene.json)
-  set_tests_properties("web: node module equals the native command" PROPERTIES
-                       FIXTURES_REQUIRED demo_files LABELS "web" TIMEOUT 600)
+  add_node_command_test("web: node module equals the native command" node_compare 600 node)
+  # The API checks its arguments as the command does, caps a trace's text, and pre-checks an
+  # image against the scene's canvas (web/tests/node_arguments.mjs; issue 46).
+  add_node_command_test("web: node API checks its arguments as the command does" node_arguments
+                        300 arguments)
   # The trace page's module against the full one: its exports, its steps and frames
   # (web/tests/node_player.mjs).
   add_test(NAME "web: node player module composes the full module's frames"

@@ -23,6 +23,9 @@ export interface TraceOptions extends FillOptions {
   keep?: boolean;
   /** false, with keep: no JSON Lines written (traceText returns ''); keptStep reads the trace. */
   text?: boolean;
+  /** `trace --max-bytes`: the text's byte cap (1 GiB, lowered to the longest JavaScript string;
+   * 1024 to 2^50); past it the text ends with a footer saying truncated, and lastWarning says so. */
+  max_bytes?: number;
 }
 
 /** What keptStep gives of one step of the kept trace. */
@@ -87,6 +90,8 @@ export interface FrameOptions {
    * frame (its blocks as with blocks: 'rgba'; the lists of numbers of its "G" ops, glyphs and
    * blocks as Float64Arrays); what the explorer does on every mouse move. 'json' (default). */
   encoding?: 'json' | 'binary';
+  /** The byte cap of the result (as TraceOptions.max_bytes); past it, a ScantraceError. */
+  max_bytes?: number;
 }
 
 /** A frames() pixel block with blocks: 'rgba': the runs of equal columns (widths, left to right)
@@ -115,6 +120,7 @@ export interface ImageFile {
 }
 
 export interface DiffOptions extends FillOptions {
+  /** `diff --tolerance`: a finite number in [0, 1] (1/255). */
   tolerance?: number;
   undo?: boolean;
 }
@@ -135,6 +141,7 @@ export class Scantrace {
   /** The kept trace's event count, and face `triangle`'s edge table and scanline event of row `y`. */
   keptStep(triangle: number, y: number): KeptStep;
   /** `scantrace why SCENE X Y --json`'s document (trace/why_schema.json). */
+  /** x, y: integers on the canvas (checked as `scantrace why` checks X and Y). */
   why(scene: SceneInput, x: number, y: number, options?: FillOptions): Record<string, unknown>;
   /** drawScantraceFrame's JavaScript source (viz/frame_json.hpp). */
   canvasScript(): string;
@@ -147,8 +154,17 @@ export class Scantrace {
   /** `scantrace diff SCENE IMAGE --json`'s report. */
   diff(scene: SceneInput, image: DecodedImage | ImageFile, options?: DiffOptions): Record<string, unknown>;
   /** The checks `scantrace diff` makes before decoding (header, size, memory, PNG chunks; a .npy
-   * decoded): the format and size, or ScantraceError with the command's line. */
-  checkImage(file: ImageFile): { format: 'png' | 'bmp' | 'npy'; width: number; height: number };
+   * decoded): the format and size, or ScantraceError with the command's line. With the scene:
+   * the command's pre-check against its canvas; a header of another size adds `report`, diff's
+   * canvas_size report made from the header alone (nothing to decode). */
+  checkImage(file: ImageFile, scene?: SceneInput | null, options?: DiffOptions): {
+    format: 'png' | 'bmp' | 'npy';
+    width: number;
+    height: number;
+    report?: Record<string, unknown>;
+  };
+  /** The warning of the last call, as the command prints it (a trace its byte cap cut), or null. */
+  lastWarning: string | null;
 }
 
 /** Loads the module: its .wasm read beside scantrace.mjs, or the bytes given. */

@@ -35,12 +35,64 @@ async function wasmBytes() {
 // options.wasmBinary: the module's bytes (a page with the wasm inlined); else read beside this file.
 export async function load(options = {}) {
   const wasmBinary = options.wasmBinary || (await wasmBytes());
-  const module = await createScantraceWasm({
-    wasmBinary,
-    print: options.print || (() => {}),
-    printErr: options.printErr || (() => {}),
-  });
-  return new Scantrace(module);
+  const printErr = options.printErr || (() => {});
+  const module = await createScantraceWasm({ wasmBinary, print: options.print || (() => {}), printErr });
+  return new Scantrace(module, printErr);
+}
+
+// The checks the command makes of its arguments, made here before anything reaches the module
+// (which makes them again: web/bindings*.cpp), with the command's words (issue 46 #13): a value
+// is never truncated into another one (`x | 0` made 2**32 + 100 pixel 100, NaN and "abc" pixel 0).
+function pixelCoordinate(v, axis) {
+  // `scantrace why`'s X and Y: an int, 0 or more (from_chars into an int).
+  if (typeof v !== 'number' || !Number.isInteger(v) || v < 0 || v > 2147483647)
+    throw new ScantraceError(`${axis}: must be a pixel ${axis === 'X' ? 'column, 0 to the canvas width' : 'row, 0 to the canvas height'} - 1 (got "${String(v)}")`, 2);
+  return v;
+}
+
+function checkOptions(options) {
+  if (options === null || typeof options !== 'object' || Array.isArray(options))
+    throw new ScantraceError('options: not an object', 2);
+  if ('tolerance' in options) {
+    // `diff --tolerance`: a number from 0 to 1 (its range checked first, as CLI11 checks it: an
+    // infinity is out of range), finite (NaN passed every image, and JSON makes it null).
+    const t = options.tolerance;
+    if (typeof t === 'number' && (t < 0 || t > 1))
+      throw new ScantraceError(`tolerance: Value ${t} not in range 0.000000 to 1.000000`, 2);
+    if (typeof t !== 'number' || !Number.isFinite(t))
+      throw new ScantraceError(`tolerance: "${String(t)}" is not a finite number`, 2);
+  }
+  if ('max_bytes' in options) {
+    // `trace --max-bytes`: an integer, 1024 to 2^50.
+    const b = options.max_bytes;
+    if (typeof b !== 'number' || !Number.isInteger(b) || b < 1024 || b > 2 ** 50)
+      throw new ScantraceError(`max_bytes: Value ${String(b)} not in range 1024 to 1125899906842624`, 2);
+  }
+  for (const key of ['first', 'count', 'rows_per_step', 'width', 'height', 'subpixel_bits', 'max_events']) {
+    // Counts and sizes: the module reads them as integers, which 1.5 or -1 would not be.
+    const v = options[key];
+    if (key in options && (typeof v !== 'number' || !Number.isInteger(v) || v < 0))
+      throw new ScantraceError(`${key}: must be an integer 0 or more (got "${String(v)}")`, 2);
+  }
+  return JSON.stringify(options);
+}
+
+// The last part of a file's name, as the module's file system takes it (`fallback` for none): '.'
+// and '..' name no file (they threw emscripten's plain "FS error").
+function baseName(name, fallback, what) {
+  const base = String(name).replace(/^.*[\\/]/, '') || fallback;
+  if (base === '.' || base === '..' || base.includes('\0'))
+    throw new ScantraceError(`${what}: "${String(name)}" is not a file name`, 2);
+  return base;
+}
+
+// Any other error of a call (a file the module's file system refuses, a wrong type of argument,
+// a string too long for the engine) as a ScantraceError: status 2 for an argument, else 1.
+function asScantraceError(e) {
+  if (e instanceof ScantraceError) return e;
+  const fsError = e && typeof e.errno === 'number';
+  const message = fsError ? `the module's file system refused the file (errno ${e.errno})` : String((e && e.message) || e);
+  return new ScantraceError(message, e instanceof TypeError || fsError ? 2 : 1);
 }
 
 const decoder = new TextDecoder();
@@ -105,8 +157,11 @@ function numbersFrame(head, bytes) {
 }
 
 export class Scantrace {
-  constructor(module) {
+  constructor(module, printErr = () => {}) {
     this.m = module;
+    this.printErr = printErr;
+    // The warning of the last call (a trace its byte cap cut: the command's line), or null.
+    this.lastWarning = null;
     // Inputs are written to /in and named relative to it, so a message names the file as the
     // caller named it ("scene.json: …"), as the CLI names a file given relative to its directory.
     this.m.FS.mkdirTree('/in');
@@ -127,7 +182,7 @@ export class Scantrace {
     }
     if (typeof data !== 'string' && !(data instanceof Uint8Array))
       throw new ScantraceError('scene: JSON text, a scene object or {name, data}', 2);
-    const base = name.replace(/^.*[\\/]/, '') || 'scene.json';
+    const base = baseName(name, 'scene.json', 'scene');
     this.m.FS.writeFile(`/in/${base}`, data);
     return base;
   }
@@ -158,6 +213,8 @@ export class Scantrace {
       for (const p of stack) m._free(p);
     }
     if (status !== 0) throw new ScantraceError(m.UTF8ToString(m._st_error()), status);
+    this.lastWarning = m.UTF8ToString(m._st_warning()) || null;
+    if (this.lastWarning) this.printErr(this.lastWarning);
     return {
       text: () => decoder.decode(m.HEAPU8.subarray(m._st_result_text(), m._st_result_text() + m._st_result_size())),
       bytes: () => m.HEAPU8.slice(m._st_result_bytes(), m._st_result_bytes() + m._st_result_bytes_size()),
@@ -173,7 +230,7 @@ export class Scantrace {
 
   // {width, height, rgba (Uint8ClampedArray, row-major RGBA), faces, ms}: `scantrace render`'s image.
   render(scene, options = {}) {
-    const r = this._call('render', [this._sceneFile(scene), JSON.stringify(options)]);
+    const r = this._call('render', [this._sceneFile(scene), checkOptions(options)]);
     const info = JSON.parse(r.text());
     return { ...info, rgba: new Uint8ClampedArray(r.bytes().buffer) };
   }
@@ -188,7 +245,7 @@ export class Scantrace {
   traceText(input, options = {}, into = null) {
     const spec = { ...input };
     if ('scene' in spec) spec.scene = this._sceneFile(spec.scene);
-    const r = this._call('trace', [JSON.stringify(spec), JSON.stringify(options)]);
+    const r = this._call('trace', [JSON.stringify(spec), checkOptions(options)]);
     if (options.keep) {
       const target = into && (into.data || into);
       const rgba = r.bytesInto(target) ? target : new Uint8ClampedArray(r.bytes().buffer);
@@ -204,7 +261,9 @@ export class Scantrace {
   // count, edge_table: face `triangle`'s edge_table event, scanline: its scanline event of row
   // `y`}, each the object its line of the JSON Lines holds, or null.
   keptStep(triangle, y) {
-    return JSON.parse(this._call('kept_step', [triangle | 0, Number(y)]).text());
+    if (!Number.isInteger(triangle) || triangle < 0 || triangle > 2147483647 || !Number.isInteger(y))
+      throw new ScantraceError(`keptStep: a triangle's index and a row, integers (got ${String(triangle)}, ${String(y)})`, 2);
+    return JSON.parse(this._call('kept_step', [triangle, y]).text());
   }
 
   // The same trace as event objects, one per line (header first, footer last).
@@ -230,7 +289,7 @@ export class Scantrace {
       this.m.FS.writeFile('/in/trace.jsonl', text);
       file = 'trace.jsonl';
     }
-    const r = this._call('frames', [file, JSON.stringify(options)]);
+    const r = this._call('frames', [file, checkOptions(options)]);
     const out = JSON.parse(r.text());
     if (options.encoding === 'binary') {
       const bytes = new Uint8ClampedArray(r.bytes().buffer);
@@ -249,7 +308,9 @@ export class Scantrace {
 
   // `scantrace why SCENE X Y --json`'s document.
   why(scene, x, y, options = {}) {
-    return JSON.parse(this._call('why', [this._sceneFile(scene), x | 0, y | 0, JSON.stringify(options)]).text());
+    // Doubles to the module (no `| 0`), checked here and there as the command checks them.
+    const px = pixelCoordinate(x, 'X'), py = pixelCoordinate(y, 'Y');
+    return JSON.parse(this._call('why', [this._sceneFile(scene), px, py, checkOptions(options)]).text());
   }
 
   // drawScantraceFrame's JavaScript source (viz/frame_json.hpp).
@@ -264,16 +325,31 @@ export class Scantrace {
 
   // An image file {name, data} checked as `scantrace diff` checks it before decoding
   // (grade/image_header.hpp): {format, width, height} of a PNG or BMP whose header it accepts
-  // (decode it then, e.g. with the browser), or of a .npy, which diff() takes as it is. Bad input
-  // throws ScantraceError with the command's line.
-  checkImage(file) {
-    return JSON.parse(this._call('image_header', [this._imageFile(file)]).text());
+  // (decode it then, e.g. with the browser), or of a .npy, which diff() takes as it is. With the
+  // scene it is for (and diff's options), the command's pre-check against the scene's canvas
+  // (grade/image_precheck.hpp): a size other than the canvas's adds `report`, diff's report made
+  // from the header alone (canvas_size; lastDiffPicture its picture), and there is nothing to
+  // decode. Bad input throws ScantraceError with the command's line.
+  checkImage(file, scene = null, options = {}) {
+    const image = this._imageFile(file);
+    const sceneFile = scene === null ? '' : this._sceneFile(scene);
+    const r = this._call('image_header', [image, sceneFile, checkOptions(options)]);
+    const out = JSON.parse(r.text());
+    if (out.report) this._keepPicture(out.report, r);
+    return out;
+  }
+
+  // The picture of the differences of `report` (the result's bytes), as lastDiffPicture.
+  _keepPicture(report, r) {
+    const picture = new Uint8ClampedArray(r.bytes().buffer);
+    const w = report.canvas ? report.canvas.width : 0;
+    this.lastDiffPicture = w ? { width: w, height: picture.length / 4 / w, rgba: picture } : null;
   }
 
   _imageFile(file) {
     if (!file || typeof file.name !== 'string' || !(file.data instanceof Uint8Array))
       throw new ScantraceError('image file: {name, data} with data a Uint8Array', 2);
-    const base = file.name.replace(/^.*[\\/]/, '') || 'image';
+    const base = baseName(file.name, 'image', 'image file');
     this.m.FS.writeFile(`/in/${base}`, file.data);
     return base;
   }
@@ -283,20 +359,30 @@ export class Scantrace {
   // lastDiffPicture: the picture of the last diff's differences, {width, height, rgba}.
   diff(scene, image, options = {}) {
     let r;
+    const checked = checkOptions(options);
     if (image && image.data instanceof Uint8Array) {
-      r = this._call('diff_npy', [this._sceneFile(scene), this._imageFile(image), JSON.stringify(options)]);
+      r = this._call('diff_npy', [this._sceneFile(scene), this._imageFile(image), checked]);
     } else {
-      const { width, height, rgba } = image;
-      if (!(width > 0 && height > 0) || !rgba || rgba.length !== width * height * 4)
+      const { width, height, rgba } = image || {};
+      if (!(Number.isInteger(width) && Number.isInteger(height) && width > 0 && height > 0) || !rgba || rgba.length !== width * height * 4)
         throw new ScantraceError('image: {width, height, rgba} with width × height × 4 bytes, or a .npy {name, data}', 2);
       const bytes = rgba instanceof Uint8Array ? rgba : new Uint8Array(rgba.buffer, rgba.byteOffset, rgba.length);
-      r = this._call('diff', [this._sceneFile(scene), bytes, width, height, image.name || 'image.png', JSON.stringify(options)]);
+      r = this._call('diff', [this._sceneFile(scene), bytes, width, height, String(image.name || 'image.png'), checked]);
     }
     const report = JSON.parse(r.text());
-    const picture = new Uint8ClampedArray(r.bytes().buffer);
-    const w = report.canvas ? report.canvas.width : 0;
-    this.lastDiffPicture = w ? { width: w, height: picture.length / 4 / w, rgba: picture } : null;
+    this._keepPicture(report, r);
     return report;
   }
 }
 
+// Every call of the API throws ScantraceError and nothing else (asScantraceError).
+for (const name of ['render', 'traceText', 'trace', 'keptStep', 'frames', 'why', 'canvasScript', 'demoScene', 'checkImage', 'diff']) {
+  const call = Scantrace.prototype[name];
+  Scantrace.prototype[name] = function (...args) {
+    try {
+      return call.apply(this, args);
+    } catch (e) {
+      throw asScantraceError(e);
+    }
+  };
+}

@@ -199,8 +199,11 @@ def why(scene, x, y, *, shading="gouraud", fill_rule="top-left"):
                                       background=s["background"]))
 
 
-def _image_argument(image):
-    """(array, format): format "npy" for arrays and .npy files, else the image file's."""
+def _image_argument(image, canvas):
+    """(array, format, declared size): format "npy" for arrays and .npy files, else the image
+    file's. A file goes through the command's pre-check against the scene's canvas (C++,
+    grade/image_precheck.hpp): when its header declares another size, array is None and nothing
+    is decoded (diff reports canvas_size from the declared size)."""
     if isinstance(image, (str, bytes, os.PathLike)):
         path = os.fsdecode(image)
         if os.path.isdir(path):
@@ -208,9 +211,10 @@ def _image_argument(image):
         with open(path, "rb") as f:
             npy = f.read(6) == b"\x93NUMPY"
         if npy:
-            return _scantrace.read_npy_image(path), "npy"
-        return _cv_module("diff of an image file (PNG, JPEG, BMP)").read_image(path)
-    return image, "npy"
+            pixels, declared = _scantrace.read_npy_image(path, canvas)
+            return pixels, "npy", declared
+        return _cv_module("diff of an image file (PNG, JPEG, BMP)").read_image(path, canvas)
+    return image, "npy", None
 
 
 def diff(scene, image, *, shading="gouraud", fill_rule="top-left", tolerance=1 / 255,
@@ -225,12 +229,12 @@ def diff(scene, image, *, shading="gouraud", fill_rule="top-left", tolerance=1 /
     default; ``--no-undo`` is ``undo=False``). ``report.agrees`` is the command's exit status 0.
     """
     s = _scene_arrays(scene, shading)
-    pixels, image_format = _image_argument(image)
+    pixels, image_format, declared = _image_argument(image, tuple(int(v) for v in s["size"]))
     return DiffReport(*_scantrace.diff(s["vertices"], s["faces"], s["vcolors"], s["depth"],
                                        pixels, shading=shading, fill_rule=fill_rule,
                                        size=s["size"], background=s["background"],
                                        tolerance=tolerance, undo=bool(undo),
-                                       format=image_format))
+                                       format=image_format, declared=declared))
 
 
 def check(trace):

@@ -9,6 +9,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include "arrays.hpp"
 #include "grade/image_input.hpp"
@@ -56,15 +58,20 @@ py::dict replay(const PyTrace& t, const std::filesystem::path& out, py::handle f
   return d;
 }
 
-// An image file as the command's diff reads it: uint8 for 8-bit files (all of PNG, JPEG, BMP),
-// and its format.
-py::tuple read_image(const std::filesystem::path& path) {
-  const grade::SubmittedImage im = grade::read_submitted_image(path, grade::decode_with_opencv);
-  py::array_t<std::uint8_t> out({im.pixels.height(), im.pixels.width(), 3});
+// An image file as the command's diff reads it, after its pre-check against a canvas of `canvas`
+// (width, height; grade/image_precheck.hpp): (uint8 pixels, format, (width, height) declared),
+// the pixels None when the header's size decides (nothing decoded: diff reports canvas_size).
+py::tuple read_image(const std::filesystem::path& path, std::pair<int, int> canvas) {
+  grade::ImageHeader header;
+  const std::optional<grade::SubmittedImage> im = grade::read_submitted_image(
+      path, grade::decode_with_opencv, canvas.first, canvas.second, header);
+  const py::tuple size = py::make_tuple(header.width, header.height);
+  if (!im) return py::make_tuple(py::none(), header.format, size);
+  py::array_t<std::uint8_t> out({im->pixels.height(), im->pixels.width(), 3});
   std::uint8_t* o = out.mutable_data();
-  for (const Rgb32f& p : im.pixels.pixels())
+  for (const Rgb32f& p : im->pixels.pixels())
     for (const float v : {p.r, p.g, p.b}) *o++ = static_cast<std::uint8_t>(std::lround(v * 255.0f));
-  return py::make_tuple(out, im.format);
+  return py::make_tuple(out, im->format, size);
 }
 
 }  // namespace
@@ -74,5 +81,5 @@ PYBIND11_MODULE(_scantrace_cv, m) {
   py::module_::import("scantrace._scantrace");  // registers Trace and InputError
   m.def("replay", &replay, py::arg("trace"), py::arg("out"), py::arg("frame_size"), py::arg("fps"),
         py::arg("hold"), py::arg("source"));
-  m.def("read_image", &read_image, py::arg("path"));
+  m.def("read_image", &read_image, py::arg("path"), py::arg("canvas"));
 }

@@ -18,6 +18,9 @@
 #include "grade/diff_report.hpp"
 #include "grade/global_mistakes.hpp"
 #include "grade/mistake_catalogue.hpp"
+#include "grade/image_precheck.hpp"
+#include "io/json_input.hpp"
+#include "io/memory_budget.hpp"
 #include "grade/pixel_story.hpp"
 #include "io/npy_reader.hpp"
 #include "py_trace.hpp"
@@ -133,24 +136,33 @@ grade::SubmittedImage submitted_array(py::handle value, const std::string& forma
   return out;
 }
 
-// A .npy image file through the command's strict reader (io/npy_reader.hpp).
-py::array read_npy_image(const std::string& path) {
-  const NpyImage npy = read_npy(path);
+// A .npy image file through the command's pre-check against a canvas of `canvas`
+// (grade/image_precheck.hpp: its shape, the canvas, the memory budget) and its strict reader:
+// (the array, (width, height)), the array None when the shape decides (nothing read of the values:
+// diff reports canvas_size).
+py::tuple read_npy_image(const std::string& path, std::pair<int, int> canvas) {
+  const std::string bytes = within_memory(path, [&] { return json_input::read_text_file(path); });
+  grade::ImageHeader header;
+  const bool decided = grade::precheck_image(bytes, path, &grade::declared_png_or_bmp_size,
+                                             canvas.first, canvas.second, header);
+  const py::tuple size = py::make_tuple(header.width, header.height);
+  if (decided) return py::make_tuple(py::none(), size);
+  const NpyImage npy = parse_npy(bytes, path, grade::kMaxNpyImageBytes);
   if (npy.integer) {
     py::array_t<std::uint8_t> out({npy.height, npy.width, 3});
     for (std::size_t k = 0; k < npy.values.size(); ++k)
       out.mutable_data()[k] = static_cast<std::uint8_t>(npy.values[k]);
-    return out;
+    return py::make_tuple(out, size);
   }
   py::array_t<float> out({npy.height, npy.width, 3});
   std::memcpy(out.mutable_data(), npy.values.data(), npy.values.size() * sizeof(float));
-  return out;
+  return py::make_tuple(out, size);
 }
 
 py::tuple diff(py::handle vertices, py::handle faces, py::handle vcolors, py::handle depth,
                py::handle image, const std::string& shading, const std::string& fill_rule,
                py::handle size, py::handle background, py::handle tolerance, bool undo,
-               const std::string& format) {
+               const std::string& format, py::handle declared) {
   const FillOptions opt = fill_options(shading, fill_rule);
   const Scene scene = scene_from_arrays(vertices, faces, vcolors, depth, size_argument(size),
                                         color_argument(background, "background"));
@@ -164,9 +176,12 @@ py::tuple diff(py::handle vertices, py::handle faces, py::handle vcolors, py::ha
     throw_value_error("tolerance: expected a difference per channel in [0, 1], got " +
                       py::repr(tolerance).cast<std::string>());
   o.undo = undo;
-  const grade::SubmittedImage submitted = submitted_array(image, format);
   grade::DiffReport report;
-  {
+  if (image.is_none()) {  // a file whose header decided (read_npy_image, read_image): its size
+    const auto [w, h] = declared.cast<std::pair<std::int64_t, std::int64_t>>();
+    report = grade::canvas_size_report(scene, opt, {format, w, h}, o);
+  } else {
+    const grade::SubmittedImage submitted = submitted_array(image, format);
     py::gil_scoped_release free;
     report = grade::diff(scene, opt, submitted, o);
   }
@@ -274,8 +289,9 @@ void bind_grade(py::module_& m) {
         py::arg("size"), py::arg("background"));
   m.def("diff", &diff, py::arg("vertices"), py::arg("faces"), py::arg("vcolors"), py::arg("depth"),
         py::arg("image"), py::kw_only(), py::arg("shading"), py::arg("fill_rule"), py::arg("size"),
-        py::arg("background"), py::arg("tolerance"), py::arg("undo"), py::arg("format"));
-  m.def("read_npy_image", &read_npy_image, py::arg("path"));
+        py::arg("background"), py::arg("tolerance"), py::arg("undo"), py::arg("format"),
+        py::arg("declared") = py::none());
+  m.def("read_npy_image", &read_npy_image, py::arg("path"), py::arg("canvas"));
   m.def("whole_image_mistakes", &whole_image_mistakes, py::arg("image"), py::arg("reference"),
         py::arg("faces"), py::kw_only(), py::arg("background"), py::arg("tolerance"),
         py::arg("undo"));

@@ -477,9 +477,13 @@ export async function start(st) {
   async function diffImage(file, bytes) {
     if (s.mode !== 'scene') return showError(`${file.name}: open the scene it was rendered for first`);
     try {
-      const header = st.checkImage({ name: file.name, data: bytes });
-      let report;
-      if (header.format === 'npy') {
+      // Checked against the open scene: a size other than its canvas's is answered from the
+      // header (canvas_size), as the command answers it, and nothing is decoded.
+      const header = st.checkImage({ name: file.name, data: bytes }, scene, fillOptions());
+      let report = header.report;
+      if (report) {
+        // nothing to decode
+      } else if (header.format === 'npy') {
         report = st.diff(scene, { name: file.name, data: bytes }, fillOptions());
       } else {
         const bitmap = await createImageBitmap(new Blob([bytes], { type: `image/${header.format}` }));

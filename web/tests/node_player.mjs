@@ -15,22 +15,13 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 
+import { check, summary } from './check.mjs';
+
 const [webDir] = process.argv.slice(2);
 const { load } = await import(pathToFileURL(path.join(webDir, 'scantrace.mjs')));
 const { loadPlayer } = await import(pathToFileURL(path.join(webDir, 'player_api.mjs')));
 const full = await load();
 const pm = await loadPlayer(fs.readFileSync(path.join(webDir, 'scantrace_player.wasm')));
-
-let checks = 0;
-function check(what, f) {
-  try {
-    f();
-    ++checks;
-  } catch (e) {
-    console.error(`FAIL ${what}: ${e.message.split('\n').slice(0, 8).join('\n')}`);
-    process.exitCode = 1;
-  }
-}
 
 check("the player's module receives only the player's exports, and no file system", () => {
   const glue = fs.readFileSync(path.join(webDir, 'scantrace_player.mjs'), 'utf8');
@@ -91,4 +82,4 @@ check('a malformed trace: one line naming it and its line; the module keeps work
   assert.throws(() => pm.frame(1e6), (e) => e.status === 2);
 });
 
-console.log(`${checks} checks passed${process.exitCode ? ', some FAILED' : ''}`);
+console.log(summary());

@@ -117,6 +117,7 @@ class Battery:
         self.scene, self.hidden_seed = scene, hidden_seed
         self.calls, self.tests, self.causes = [], [], []
         self.beyond = set()     # calls on probes beyond the assignment (non-integer vertices)
+        self.scaled = []        # (where, largest value) of each canvas on a 0–255 scale
 
     # ---- calls -------------------------------------------------------------------------------
     def _call(self, call_id, func, args, **extra):
@@ -191,6 +192,24 @@ class Battery:
                 call["adapter"] = adapter
 
     # ---- scoring -----------------------------------------------------------------------------
+    def _canvas(self, value, shape, where):
+        """canvas(), remembering where a canvas came on a 0–255 scale: it is rescaled to grade
+        the rest, and the scale is named once (scaled_255), with the tests that showed it."""
+        img, error = canvas(value, shape)
+        if img is not None and value.max() > 1.5:
+            self.scaled.append((where, float(value.max())))
+        return img, error
+
+    def _scaled_255(self):
+        if not self.scaled:
+            return []
+        where = list(dict.fromkeys(w for w, _ in self.scaled))   # a dozen at most
+        return [diagnose.Cause(
+            "scaled_255", 1.0,
+            f"values up to {max(v for _, v in self.scaled):g} in {len(self.scaled)} returned "
+            f"image(s): {'; '.join(where)}. The painted pixels were divided by 255 to grade the "
+            "rest")]
+
     def grade(self, results):
         self.results = results
         self.causes += diagnose.diagnose_api(self.functions)
@@ -212,6 +231,7 @@ class Battery:
                                  f"Course scene face by face: {_SHADING[shading]} "
                                  f"({'f' if shading == 'f' else 'g'}_shading in the painter's "
                                  "order)", "course_faces", "visible", painter=False)
+        self.causes += self._scaled_255()
         # A verdict on a probe beyond the assignment (a loop never reaching a float end) is in
         # that probe's line, not a cause: the course never passes such vertices.
         self.causes += diagnose.diagnose_verdicts(
@@ -306,7 +326,7 @@ class Battery:
                 outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer, False, r.status)
                 verdict = verdict or r.status
                 continue
-            img, error = canvas(r.value, (*probe.size, 3))
+            img, error = self._canvas(r.value, (*probe.size, 3), f"the {func} probes")
             if img is None:
                 lines.append(f"- probe `{probe.name}`: {error}")
                 outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer, False)
@@ -371,7 +391,7 @@ class Battery:
         what = "probe pair `shared_edge` (f_shading on two faces sharing an edge)"
         if r.status != "ok":
             return 0, [f"- {what}: {self._failed_call(r)}"]
-        img, error = canvas(r.value, (*SHARED_EDGE_SIZE, 3))
+        img, error = self._canvas(r.value, (*SHARED_EDGE_SIZE, 3), "probe pair `shared_edge`")
         if img is None:
             return 0, [f"- {what}: {error}"]
         if any(c.id == "transposed" for c in self.causes):
@@ -426,7 +446,7 @@ class Battery:
         r = self.results["pairs_render_f"]
         if r.status != "ok":
             return self._add(name, "probes_pairs", 0.0, [self._failed_call(r)], verdict=r.status)
-        img, error = canvas(r.value, (512, 512, 3))
+        img, error = self._canvas(r.value, (512, 512, 3), "render_img on the probe pairs")
         if img is None:
             return self._add(name, "probes_pairs", 0.0, [f"`render_img` {error}."])
         reference = scantrace.render_img(PAIRS["faces"], PAIRS["vertices"], PAIRS["vcolors"],
@@ -460,7 +480,7 @@ class Battery:
         r = self.results[call_id]
         if r.status != "ok":
             return self._add(name, key, 0.0, [self._failed_call(r)], visibility, r.status)
-        img, error = canvas(r.value, (512, 512, 3))
+        img, error = self._canvas(r.value, (512, 512, 3), name)
         if img is None:
             return self._add(name, key, 0.0, [f"`{func}` {error}."], visibility)
         reference = scantrace.render_img(scene["faces"], scene["vertices"], scene["vcolors"],

@@ -77,6 +77,10 @@ CATALOGUE = {
     "background": (
         "The background is {detail} instead of white (1, 1, 1).",
         "start render_img from `np.ones((512, 512, 3))`"),
+    "scaled_255": (
+        "The image holds colours on a 0–255 scale; the course's images are floats in [0, 1].",
+        "write colours in [0, 1] (the vcolors as given, on `np.ones((512, 512, 3))`): divide by "
+        "255 only when saving 8-bit files; the grader rescaled yours to grade the rest"),
     "order_reversed": (
         "Faces are painted nearest first; the painter's algorithm draws the deepest face (the "
         "largest mean depth) first.",

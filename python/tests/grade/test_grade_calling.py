@@ -348,13 +348,59 @@ def test_transposed_on_a_grey_background_is_undone_together(tmp_path, sandbox_ok
 
 def test_painted_pixels_in_0_255_are_rescaled_alone(tmp_path, sandbox_ok):
     """colour * 255 written on the grader's canvas of ones: the painted pixels are rescaled,
-    the untouched white stays white (dividing it too made every probe wrong everywhere)."""
+    the untouched white stays white (dividing it too made every probe wrong everywhere). The
+    rest is graded after the rescale; the scale itself is named once (scaled_255), with the
+    tests that showed it."""
     source = CORRECT.replace("img[y, x] = colour  # PUT",
                              "img[y, x] = np.asarray(colour) * 255  # PUT")
     graded = grade_source(tmp_path, source)
-    assert graded.causes == []
-    assert [t.name for t in graded.tests if t.status != "passed"] == []
+    assert [c.id for c in graded.causes] == ["scaled_255"]
+    evidence = graded.causes[0].evidence
+    assert "the f_shading probes" in evidence and "Hidden scene 1: flat" in evidence
+    assert "255" in evidence and "0–255" in graded.causes[0].sentence
+    assert [t.name for t in graded.tests if t.status != "passed"] == ["Deduction: scaled_255"]
     assert all("0–255 range" in t.output for t in _scene_tests(graded))
+    # The rubric's deduction for it, as for the other mistakes the grader undoes.
+    assert graded.score == graded.max_score - 5
+
+
+def test_render_img_returning_uint8_is_named_once(tmp_path, sandbox_ok):
+    """render_img returning `(img * 255).astype(np.uint8)` (for cv2.imwrite), its fills in
+    [0, 1]: the scenes are right once rescaled, and scaled_255 names render_img's tests only."""
+    source = INT64_STUDENT.replace(
+        "            img = g_shading(img, t[\"vertices\"], t[\"colors\"])\n    return img\n",
+        "            img = g_shading(img, t[\"vertices\"], t[\"colors\"])\n"
+        "    return (img * 255).astype(np.uint8)\n")
+    assert "astype(np.uint8)" in source
+    graded = grade_source(tmp_path, source)
+    assert [c.id for c in graded.causes] == ["scaled_255"]
+    evidence = graded.causes[0].evidence
+    assert "up to 255 in" in evidence and "render_img on the probe pairs" in evidence
+    assert "probes" not in evidence.replace("probe pairs", "")     # the fills are in [0, 1]
+    for t in graded.tests:
+        if t.name.startswith(("Hidden scene", "Probes: pairs")):
+            assert t.status == "passed", (t.name, t.output)
+
+
+def test_shading_chosen_by_a_dict_of_other_years_names(tmp_path, sandbox_ok):
+    """render_img choosing its fill with `{'flat': f_shading, 'gouraud': g_shading}[shading]`
+    (no comparison with a string anywhere): another year's shading values, graded through the
+    adapter (a KeyError on 'f' otherwise)."""
+    source = INT64_STUDENT.replace(
+        """        if shading == "f":
+            img = f_shading(img, t["vertices"], t["colors"])
+        else:
+            img = g_shading(img, t["vertices"], t["colors"])
+""", """        shader = {"flat": f_shading, "gouraud": g_shading}[shading]
+        img = shader(img, t["vertices"], t["colors"])
+""")
+    assert "shader = {" in source and 'shading == "f"' not in source
+    graded = grade_source(tmp_path, source)
+    assert [c.id for c in graded.causes] == ["other_api"]
+    assert "with shading 'flat' / 'gouraud'" in graded.causes[0].evidence
+    for t in graded.tests:
+        if t.name.startswith(("Hidden scene", "Probes: pairs")):    # render_img's tests
+            assert t.status == "passed", (t.name, t.output)
 
 
 def test_face_by_face_tests_undo_the_whole_image_mistakes(tmp_path, sandbox_ok):

@@ -5,6 +5,7 @@ real student's report in ../shared/seeds describes), or follows another year's A
 to full marks on the assignment's domain (the correct ones) or to its cause."""
 
 import dataclasses
+import pathlib
 import textwrap
 
 import numpy as np
@@ -210,8 +211,11 @@ def test_other_years_api_is_graded_through_an_adapter(tmp_path, sandbox_ok, sour
     assert source == OTHER_YEAR or source.count("255") == 3
     graded = grade_source(tmp_path, source)
     assert not graded.error and len(graded.tests) >= 8
-    assert [t.name for t in graded.tests if t.status != "passed"] == []
-    assert [c.id for c in graded.causes] == ["other_api"]
+    # The 0–255 scale is a mistake of its own, named with its deduction (graded after a rescale).
+    scaled = [] if source == OTHER_YEAR else ["scaled_255"]
+    assert [t.name for t in graded.tests if t.status != "passed"] == \
+        [f"Deduction: {c}" for c in scaled]
+    assert [c.id for c in graded.causes] == ["other_api"] + scaled
     evidence = graded.causes[0].evidence
     for text in ("shade_triangle(img, verts2d, vcolors, shade_t)` for `f_shading` with "
                  "shade_t = 'flat'", "for `g_shading` with shade_t = 'gouraud'",
@@ -466,3 +470,18 @@ def test_a_verdict_beyond_the_assignment_is_not_a_cause(tmp_path, sandbox_ok):
     outcomes = [p for t in graded.tests for p in t.probes if p.status == "timeout"]
     # (halves: 3.5 + 16 steps reaches 19.5.)
     assert [(p.name, p.integer) for p in outcomes] == [("non_integer", False)]
+
+
+def test_a_face_with_two_equal_vertices_is_a_probe(tmp_path, sandbox_ok):
+    """The seed report's edge table before its fix keeps a zero-length edge (two equal vertices)
+    as a vertical one that is never retired, drawing the face as a wedge. The collinear probes
+    have three distinct vertices and never show it; a probe with two equal vertices does, with
+    no course scene (whose 33 such faces were the only evidence)."""
+    equal = [p for p in PROBES if len(set(p.vertices)) < 3]
+    assert [p.name for p in equal] == ["zero_length_edge"]
+    assert fill_models.degenerate(equal[0].array)
+    assert not fill_models.correct(equal[0].array, equal[0].size).any()
+    corpus = pathlib.Path(__file__).resolve().parent / "corpus" / "w_seed_zero_length_edge"
+    graded = grade(corpus, tmp_path / "out", quick_options())
+    assert [c.id for c in graded.causes] == ["degenerate_drawn"]
+    assert "probe `zero_length_edge`" in graded.causes[0].evidence

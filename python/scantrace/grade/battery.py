@@ -457,7 +457,8 @@ class Battery:
         alternatives = {k: v[corner] for k, v in _painter_alternatives(PAIRS, "f").items()}
         fixed, causes = diagnose.diagnose_image(
             np.ascontiguousarray(img[corner]), reference[corner],
-            _uncovered(PAIRS, "f", reference)[corner], alternatives)
+            _uncovered(PAIRS, "f", reference)[corner], alternatives,
+            {k: v[corner] for k, v in _painter_faces(PAIRS).items()})
         reference = reference[corner]
         self._add_causes(causes, "probe scene `pairs` (render_img, flat): ")
         ok, lines = 0, []
@@ -489,7 +490,8 @@ class Battery:
         # order's alternatives only where the student's own render_img chose the order).
         uncovered = _uncovered(scene, shading, reference)
         fixed, causes = diagnose.diagnose_image(
-            img, reference, uncovered, _painter_alternatives(scene, shading) if painter else {})
+            img, reference, uncovered, _painter_alternatives(scene, shading) if painter else {},
+            _painter_faces(scene) if painter else None)
         self._add_causes(causes, f"{name}: ")
         mismatch = diagnose.image_mismatch(fixed, reference)
         fraction = min(max((1 - mismatch - 0.8) / 0.2, 0.0), 1.0)
@@ -533,3 +535,31 @@ def _painter_alternatives(scene, shading):
     reversed_order = scantrace.render_img(f, v, c, -np.asarray(d, np.float64), shading)
     ties_reversed = scantrace.render_img(f[::-1].copy(), v, c, d, shading)
     return {"order_reversed": reversed_order, "order_unstable_on_ties": ties_reversed}
+
+
+def face_ids(faces, vertices, depth):
+    """Which face each pixel of render_img(faces, vertices, ·, depth) shows (its row in
+    `faces`; -1: none): the scene rendered flat with each face on vertices of its own, coloured
+    by its row number in base 255 (a face's flat colour is the mean of three equal colours). The
+    mean depths, hence the painter's order and its ties, are the scene's own."""
+    faces = np.asarray(faces, np.int64)
+    n = len(faces)
+    code = np.arange(1, n + 1)
+    colour = np.stack([code % 255, code // 255 % 255, code // 255 ** 2], axis=1) / 254.0
+    own = np.arange(3 * n, dtype=np.int64).reshape(n, 3)
+    img = scantrace.render_img(own, np.asarray(vertices)[faces].reshape(-1, 2),
+                               np.repeat(colour, 3, axis=0),
+                               np.asarray(depth, np.float64).reshape(-1)[faces].reshape(-1), "f")
+    digits = np.rint(img * 254.0).astype(np.int64)
+    ids = digits[..., 0] + 255 * digits[..., 1] + 255 ** 2 * digits[..., 2] - 1
+    ids[ids >= n] = -1          # white, 254 in every digit: no face
+    return ids
+
+
+def _painter_faces(scene):
+    """face_ids() of the reference and of each of _painter_alternatives()' orders."""
+    f, v, d = scene["faces"], scene["vertices"], np.asarray(scene["depth"], np.float64)
+    n = len(f)
+    ties = face_ids(f[::-1].copy(), v, d)
+    return {"reference": face_ids(f, v, d), "order_reversed": face_ids(f, v, -d),
+            "order_unstable_on_ties": np.where(ties >= 0, n - 1 - ties, -1)}

@@ -485,3 +485,18 @@ def test_a_face_with_two_equal_vertices_is_a_probe(tmp_path, sandbox_ok):
     graded = grade(corpus, tmp_path / "out", quick_options())
     assert [c.id for c in graded.causes] == ["degenerate_drawn"]
     assert "probe `zero_length_edge`" in graded.causes[0].evidence
+
+
+@pytest.mark.parametrize("span,variant", [
+    ("range(round(xl), round(xr) + 1)", "round() (halves to even) at both ends, the right end"),
+    ("range(int(xl + 0.5), int(xr + 0.5) + 1)", "nearest at both ends, the right end included")])
+def test_rounded_span_ends_with_the_right_end_included(tmp_path, sandbox_ok, span, variant):
+    """The seed report's literal span loop, `range(round(x1), round(x2) + 1)`: rounded ends and
+    the right one filled too. No single axis of the composed models drew it (round() with an
+    exclusive end, or the closed rule's ceil/floor), so no cause was named."""
+    source = CORRECT.replace("for x in range(math.ceil(xl), math.ceil(xr)):  # SPAN",
+                             f"for x in {span}:  # SPAN")
+    assert span in source
+    graded = grade_source(tmp_path, source)
+    assert [c.id for c in graded.causes] == ["span_end_rounding"]
+    assert variant in graded.causes[0].sentence

@@ -121,6 +121,7 @@ class Battery:
         self.scene, self.hidden_seed = scene, hidden_seed
         self.calls, self.tests, self.causes = [], [], []
         self.beyond = set()     # calls on probes beyond the assignment (non-integer vertices)
+        self.scaled = []        # (where, largest value) of each canvas on a 0–255 scale
 
     # ---- calls -------------------------------------------------------------------------------
     def _call(self, call_id, func, args, **extra):
@@ -205,6 +206,24 @@ class Battery:
                              if self.scene is not None and runs(k)]
 
     # ---- scoring -----------------------------------------------------------------------------
+    def _canvas(self, value, shape, where):
+        """canvas(), remembering where a canvas came on a 0–255 scale: it is rescaled to grade
+        the rest, and the scale is named once (scaled_255), with the tests that showed it."""
+        img, error = canvas(value, shape)
+        if img is not None and value.max() > 1.5:
+            self.scaled.append((where, float(value.max())))
+        return img, error
+
+    def _scaled_255(self):
+        if not self.scaled:
+            return []
+        where = list(dict.fromkeys(w for w, _ in self.scaled))   # a dozen at most
+        return [diagnose.Cause(
+            "scaled_255", 1.0,
+            f"values up to {max(v for _, v in self.scaled):g} in {len(self.scaled)} returned "
+            f"image(s): {'; '.join(where)}. The painted pixels were divided by 255 to grade the "
+            "rest")]
+
     def grade(self, results):
         self.results = results
         self.causes += diagnose.diagnose_api(self.functions)
@@ -237,6 +256,7 @@ class Battery:
                                  f"({'f' if shading == 'f' else 'g'}_shading in the painter's "
                                  "order)", "course_faces", painter=False)
             self._references.pop(("course", shading), None)
+        self.causes += self._scaled_255()
         # A verdict on a probe beyond the assignment (a loop never reaching a float end) is in
         # that probe's line, not a cause: the course never passes such vertices.
         self.causes += diagnose.diagnose_verdicts(
@@ -353,7 +373,7 @@ class Battery:
                 outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer, False, r.status)
                 verdict = verdict or r.status
                 continue
-            img, error = canvas(r.value, (*probe.size, 3))
+            img, error = self._canvas(r.value, (*probe.size, 3), f"the {func} probes")
             if img is None:
                 lines.append(f"- probe `{probe.name}`: {error}")
                 outcomes[probe.name] = ProbeOutcome(probe.name, probe.integer, False)
@@ -432,7 +452,7 @@ class Battery:
         what = "probe pair `shared_edge` (f_shading on two faces sharing an edge)"
         if r is None or r.status != "ok":
             return 0.0, [f"- {what}: {self._failed_call(r)}"] if r is not None else []
-        img, error = canvas(r.value, (*SHARED_EDGE_SIZE, 3))
+        img, error = self._canvas(r.value, (*SHARED_EDGE_SIZE, 3), "probe pair `shared_edge`")
         if img is None:
             return 0.0, [f"- {what}: {error}"]
         if any(c.id == "transposed" for c in self.causes):
@@ -492,7 +512,7 @@ class Battery:
         r = self.results["pairs_render_f"]
         if r.status != "ok":
             return self._add(name, "probes_pairs", 0.0, [self._failed_call(r)], verdict=r.status)
-        img, error = canvas(r.value, (512, 512, 3))
+        img, error = self._canvas(r.value, (512, 512, 3), "render_img on the probe pairs")
         if img is None:
             return self._add(name, "probes_pairs", 0.0, [f"`render_img` {error}."])
         # The pairs lie in the canvas's top-left corner: compared there only (a square, so a
@@ -500,7 +520,7 @@ class Battery:
         refs = _pairs_references()
         fixed, causes = diagnose.diagnose_image(
             np.ascontiguousarray(img[:PAIRS_CORNER, :PAIRS_CORNER]), refs["reference"],
-            refs["uncovered"], refs["alternatives"])
+            refs["uncovered"], refs["alternatives"], refs["faces"])
         self._add_causes(causes, "probe scene `pairs` (render_img, flat): ")
         values, lines = [], []
         for (pair, what, faces, region), counts in zip(PAIR_REGIONS, refs["counted"]):
@@ -526,14 +546,15 @@ class Battery:
         r = self.results[call_id]
         if r.status != "ok":
             return self._add(name, key, 0.0, [self._failed_call(r)], verdict=r.status)
-        img, error = canvas(r.value, (512, 512, 3))
+        img, error = self._canvas(r.value, (512, 512, 3), name)
         if img is None:
             return self._add(name, key, 0.0, [f"`{func}` {error}."])
         refs = self._scene_references(*labelled, shading, painter)
         # The whole-image mistakes are undone in every image test, face by face included (the
         # order's alternatives only where the student's own render_img chose the order).
         fixed, causes = diagnose.diagnose_image(img, refs["reference"], refs["uncovered"],
-                                                refs.pop("alternatives") if painter else {})
+                                                refs.pop("alternatives") if painter else {},
+                                                refs.pop("faces") if painter else None)
         self._add_causes(causes, f"{name}: ")
         credit, n_wrong, counted = scoring.image_credit(fixed, refs["reference"],
                                                         refs["uncovered"])
@@ -560,6 +581,7 @@ class Battery:
             refs["uncovered"] = self._references[(label, "uncovered")]
         if painter and "alternatives" not in refs:
             refs["alternatives"] = _painter_alternatives(scene, shading)
+            refs["faces"] = _painter_faces(scene)
         return refs
 
     def _add_causes(self, causes, prefix):
@@ -624,7 +646,8 @@ def _pairs_references():
                                     (PAIRS_CORNER, PAIRS_CORNER)) for f in faces)
         counted.append(a & b if (a & b).any() else ~uncovered)
     return {"reference": reference[corner], "uncovered": uncovered, "counted": counted,
-            "alternatives": {k: v[corner] for k, v in _painter_alternatives(PAIRS, "f").items()}}
+            "alternatives": {k: v[corner] for k, v in _painter_alternatives(PAIRS, "f").items()},
+            "faces": {k: v[corner] for k, v in _painter_faces(PAIRS).items()}}
 
 
 def _flat_line(probe, expected, got, colour_ok, credit, row):
@@ -648,3 +671,31 @@ def _call_keys(call_id):
                 ("hidden", "hidden_scene"), ("course_render_", "course_scene"),
                 ("course_faces_", "course_faces"))
     return tuple(k for p, k in prefixes if call_id.startswith(p)) or ("probes_flat",)
+
+
+def face_ids(faces, vertices, depth):
+    """Which face each pixel of render_img(faces, vertices, ·, depth) shows (its row in
+    `faces`; -1: none): the scene rendered flat with each face on vertices of its own, coloured
+    by its row number in base 255 (a face's flat colour is the mean of three equal colours). The
+    mean depths, hence the painter's order and its ties, are the scene's own."""
+    faces = np.asarray(faces, np.int64)
+    n = len(faces)
+    code = np.arange(1, n + 1)
+    colour = np.stack([code % 255, code // 255 % 255, code // 255 ** 2], axis=1) / 254.0
+    own = np.arange(3 * n, dtype=np.int64).reshape(n, 3)
+    img = scantrace.render_img(own, np.asarray(vertices)[faces].reshape(-1, 2),
+                               np.repeat(colour, 3, axis=0),
+                               np.asarray(depth, np.float64).reshape(-1)[faces].reshape(-1), "f")
+    digits = np.rint(img * 254.0).astype(np.int64)
+    ids = digits[..., 0] + 255 * digits[..., 1] + 255 ** 2 * digits[..., 2] - 1
+    ids[ids >= n] = -1          # white, 254 in every digit: no face
+    return ids
+
+
+def _painter_faces(scene):
+    """face_ids() of the reference and of each of _painter_alternatives()' orders."""
+    f, v, d = scene["faces"], scene["vertices"], np.asarray(scene["depth"], np.float64)
+    n = len(f)
+    ties = face_ids(f[::-1].copy(), v, d)
+    return {"reference": face_ids(f, v, d), "order_reversed": face_ids(f, v, -d),
+            "order_unstable_on_ties": np.where(ties >= 0, n - 1 - ties, -1)}

@@ -369,10 +369,28 @@ def undo_global(student, reference, uncovered):
     return fixed, causes
 
 
-def diagnose_image(student, reference, uncovered, alternatives):
+def _never_drawn(student, shown):
+    """The faces the student's image shows nowhere: for each face, the share of its pixels in
+    each of `shown` [(image, face ids, -1 for none)] where the student's image has that image's
+    colour; below a tenth in every one, the face is taken as never drawn (a skipped face), in
+    whichever order it was painted. Returns a lookup by face id (its last entry, id -1: False)."""
+    n = max(int(ids.max()) for _, ids in shown) + 1
+    best = np.zeros(max(n, 0))
+    for image, ids in shown:
+        face = ids >= 0
+        same = channel_error(student, image)[face] <= 1.5 / 255
+        seen = np.bincount(ids[face], minlength=n)
+        best = np.maximum(best, np.bincount(ids[face], weights=same, minlength=n)
+                          / np.maximum(seen, 1))
+    return np.append(best < 0.1, False)
+
+
+def diagnose_image(student, reference, uncovered, alternatives, faces=None):
     """Global mistakes of a rendered image, undone together so the rest can be graded (a
     transpose, BGR channels, a background colour: undo_global); then the painter's order, from
-    `alternatives` {cause id: the reference rendered with that mistake}. Returns (image, causes)."""
+    `alternatives` {cause id: the reference rendered with that mistake}. `faces` {"reference" or
+    a cause id: which face each pixel of that image shows, -1 for none} keeps the faces the
+    student never draws out of the order's pixels. Returns (image, causes)."""
     base = image_mismatch(student, reference)
     causes = []
     if base > 0:
@@ -383,14 +401,24 @@ def diagnose_image(student, reference, uncovered, alternatives):
         deciding = channel_error(alt, reference) > 1.5 / 255
         if base == 0 or not deciding.any():
             continue
+        skipped = 0
+        if faces:
+            # A face never drawn (skipped for its horizontal edge, say) uncovers what lies under
+            # it, which is what the other order shows there: missing, not reordered.
+            ids = (faces["reference"], faces[cause_id])
+            never = _never_drawn(student, [(reference, ids[0]), (alt, ids[1])])
+            on_skipped = deciding & (never[ids[0]] | never[ids[1]])
+            skipped = int(on_skipped.sum())
+            deciding &= ~on_skipped
         close = 1.5 / 255
         as_alt = int((channel_error(student, alt)[deciding] <= close).sum())
         as_ref = int((channel_error(student, reference)[deciding] <= close).sum())
-        if as_alt >= 0.5 * deciding.sum() and as_alt > 2 * as_ref:
+        if deciding.any() and as_alt >= 0.5 * deciding.sum() and as_alt > 2 * as_ref:
             causes.append(Cause(cause_id, as_alt / (as_alt + as_ref),
                                 f"of the {int(deciding.sum())} pixels this order changes, yours "
                                 f"has {as_alt} as painted in this order and {as_ref} as in the "
-                                "correct one",
+                                "correct one" + (f" ({skipped} more lie on faces yours never "
+                                                 "draws: not counted)" if skipped else ""),
                                 picture_pixels=image_picture(student, reference, deciding),
                                 legend=IMAGE_LEGEND))
     return student, causes

@@ -104,12 +104,14 @@ def correct(tri, shape):
 def span_end_rounding(which):
     """Span ends rounded to the nearest integer ('nearest': halves up, as int(x + 0.5); 'even':
     Python's round()), at the 'left', 'right' or 'both' ends, or truncated ('floor', as int())
-    instead of ceil."""
+    instead of ceil; with a third element "included", the rounded right end is filled too (the
+    seed report's `range(round(x1), round(x2) + 1)`)."""
     def model(tri, shape):
         def ends(l, r):
             rnd = {"nearest": _floor_half_up, "even": round, "floor": math.floor}[which[1]]
             return (rnd(l) if which[0] in ("left", "both") else math.ceil(l),
-                    rnd(r) if which[0] in ("right", "both") else math.ceil(r))
+                    (rnd(r) if which[0] in ("right", "both") else math.ceil(r))
+                    + (len(which) > 2))
         return _mask(shape, _spans(tri, ends))
     return model
 
@@ -186,6 +188,8 @@ def degenerate(tri):
     return _is_degenerate(_exact(tri))
 
 
+INCLUDED_NEAREST = "nearest at both ends, the right end included"
+INCLUDED_EVEN = "rounded with round() (halves to even) at both ends, the right end included"
 # The geometric causes and their models (span_end_rounding has one model per variant).
 MODELS = {
     ("span_end_rounding", "nearest at both ends"): span_end_rounding(("both", "nearest")),
@@ -194,6 +198,8 @@ MODELS = {
     ("span_end_rounding", "rounded with round() (halves to even) at both ends"):
         span_end_rounding(("both", "even")),
     ("span_end_rounding", "truncated (floor) at both ends"): span_end_rounding(("both", "floor")),
+    ("span_end_rounding", INCLUDED_NEAREST): span_end_rounding(("both", "nearest", "included")),
+    ("span_end_rounding", INCLUDED_EVEN): span_end_rounding(("both", "even", "included")),
     ("right_end_excluded", ""): right_end_excluded,
     ("closed_rule", ""): closed_rule,
     ("span_too_wide", ""): span_too_wide,
@@ -236,6 +242,9 @@ SPAN_ENDS = {
         lambda l, r: (round(l), round(r)),
     ("span_end_rounding", "truncated (floor) at both ends"):
         lambda l, r: (math.floor(l), math.floor(r)),
+    ("span_end_rounding", INCLUDED_NEAREST): lambda l, r: (_floor_half_up(l),
+                                                           _floor_half_up(r) + 1),
+    ("span_end_rounding", INCLUDED_EVEN): lambda l, r: (round(l), round(r) + 1),
     ("right_end_excluded", ""): lambda l, r: (math.ceil(l), math.floor(r)),
     ("span_too_wide", ""): lambda l, r: (math.floor(l), math.ceil(r) + 1),
     ("closed_rule", ""): lambda l, r: (math.ceil(l), math.floor(r) + 1),

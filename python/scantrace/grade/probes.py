@@ -72,6 +72,11 @@ PROBES = (
     Probe("halves", "vertices on half pixels", ((3.5, 2.5), (19.5, 10.5), (6.5, 20.5))),
     Probe("zero_area", "a zero-area (collinear) face", ((3, 3), (9, 9), (15, 15))),
     Probe("zero_area_flat", "a zero-area horizontal face", ((3, 8), (12, 8), (18, 8))),
+    # Two equal vertices: a zero-length edge, which an edge table keeping `dx == 0` edges as
+    # vertical (slope inf) never retires, drawing the face as a wedge; the collinear probes
+    # above have three distinct vertices and never show it (the course scene has 33 such faces).
+    Probe("zero_length_edge", "a zero-area face with two equal vertices",
+          ((3, 3), (3, 3), (15, 12))),
 )
 
 # The same triangle with its vertices listed in every order: a Gouraud fill must give the same

@@ -50,16 +50,22 @@ CANVAS = [512, 512, 3]
 
 
 def compared_strings(tree):
-    """The string constants a module compares with (`shading == 'flat'`, `in ('f', 'F')`), in
-    lower case: which shading values the submission expects."""
+    """The string constants a module compares with (`shading == 'flat'`, `in ('f', 'F')`) or
+    looks up by (dict keys: `{'flat': f_shading, 'gouraud': g_shading}[shading]`), in lower
+    case: which shading values the submission expects."""
     found = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Compare):
-            for operand in [node.left, *node.comparators]:
-                items = operand.elts if isinstance(operand, (ast.Tuple, ast.List, ast.Set)) \
-                    else [operand]
-                found |= {e.value.lower() for e in items
-                          if isinstance(e, ast.Constant) and isinstance(e.value, str)}
+            operands = [node.left, *node.comparators]
+        elif isinstance(node, ast.Dict):
+            operands = [k for k in node.keys if k is not None]    # None: a `**other` entry
+        else:
+            continue
+        for operand in operands:
+            items = operand.elts if isinstance(operand, (ast.Tuple, ast.List, ast.Set)) \
+                else [operand]
+            found |= {e.value.lower() for e in items
+                      if isinstance(e, ast.Constant) and isinstance(e.value, str)}
     return found
 
 

@@ -5,6 +5,7 @@ real student's report in ../shared/seeds describes), or follows another year's A
 to full marks on the assignment's domain (the correct ones) or to its cause."""
 
 import dataclasses
+import pathlib
 import textwrap
 
 import numpy as np
@@ -210,8 +211,11 @@ def test_other_years_api_is_graded_through_an_adapter(tmp_path, sandbox_ok, sour
     assert source == OTHER_YEAR or source.count("255") == 3
     graded = grade_source(tmp_path, source)
     assert not graded.error and len(graded.tests) >= 8
-    assert [t.name for t in graded.tests if t.status != "passed"] == []
-    assert [c.id for c in graded.causes] == ["other_api"]
+    # The 0–255 scale is a mistake of its own, named with its deduction (graded after a rescale).
+    scaled = [] if source == OTHER_YEAR else ["scaled_255"]
+    assert [t.name for t in graded.tests if t.status != "passed"] == \
+        [f"Deduction: {c}" for c in scaled]
+    assert [c.id for c in graded.causes] == ["other_api"] + scaled
     evidence = graded.causes[0].evidence
     for text in ("shade_triangle(img, verts2d, vcolors, shade_t)` for `f_shading` with "
                  "shade_t = 'flat'", "for `g_shading` with shade_t = 'gouraud'",
@@ -348,13 +352,59 @@ def test_transposed_on_a_grey_background_is_undone_together(tmp_path, sandbox_ok
 
 def test_painted_pixels_in_0_255_are_rescaled_alone(tmp_path, sandbox_ok):
     """colour * 255 written on the grader's canvas of ones: the painted pixels are rescaled,
-    the untouched white stays white (dividing it too made every probe wrong everywhere)."""
+    the untouched white stays white (dividing it too made every probe wrong everywhere). The
+    rest is graded after the rescale; the scale itself is named once (scaled_255), with the
+    tests that showed it."""
     source = CORRECT.replace("img[y, x] = colour  # PUT",
                              "img[y, x] = np.asarray(colour) * 255  # PUT")
     graded = grade_source(tmp_path, source)
-    assert graded.causes == []
-    assert [t.name for t in graded.tests if t.status != "passed"] == []
+    assert [c.id for c in graded.causes] == ["scaled_255"]
+    evidence = graded.causes[0].evidence
+    assert "the f_shading probes" in evidence and "Hidden scene 1: flat" in evidence
+    assert "255" in evidence and "0–255" in graded.causes[0].sentence
+    assert [t.name for t in graded.tests if t.status != "passed"] == ["Deduction: scaled_255"]
     assert all("0–255 range" in t.output for t in _scene_tests(graded))
+    # The rubric's deduction for it, as for the other mistakes the grader undoes.
+    assert graded.score == graded.max_score - 5
+
+
+def test_render_img_returning_uint8_is_named_once(tmp_path, sandbox_ok):
+    """render_img returning `(img * 255).astype(np.uint8)` (for cv2.imwrite), its fills in
+    [0, 1]: the scenes are right once rescaled, and scaled_255 names render_img's tests only."""
+    source = INT64_STUDENT.replace(
+        "            img = g_shading(img, t[\"vertices\"], t[\"colors\"])\n    return img\n",
+        "            img = g_shading(img, t[\"vertices\"], t[\"colors\"])\n"
+        "    return (img * 255).astype(np.uint8)\n")
+    assert "astype(np.uint8)" in source
+    graded = grade_source(tmp_path, source)
+    assert [c.id for c in graded.causes] == ["scaled_255"]
+    evidence = graded.causes[0].evidence
+    assert "up to 255 in" in evidence and "render_img on the probe pairs" in evidence
+    assert "probes" not in evidence.replace("probe pairs", "")     # the fills are in [0, 1]
+    for t in graded.tests:
+        if t.name.startswith(("Hidden scene", "Probes: pairs")):
+            assert t.status == "passed", (t.name, t.output)
+
+
+def test_shading_chosen_by_a_dict_of_other_years_names(tmp_path, sandbox_ok):
+    """render_img choosing its fill with `{'flat': f_shading, 'gouraud': g_shading}[shading]`
+    (no comparison with a string anywhere): another year's shading values, graded through the
+    adapter (a KeyError on 'f' otherwise)."""
+    source = INT64_STUDENT.replace(
+        """        if shading == "f":
+            img = f_shading(img, t["vertices"], t["colors"])
+        else:
+            img = g_shading(img, t["vertices"], t["colors"])
+""", """        shader = {"flat": f_shading, "gouraud": g_shading}[shading]
+        img = shader(img, t["vertices"], t["colors"])
+""")
+    assert "shader = {" in source and 'shading == "f"' not in source
+    graded = grade_source(tmp_path, source)
+    assert [c.id for c in graded.causes] == ["other_api"]
+    assert "with shading 'flat' / 'gouraud'" in graded.causes[0].evidence
+    for t in graded.tests:
+        if t.name.startswith(("Hidden scene", "Probes: pairs")):    # render_img's tests
+            assert t.status == "passed", (t.name, t.output)
 
 
 def test_face_by_face_tests_undo_the_whole_image_mistakes(tmp_path, sandbox_ok):
@@ -420,3 +470,33 @@ def test_a_verdict_beyond_the_assignment_is_not_a_cause(tmp_path, sandbox_ok):
     outcomes = [p for t in graded.tests for p in t.probes if p.status == "timeout"]
     # (halves: 3.5 + 16 steps reaches 19.5.)
     assert [(p.name, p.integer) for p in outcomes] == [("non_integer", False)]
+
+
+def test_a_face_with_two_equal_vertices_is_a_probe(tmp_path, sandbox_ok):
+    """The seed report's edge table before its fix keeps a zero-length edge (two equal vertices)
+    as a vertical one that is never retired, drawing the face as a wedge. The collinear probes
+    have three distinct vertices and never show it; a probe with two equal vertices does, with
+    no course scene (whose 33 such faces were the only evidence)."""
+    equal = [p for p in PROBES if len(set(p.vertices)) < 3]
+    assert [p.name for p in equal] == ["zero_length_edge"]
+    assert fill_models.degenerate(equal[0].array)
+    assert not fill_models.correct(equal[0].array, equal[0].size).any()
+    corpus = pathlib.Path(__file__).resolve().parent / "corpus" / "w_seed_zero_length_edge"
+    graded = grade(corpus, tmp_path / "out", quick_options())
+    assert [c.id for c in graded.causes] == ["degenerate_drawn"]
+    assert "probe `zero_length_edge`" in graded.causes[0].evidence
+
+
+@pytest.mark.parametrize("span,variant", [
+    ("range(round(xl), round(xr) + 1)", "round() (halves to even) at both ends, the right end"),
+    ("range(int(xl + 0.5), int(xr + 0.5) + 1)", "nearest at both ends, the right end included")])
+def test_rounded_span_ends_with_the_right_end_included(tmp_path, sandbox_ok, span, variant):
+    """The seed report's literal span loop, `range(round(x1), round(x2) + 1)`: rounded ends and
+    the right one filled too. No single axis of the composed models drew it (round() with an
+    exclusive end, or the closed rule's ceil/floor), so no cause was named."""
+    source = CORRECT.replace("for x in range(math.ceil(xl), math.ceil(xr)):  # SPAN",
+                             f"for x in {span}:  # SPAN")
+    assert span in source
+    graded = grade_source(tmp_path, source)
+    assert [c.id for c in graded.causes] == ["span_end_rounding"]
+    assert variant in graded.causes[0].sentence

@@ -113,9 +113,10 @@ def test_split_zipped_submission_with_lists_scores_full(tmp_path, sandbox_ok):
     assert cli.main([str(archive), "-o", str(out), "--quiet", "--hidden-seed", "3",
                      "--call-seconds", "3"]) == 0
     results = json.loads((out / "results.json").read_text())
-    failed = [(t["name"], t["output"]) for t in results["tests"] if t["status"] != "passed"]
-    assert failed == []
-    assert results["extra_data"]["causes"] == []
+    # Graded after the rescale; the 0–255 scale is named (with its deduction), nothing else.
+    failed = [t["name"] for t in results["tests"] if t["status"] != "passed"]
+    assert failed == ["Deduction: scaled_255"]
+    assert [c["id"] for c in results["extra_data"]["causes"]] == ["scaled_255"]
 
 
 def test_the_scantrace_command_forwards_to_the_grader(tmp_path):

@@ -3,6 +3,7 @@
 // through the composer's frames with `scantrace step`'s keys; click a pixel for its `why`; open a
 // scene; drop an image rendered for it for a `diff`. The state is kept in the address.
 import { fromHash, fromHex, toHash, toHex } from './state.js';
+import { diffSummary, whyProse } from './answers.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -314,18 +315,58 @@ export async function start(st) {
   function why(x, y) {
     marked = [x, y];
     if (s.mode === 'polygon') {
-      $('why').textContent = '(why answers for a triangle or a scene: the pixel\u2019s spans are in the trace)';
+      showWhy(null, '(why answers for a triangle or a scene: the pixel\u2019s spans are in the trace)');
       return redraw();
     }
     try {
       const story = st.why(s.mode === 'triangle' ? sceneObj : scene, x, y, fillOptions());
-      $('why').textContent = JSON.stringify(story, null, 1);
+      showWhy(story);
       $('why').dataset.pixel = `${x},${y}`;
     } catch (e) {
       showError(e);
     }
     redraw();
   }
+
+  // A pixel's why: the answer in a sentence, `scantrace why`'s text, its JSON behind a toggle.
+  function showWhy(story, note = '') {
+    const prose = story ? whyProse(story) : { answer: note, text: '' };
+    $('why-answer').textContent = prose.answer;
+    $('why').textContent = prose.text;
+    $('why').hidden = !story;
+    $('why-json').textContent = story ? JSON.stringify(story, null, 1) : '';
+    $('why-json-box').hidden = !story;
+  }
+
+  // A diff's summary (verdict, the colours of the picture with their counts, the patterns), the
+  // report's JSON written into its toggle only when opened: 80,000 lines for a wrong scene.
+  let diffReport = null;
+  function showDiff(report) {
+    diffReport = report;
+    const sum = diffSummary(report);
+    $('diff-box').hidden = false;
+    $('diff-verdict').textContent = sum.verdict;
+    $('diff-legend').replaceChildren(...sum.legend.map(([c, n, rgb, pc]) => {
+      const li = document.createElement('li');
+      const sw = document.createElement('span');
+      sw.className = 'swatch';
+      sw.style.background = `rgb(${rgb.join(',')})`;
+      li.dataset.category = c;
+      li.dataset.rgb = rgb.join(',');
+      li.append(sw, `${c.replace(/_/g, ' ')}: ${n} (${pc.toFixed(1)} %)`);
+      return li;
+    }));
+    $('diff-lines').replaceChildren(...sum.lines.map((line) => {
+      const p = document.createElement('div');
+      p.textContent = line;
+      return p;
+    }));
+    $('diff-json').textContent = '';
+    if ($('diff-json-box').open) $('diff-json').textContent = JSON.stringify(report, null, 1);
+  }
+  $('diff-json-box').addEventListener('toggle', () => {
+    if ($('diff-json-box').open && diffReport && !$('diff-json').textContent) $('diff-json').textContent = JSON.stringify(diffReport, null, 1);
+  });
 
   // --- input -------------------------------------------------------------------------------
   function pointer(e) {
@@ -492,7 +533,7 @@ export async function start(st) {
         report = st.diff(scene, { width: c.width, height: c.height, rgba: img.data, name: file.name }, { ...fillOptions(), format: header.format });
       }
       diffPicture = st.lastDiffPicture;
-      $('diff').textContent = JSON.stringify(report, null, 1);
+      showDiff(report);
       showError(null);
       redraw();
     } catch (e) {

@@ -461,7 +461,41 @@ try {
     const [x, y] = pixel.split(',').map(Number);
     assert.ok(Math.abs(x - 150) <= 1 && Math.abs(y - 120) <= 1, `clicked ${pixel}`);
     const want = JSON.parse(native(['why', 'explorer_triangle.json', String(x), String(y), '--json', '--shading', 'flat']).stdout);
-    assert.deepStrictEqual(JSON.parse(await text('why')), want);
+    assert.deepStrictEqual(JSON.parse(await text('why-json')), want);
+  });
+
+  await check("at 1366x768 a click's why is seen without scrolling: the answer first, then the command's text", async () => {
+    await b.page('Emulation.setDeviceMetricsOverride', { width: 1366, height: 768, deviceScaleFactor: 1, mobile: false });
+    try {
+      await until('the grid at its new size', async () => (await b.evaluate("document.getElementById('grid').getBoundingClientRect().bottom")) < 768);
+      for (const [x, y] of [[254, 106], [100, 30], [3, 500]]) {
+        const at = (await b.evaluate(`explorer.pixelOnScreen(${x}, ${y})`)).map(Math.round);
+        await mouse('mousePressed', at);
+        await mouse('mouseReleased', at);
+        const pixel = await until('the why panel', async () => {
+          const p = await b.evaluate("document.getElementById('why').dataset.pixel");
+          return p && p !== (await b.evaluate('window.lastWhy')) && p;
+        });
+        await b.evaluate(`window.lastWhy = ${JSON.stringify(pixel)}`);
+        const [px, py] = pixel.split(',');
+        // The command's own text (its stdout; the timing line is on stderr), line for line.
+        const want = native(['why', 'explorer_triangle.json', px, py, '--shading', 'flat']).stdout;
+        assert.equal(await text('why'), want);
+        // The answer first: the text's last line (the final colour), as a sentence.
+        const last = want.trim().split('\n').pop().trim();
+        assert.equal(await text('why-answer'), `Pixel (${px}, ${py}): ${last}.`);
+        // Seen: the answer and the text's first three lines inside the window, nothing scrolled,
+        // the JSON behind its closed toggle.
+        const seen = await b.evaluate(`(() => {
+          const a = document.getElementById('why-answer').getBoundingClientRect(), w = document.getElementById('why').getBoundingClientRect();
+          const left = document.getElementById('left');
+          return [a.top >= 0, a.bottom <= innerHeight, w.top + 3 * 15 <= innerHeight, scrollY, left.scrollTop, document.getElementById('why-json-box').open];
+        })()`);
+        assert.deepStrictEqual(seen, [true, true, true, 0, 0, false], `answer inside, top, 3 lines of text seen, page and column scrolled, JSON open: ${seen}`);
+      }
+    } finally {
+      await b.page('Emulation.clearDeviceMetricsOverride');
+    }
   });
 
   await check("at high zoom each pixel's square is centred on its sample point: the pixels beside an edge on their side of it", async () => {
@@ -524,7 +558,7 @@ try {
       await mouse('mousePressed', click);
       await mouse('mouseReleased', click);
       await until('the why panel for (254, 106)', () => b.evaluate("document.getElementById('why').dataset.pixel === '254,106'"));
-      const why = JSON.parse(await text('why'));
+      const why = JSON.parse(await text('why-json'));
       const want = JSON.parse(native(['why', 'explorer_triangle.json', '254', '106', '--json', '--shading', 'flat']).stdout);
       assert.deepStrictEqual(why, want);
       assert.ok(!white(254, 106), 'pixel (254, 106) is filled');
@@ -561,8 +595,36 @@ try {
     fs.writeFileSync(path.join(work, 'student.png'), encodePng(img));
     const want = JSON.parse(native(['diff', 'explorer_triangle.json', 'student.png', '--json', '--shading', 'flat'], [0, 3]).stdout);
     await setFile(path.join(work, 'student.png'));
-    await until('the diff report', async () => (await text('diff')).startsWith('{'));
-    assert.deepStrictEqual(JSON.parse(await text('diff')), want);
+    await until('the diff report', async () => (await text('diff-verdict')).length > 0);
+    await b.evaluate("document.getElementById('diff-json-box').open = true");
+    await until('the JSON in its toggle', async () => (await text('diff-json')).startsWith('{'));
+    assert.deepStrictEqual(JSON.parse(await text('diff-json')), want);
+  });
+
+  await check("a diff is shown as its summary: the command's verdict and counts, a legend of the picture's colours, the JSON closed", async () => {
+    await b.evaluate("document.getElementById('diff-json-box').open = false");
+    // The command's Markdown summary: its verdict line and its table of categories.
+    const md = native(['diff', 'explorer_triangle.json', 'student.png', '--shading', 'flat'], [0, 3]).stdout;
+    const verdict = md.match(/\*\*(.*)\*\*/)[1];
+    assert.equal(await text('diff-verdict'), verdict);
+    const counts = Object.fromEntries([...md.matchAll(/^\| `(\w+)` \| (\d+) \|/gm)].map((m) => [m[1], Number(m[2])]));
+    assert.ok(Object.keys(counts).length >= 2, md);
+    const legend = await b.evaluate("[...document.querySelectorAll('#diff-legend li')].map((li) => [li.dataset.category, li.textContent, li.dataset.rgb, getComputedStyle(li.firstChild).backgroundColor])");
+    assert.deepStrictEqual(legend.map((l) => l[0]).sort(), Object.keys(counts).sort());
+    // Each colour of the legend is the colour the picture over the grid has at a pixel of its
+    // category (the report's first run of it), and its swatch is painted in it.
+    const report = JSON.parse(native(['diff', 'explorer_triangle.json', 'student.png', '--json', '--shading', 'flat'], [0, 3]).stdout);
+    const picture = await b.evaluate('Array.from(explorer.module().lastDiffPicture.rgba)');
+    for (const [category, label, rgb, css] of legend) {
+      assert.ok(label.includes(`${counts[category]}`), `${category}: '${label}' lacks the count ${counts[category]}`);
+      const run = report.category_map.runs.find((r) => report.category_map.legend[r[2]] === category);
+      assert.equal(picture.slice(run[0] * 4, run[0] * 4 + 3).join(','), rgb, `${category}: the picture's colour`);
+      assert.equal(css, `rgb(${rgb.split(',').join(', ')})`);
+    }
+    // The JSON is not what is seen: the toggle closed, the summary's box shorter than a window.
+    const [open, height] = await b.evaluate("[document.getElementById('diff-json-box').open, document.getElementById('diff-box').getBoundingClientRect().height]");
+    assert.equal(open, false);
+    assert.ok(height < 400, `the diff's box is ${height} px tall`);
   });
 
   // A .npy file as numpy.save writes it (format 1.0): the header dict padded to 64 bytes.
@@ -614,10 +676,10 @@ try {
       for (let c = 0; c < 3; ++c) values[k++] = img.rgba[i * 4 + c] / 255;
     fs.writeFileSync(path.join(work, 'student.npy'), npy('<f8', [img.height, img.width, 3], new Uint8Array(values.buffer)));
     const want = JSON.parse(native(['diff', 'explorer_triangle.json', 'student.npy', '--json', '--shading', 'flat'], [0, 3]).stdout);
-    await b.evaluate("document.getElementById('diff').textContent = ''");
+    await b.evaluate("document.getElementById('diff-verdict').textContent = ''; document.getElementById('diff-json-box').open = true");
     await setFile(path.join(work, 'student.npy'));
-    await until('the diff report', async () => (await text('diff')).startsWith('{'));
-    assert.deepStrictEqual(JSON.parse(await text('diff')), want);
+    await until('the diff report', async () => (await text('diff-json')).startsWith('{'));
+    assert.deepStrictEqual(JSON.parse(await text('diff-json')), want);
     assert.equal(await text('error'), '');
   });
 

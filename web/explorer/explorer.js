@@ -4,6 +4,7 @@
 // scene; drop an image rendered for it for a `diff`. The state is kept in the address.
 import { fromHash, fromHex, toHash, toHex } from './state.js';
 import { diffSummary, whyProse } from './answers.js';
+import { bindPlayer, showStepList, stepTitle } from './controls.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -130,7 +131,7 @@ export async function start(st) {
   let shownFrame = null;
   function composeStep() {
     const source = s.mode === 'scene' ? scene.name : `the explorer\u2019s ${s.mode}`;
-    const options = { count: 1, source, blocks: 'rgba', encoding: 'binary', ...frameSize() };
+    const options = { count: 1, source, blocks: 'rgba', encoding: 'binary', rows_per_step: s.rows_per_step, ...frameSize() };
     let r = st.frames(null, { ...options, first: s.step });
     plan = r.steps;
     if (s.step >= plan.length && plan.length) {
@@ -273,6 +274,9 @@ export async function start(st) {
   function drawStep() {
     const n = plan.length;
     show('step-no', n ? `step ${s.step + 1} / ${n}` : 'no steps');
+    const slider = $('slider');
+    if (slider.max !== String(Math.max(0, n - 1))) slider.max = String(Math.max(0, n - 1));
+    if (slider.value !== String(s.step)) slider.value = String(s.step);
     if (!n || !shownFrame) return;
     if (frame.width !== shownFrame.w || frame.height !== shownFrame.h) {
       frame.width = shownFrame.w;
@@ -284,7 +288,9 @@ export async function start(st) {
 
   function showTables() {
     const step = currentStep();
-    show('step-kind', step ? `${step.kind}${step.kind === 'scanlines' ? ` rows ${step.first_row}..${step.last_row}` : ''}` : '');
+    show('step-kind', step ? stepTitle(step) : '');
+    // The step list follows the plan, but not on a drag's mouse move: the release rebuilds it.
+    if (!(drag && drag.vertex !== undefined)) showStepList(plan, s.step);
     const table = shown && shown.edge_table;
     show('edge-table', table
       ? table.edges.map((e) => `edge ${e.edge}: (${e.from}) -> (${e.to})  rows ${e.first_row}..${e.last_row}  x@ymin ${e.x_at_y_min}  dx/dy ${e.dx_dy}`).join('\n')
@@ -440,24 +446,6 @@ export async function start(st) {
     drawGrid();
   }, { passive: false });
 
-  // `scantrace step`'s keys: → ← (n p space), PgDn PgUp (ten), Home End, g (go to a row).
-  window.addEventListener('keydown', (e) => {
-    if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
-    const k = e.key;
-    if (k === 'ArrowRight' || k === 'n' || k === ' ') setStep(s.step + 1);
-    else if (k === 'ArrowLeft' || k === 'p') setStep(s.step - 1);
-    else if (k === 'PageDown') setStep(s.step + 10);
-    else if (k === 'PageUp') setStep(s.step - 10);
-    else if (k === 'Home') setStep(0);
-    else if (k === 'End') setStep(plan.length - 1);
-    else if (k === 'g') {
-      const row = Number(prompt('go to the step of row:'));
-      const i = plan.findIndex((p) => p.kind === 'scanlines' && p.first_row <= row && row <= p.last_row);
-      if (i >= 0) setStep(i);
-    } else return;
-    e.preventDefault();
-  });
-
   function bindOption(id, key, parse = (v) => v) {
     const el = $(id);
     el.value = String(s[key]);
@@ -471,6 +459,21 @@ export async function start(st) {
   bindOption('method', 'method');
   bindOption('bits', 'subpixel_bits', Number);
   bindOption('winding', 'winding');
+  $('rows').value = String(s.rows_per_step);
+  bindPlayer({
+    plan: () => plan,
+    step: () => s.step,
+    setStep,
+    setRows: (n) => {
+      s.rows_per_step = n;
+      recompute();
+    },
+    link: () => {
+      history.replaceState(null, '', toHash(s));
+      return location.href;
+    },
+    present: () => {},
+  });
   [0, 1, 2].forEach((i) => {
     const el = $(`color${i}`);
     el.value = toHex(s.colors[i]);

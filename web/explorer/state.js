@@ -1,5 +1,7 @@
 // The explorer's state and its address (#triangle=20,20;250,80;300,400&shading=gouraud&step=12):
-// a teacher links a step by copying the address bar.
+// a teacher links a step by copying the address bar. `step` is the index of the step in the
+// plan (0 for the first); the address holds the number the page shows, `step 12` for step=12,
+// as the trace page's #step=12 does.
 export const defaults = {
   mode: 'triangle',
   triangle: [[20, 20], [250, 80], [300, 400]],
@@ -12,6 +14,8 @@ export const defaults = {
   fill_rule: 'top-left',
   subpixel_bits: 8,
   method: 'exact',
+  // Scanlines a step: 0 lets the composer choose (at most 40 scanline steps a triangle).
+  rows_per_step: 0,
   step: 0,
 };
 
@@ -28,7 +32,9 @@ export function toHash(s) {
   } else p.set('scene', s.sceneName || 'demo');
   p.set('colors', s.colors.map((c) => hex(c).slice(1)).join(';'));
   p.set('size', s.size.join('x'));
-  for (const k of ['shading', 'fill_rule', 'subpixel_bits', 'method', 'step']) p.set(k, String(s[k]));
+  for (const k of ['shading', 'fill_rule', 'subpixel_bits', 'method']) p.set(k, String(s[k]));
+  if (s.rows_per_step) p.set('rows', String(s.rows_per_step));
+  p.set('step', String(s.step + 1));
   return '#' + p.toString().replace(/%2C/g, ',').replace(/%3B/g, ';');
 }
 
@@ -63,7 +69,9 @@ export function fromHash(hash) {
   if (['exact', 'float', 'double', 'halfspace'].includes(p.get('method'))) s.method = p.get('method');
   const bits = num(p.get('subpixel_bits') || '');
   if (Number.isInteger(bits) && bits >= 0 && bits <= 12) s.subpixel_bits = bits;
+  const rows = num(p.get('rows') || '');
+  if ([1, 10].includes(rows)) s.rows_per_step = rows;
   const step = num(p.get('step') || '');
-  if (Number.isInteger(step) && step >= 0) s.step = step;
+  if (Number.isInteger(step) && step >= 1) s.step = step - 1;
   return s;
 }

@@ -66,7 +66,9 @@ try {
 
   await check('the address restores the state', async () => {
     assert.equal(await b.evaluate("document.getElementById('shading').value"), 'flat');
-    assert.equal(await stepShown(), 12);
+    // #step=12 is the step shown as 'step 12', as on the trace page (web/player/player.js).
+    assert.match(await text('step-no'), /^step 12 \//);
+    assert.equal(await stepShown(), 11);
     assert.deepStrictEqual((await b.evaluate('explorer.state()')).triangle, [[20, 20], [250, 80], [300, 400]]);
   });
 
@@ -135,6 +137,97 @@ try {
     await key('PageUp', 'PageUp');
     assert.equal(await stepShown(), n - 11);
     await until('the frame of the step drawn', async () => (await b.evaluate("document.getElementById('frame').dataset.step")) === String(n - 11));
+  });
+
+  const click = async (selector) => {
+    const at = await b.evaluate(`(() => { const el = document.querySelector(${JSON.stringify(selector)}); el.scrollIntoView({ block: 'nearest' }); const r = el.getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2]; })()`);
+    await mouse('mousePressed', at);
+    await mouse('mouseReleased', at);
+  };
+  const typeKey = async (k) => {
+    await b.page('Input.dispatchKeyEvent', { type: 'keyDown', key: k, text: k.length === 1 ? k : k === 'Enter' ? '\r' : undefined, windowsVirtualKeyCode: k === 'Enter' ? 13 : k === 'Escape' ? 27 : k.length === 1 ? k.toUpperCase().charCodeAt(0) : 0 });
+    await b.page('Input.dispatchKeyEvent', { type: 'keyUp', key: k });
+  };
+
+  await check('the keys step after a dropdown is used, and the arrow keys never change a dropdown', async () => {
+    await key('Home', 'Home');
+    // The shading dropdown chosen by the mouse's click and the keyboard (focus, then a change).
+    await click('#shading');
+    await b.evaluate("(() => { const el = document.getElementById('shading'); el.focus(); el.value = 'gouraud'; el.dispatchEvent(new Event('change')); })()");
+    await key('ArrowRight', 'ArrowRight');
+    assert.equal(await stepShown(), 1, 'ArrowRight after the dropdown did not step');
+    // A dropdown that has the focus: ↓ ↑ leave its value, → ← step.
+    await b.evaluate("document.getElementById('shading').focus()");
+    for (const [k, vk] of [['ArrowDown', 40], ['ArrowUp', 38], ['ArrowDown', 40]]) {
+      await b.page('Input.dispatchKeyEvent', { type: 'rawKeyDown', key: k, code: k, windowsVirtualKeyCode: vk });
+      await b.page('Input.dispatchKeyEvent', { type: 'keyUp', key: k, code: k });
+    }
+    assert.equal(await b.evaluate("document.getElementById('shading').value"), 'gouraud');
+    await b.evaluate("document.getElementById('shading').focus()");
+    await key('ArrowRight', 'ArrowRight');
+    assert.equal(await stepShown(), 2);
+    assert.equal(await b.evaluate("document.getElementById('shading').value"), 'gouraud');
+    // Back to flat, as the next checks expect.
+    await b.evaluate("(() => { const el = document.getElementById('shading'); el.value = 'flat'; el.dispatchEvent(new Event('change')); })()");
+  });
+
+  await check('the player: step list, play at a speed, one-row and ten-row steps, g, ? and a link to the step', async () => {
+    const n = Number((await text('step-no')).match(/\/ (\d+)/)[1]);
+    // The list: one item a step, titled as the step line says, the current one marked.
+    const items = await b.evaluate("[...document.querySelectorAll('#step-list li')].map((li) => [li.textContent, li.hasAttribute('aria-current')])");
+    assert.equal(items.length, n);
+    assert.deepStrictEqual(items.map((it, i) => [i, it[1]]).filter((it) => it[1]).map((it) => it[0]), [await stepShown()]);
+    await click('#step-list li:nth-child(7)');
+    assert.equal(await stepShown(), 6);
+    assert.equal(await text('step-kind'), items[6][0]);
+    assert.equal(await b.evaluate("document.querySelector('#step-list li[aria-current]').textContent"), items[6][0]);
+    // Play at 8 steps a second: on by a few steps in a second, then paused, still.
+    await b.evaluate("(() => { const el = document.getElementById('speed'); el.value = '8'; el.dispatchEvent(new Event('change')); })()");
+    await click('#play');
+    await new Promise((r) => setTimeout(r, 1000));
+    await click('#play');
+    const played = await stepShown();
+    assert.ok(played >= 6 + 3, `at 8 steps a second, a second went from step 7 to step ${played + 1}`);
+    await new Promise((r) => setTimeout(r, 400));
+    assert.equal(await stepShown(), played, 'paused, yet stepping');
+    assert.equal(await text('play'), 'play');
+    // Rows a step: one, then ten (the composer's steps; rows where an edge enters or leaves keep a
+    // step of their own), then the composer's choice again.
+    const rowsOf = () => b.evaluate("(() => { const s = explorer.state(); return explorer.module().frames(null, { count: 0, rows_per_step: s.rows_per_step }).steps.filter((p) => p.kind === 'scanlines').map((p) => p.last_row - p.first_row + 1); })()");
+    const auto = await rowsOf();
+    for (const [rows, max] of [['1', 1], ['10', 10]]) {
+      await b.evaluate(`(() => { const el = document.getElementById('rows'); el.value = '${rows}'; el.dispatchEvent(new Event('change')); })()`);
+      const got = await rowsOf();
+      assert.equal(Math.max(...got), max, `rows a step ${rows}: ${got}`);
+      const listed = await b.evaluate("document.querySelectorAll('#step-list li').length");
+      assert.equal(listed, Number((await text('step-no')).match(/\/ (\d+)/)[1]));
+      assert.ok((await b.evaluate('location.hash')).includes(`rows=${rows}`));
+    }
+    assert.ok(Math.max(...auto) > 1 && Math.max(...auto) < 10, `the composer's own choice: ${Math.max(...auto)} rows`);
+    await b.evaluate("(() => { const el = document.getElementById('rows'); el.value = '0'; el.dispatchEvent(new Event('change')); })()");
+    // g, a row, Enter: the step of that row.
+    await typeKey('g');
+    assert.equal(await b.evaluate("document.activeElement.id"), 'goto-row');
+    for (const c of '200') await typeKey(c);
+    await typeKey('Enter');
+    const step = await b.evaluate('(() => { const s = explorer.state(); return explorer.module().frames(null, { count: 0 }).steps[s.step]; })()');
+    assert.ok(step.kind === 'scanlines' && step.first_row <= 200 && 200 <= step.last_row, JSON.stringify(step));
+    assert.equal(await b.evaluate('document.activeElement === document.body'), true);
+    // ? shows the keys, Esc hides them.
+    await typeKey('?');
+    assert.equal(await b.evaluate("document.getElementById('help').hidden"), false);
+    assert.ok((await text('help')).includes('previous step'));
+    await typeKey('Escape');
+    assert.equal(await b.evaluate("document.getElementById('help').hidden"), true);
+    // The link: the address of the step shown, its number as the page shows it.
+    await click('#copy-link');
+    await until('the link said', async () => (await text('link-status')).includes('file://'));
+    const href = await b.evaluate('location.href');
+    assert.ok((await text('link-status')).endsWith(href), await text('link-status'));
+    assert.ok(href.includes(`step=${(await stepShown()) + 1}`), href);
+    // The step the next checks expect (as the keys' check left it).
+    await key('End', 'End');
+    await key('PageUp', 'PageUp');
   });
 
   await check("the step's frame drawn from RGBA blocks is the frame drawn from PNG blocks", async () => {

@@ -1,0 +1,134 @@
+// The explorer's player (docs/web.md): the keys of `scantrace step`, play and its speed, the rows
+// a scanline step holds, the step list, `g` for a row, `?` for the keys, a link to the step. The
+// keys step wherever the focus is: a dropdown used is left (blurred), and the arrow keys on one
+// never change its value. Names are unique across the explorer's modules (one scope in the page).
+
+const byId = (id) => document.getElementById(id);
+
+// A step's title in the list and the live region: what the frame explains.
+export function stepTitle(step) {
+  const face = step.triangle >= 0 ? ` of triangle ${step.triangle}` : '';
+  if (step.kind === 'scanlines')
+    return step.first_row === step.last_row ? `row ${step.last_row}${face}` : `rows ${step.first_row}..${step.last_row}${face}`;
+  return `${step.kind.replace(/_/g, ' ')}${face}`;
+}
+
+// The list of steps: rebuilt when the plan's titles change (not during a drag: the caller skips
+// it there), the current one marked and scrolled into the list's view.
+let listedTitles = '';
+export function showStepList(plan, k) {
+  const list = byId('step-list');
+  const titles = plan.map(stepTitle);
+  if (titles.join('\n') !== listedTitles) {
+    listedTitles = titles.join('\n');
+    list.replaceChildren(...titles.map((t) => {
+      const li = document.createElement('li');
+      li.textContent = t;
+      return li;
+    }));
+  }
+  const was = list.querySelector('li[aria-current]');
+  const now = list.children[k];
+  if (was === now) return;
+  if (was) was.removeAttribute('aria-current');
+  if (!now) return;
+  now.setAttribute('aria-current', 'step');
+  // The list's own scroll only: scrollIntoView would scroll the page's column too.
+  if (now.offsetTop < list.scrollTop || now.offsetTop + now.offsetHeight > list.scrollTop + list.clientHeight)
+    list.scrollTop = now.offsetTop - list.clientHeight / 2;
+}
+
+// p: { plan(), step(), setStep(k), setRows(n), link() (the address of the state), present(on) }
+export function bindPlayer(p) {
+  let timer = null;
+  function play(on) {
+    clearInterval(timer);
+    timer = null;
+    if (on && p.step() + 1 >= p.plan().length) p.setStep(0);
+    if (on) timer = setInterval(() => (p.step() + 1 < p.plan().length ? p.setStep(p.step() + 1) : play(false)), 1000 / Number(byId('speed').value));
+    byId('play').textContent = timer ? 'pause' : 'play';
+    byId('play').setAttribute('aria-label', timer ? 'pause' : 'play');
+  }
+  byId('play').addEventListener('click', () => play(!timer));
+  byId('speed').addEventListener('change', () => timer && play(true));
+  byId('prev').addEventListener('click', () => p.setStep(p.step() - 1));
+  byId('next').addEventListener('click', () => p.setStep(p.step() + 1));
+  byId('slider').addEventListener('input', () => p.setStep(Number(byId('slider').value)));
+  byId('rows').addEventListener('change', () => p.setRows(Number(byId('rows').value)));
+  byId('step-list').addEventListener('click', (e) => {
+    const i = [...byId('step-list').children].indexOf(e.target.closest('li'));
+    if (i >= 0) p.setStep(i);
+  });
+  byId('toggle-list').addEventListener('click', () => {
+    byId('step-list').hidden = !byId('step-list').hidden;
+    byId('toggle-list').setAttribute('aria-expanded', String(!byId('step-list').hidden));
+  });
+  byId('help-button').addEventListener('click', () => (byId('help').hidden = !byId('help').hidden));
+  byId('copy-link').addEventListener('click', () => copyLink(p.link()));
+  bindGoto(p);
+  // A dropdown used is left: the keys step again (a focused <select> takes the arrow keys).
+  for (const el of document.querySelectorAll('select')) el.addEventListener('change', () => el.blur());
+  window.addEventListener('keydown', (e) => {
+    if (playerKey(e, p, play, () => timer)) e.preventDefault();
+  });
+  return { play };
+}
+
+// The link of the step shown: copied when the browser lets the page, shown to copy otherwise.
+function copyLink(href) {
+  const status = byId('link-status');
+  const said = (t) => { status.textContent = t; };
+  if (navigator.clipboard && navigator.clipboard.writeText)
+    navigator.clipboard.writeText(href).then(() => said(`link copied: ${href}`), () => said(`copy this link: ${href}`));
+  else said(`copy this link: ${href}`);
+}
+
+// `g`: a row asked in a small form under the player (not prompt(): it stops the page).
+function bindGoto(p) {
+  const form = byId('goto'), input = byId('goto-row');
+  const close = () => {
+    form.hidden = true;
+    input.blur();
+  };
+  form.addEventListener('submit', (e) => {
+    e.preventDefault();
+    const row = Number(input.value);
+    const i = p.plan().findIndex((st) => st.kind === 'scanlines' && st.first_row <= row && row <= st.last_row);
+    close();
+    if (i >= 0) p.setStep(i);
+    else byId('link-status').textContent = `no step of row ${input.value}`;
+  });
+  input.addEventListener('keydown', (e) => {
+    if (e.key === 'Escape') close();
+  });
+}
+
+// One key: true when it was the player's. Text fields keep their keys; a dropdown or the slider
+// hands its arrow keys over (their default would change the value: ↓ switched Gouraud to flat).
+function playerKey(e, p, play, playing) {
+  const t = e.target, k = e.key;
+  if (t instanceof HTMLInputElement && ['text', 'number', 'search'].includes(t.type)) return false;
+  if (e.ctrlKey || e.metaKey || e.altKey) return false;
+  const arrow = k.startsWith('Arrow');
+  if (t instanceof HTMLSelectElement) {
+    if (!arrow) return false;
+    t.blur();
+    if (k === 'ArrowUp' || k === 'ArrowDown') return true;
+  }
+  if ((t instanceof HTMLButtonElement || t.tagName === 'SUMMARY') && (k === ' ' || k === 'Enter')) return false;
+  const n = p.plan().length, at = p.step();
+  const to = { ArrowRight: at + 1, n: at + 1, ' ': at + 1, ArrowLeft: at - 1, p: at - 1, PageDown: at + 10, PageUp: at - 10, Home: 0, End: n - 1 }[k];
+  if (to !== undefined) p.setStep(to);
+  else if (k === 'a') play(!playing());
+  else if (k === 'g') {
+    byId('goto').hidden = false;
+    byId('goto-row').focus();
+    byId('goto-row').select();
+  } else if (k === '?') byId('help').hidden = !byId('help').hidden;
+  else if (k === 'f') p.present(true);
+  else if (k === 'Escape') {
+    byId('help').hidden = true;
+    p.present(false);
+  } else return false;
+  return true;
+}

@@ -22,6 +22,7 @@ export async function start(st) {
   // sits on a pixel centre.
   let view = { zoom: 1, x: 0, y: 0 };
   let drag = null, marked = null;
+  let awaited = null; // a link's scene not yet opened: {name, step}
   const dragTimes = [], dragStages = [];
   let lastStages = null;
 
@@ -153,7 +154,8 @@ export async function start(st) {
     showTables();
     // The address follows the state, but not on every mouse move of a drag (a replaceState cost
     // 5 ms of the move's time): the release writes it.
-    if (!(drag && drag.vertex !== undefined)) history.replaceState(null, '', toHash(s));
+    // Nor while a link's scene is awaited: the address stays the link's.
+    if (!(drag && drag.vertex !== undefined) && !awaited) history.replaceState(null, '', toHash(s));
   }
 
   function fitView() {
@@ -483,25 +485,31 @@ export async function start(st) {
     });
   });
   $('triangle-mode').addEventListener('click', () => {
+    awaitScene(null);
     s.mode = 'triangle';
     diffPicture = null;
     fitView();
     recompute();
   });
   $('polygon-mode').addEventListener('click', () => {
+    awaitScene(null);
     s.mode = 'polygon';
     diffPicture = null;
     fitView();
     recompute();
   });
-  $('demo-scene').addEventListener('click', () => openScene({ name: 'demo_scene.json', data: st.demoScene() }));
+  $('demo-scene').addEventListener('click', () => {
+    awaitScene(null);
+    openScene({ name: 'demo_scene.json', data: st.demoScene() });
+  });
   $('open').addEventListener('change', () => $('open').files[0] && openFile($('open').files[0]));
 
-  function openScene(sc) {
+  // step: the step to show (a link's, once its scene is opened), else the first.
+  function openScene(sc, step = 0) {
     scene = sc;
     s.mode = 'scene';
     s.sceneName = sc.name;
-    s.step = 0;
+    s.step = step;
     diffPicture = null;
     recompute();
     fitView();
@@ -510,7 +518,12 @@ export async function start(st) {
 
   async function openFile(file) {
     const bytes = new Uint8Array(await file.arrayBuffer());
-    if (/\.(json|obj)$/i.test(file.name)) openScene({ name: file.name, data: bytes });
+    if (/\.(json|obj)$/i.test(file.name)) {
+      // The scene a link named, opened by hand: at the link's step.
+      const step = awaited ? awaited.step : 0;
+      awaitScene(null);
+      openScene({ name: file.name, data: bytes }, step);
+    }
     else if (/\.(png|npy)$/i.test(file.name)) await diffImage(file, bytes);
     else showError(`${file.name}: drop a scene (.json, .obj) or an image rendered for it (.png, .npy)`);
   }
@@ -563,14 +576,38 @@ export async function start(st) {
   window.addEventListener('hashchange', () => {
     if (location.hash === toHash(s)) return;
     s = fromHash(location.hash);
-    recompute();
+    openAddress();
   });
 
-  if (s.mode === 'scene') openScene({ name: 'demo_scene.json', data: st.demoScene() });
-  else {
+  // A link's scene: the demo is built in; a file the page cannot read by itself (opened from
+  // file://, a page may not read other files), so the link says which file to drop, and the
+  // page shows the triangle meanwhile, leaving the address as it came (the step kept).
+  function openAddress() {
+    if (s.mode !== 'scene') {
+      awaitScene(null);
+      fitView();
+      return recompute();
+    }
+    if (['demo', 'demo_scene.json'].includes(s.sceneName)) {
+      awaitScene(null);
+      return openScene({ name: 'demo_scene.json', data: st.demoScene() }, s.step);
+    }
+    awaitScene({ name: s.sceneName, step: s.step, hash: location.hash });
+    s.mode = 'triangle';
+    s.step = 0;
     fitView();
     recompute();
   }
+  function awaitScene(a) {
+    awaited = a;
+    const el = $('notice');
+    el.hidden = !a;
+    el.textContent = a
+      ? `This link shows the scene \u201c${a.name}\u201d at step ${a.step + 1}, but a page cannot open a file by itself. ` +
+        `Drop ${a.name} on the page (or choose it with \u201copen\u201d) to see it at that step. Meanwhile: the explorer\u2019s triangle.`
+      : '';
+  }
+  openAddress();
   // For the console and the page's test (web/tests/chromium_explorer.mjs): where things are.
   window.explorer = {
     state: () => structuredClone(s),

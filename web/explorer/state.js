@@ -55,7 +55,10 @@ export function fromHash(hash) {
     }
   }
   if (['even-odd', 'non-zero'].includes(p.get('winding'))) s.winding = p.get('winding');
-  if (p.has('scene')) s.mode = 'scene';
+  if (p.has('scene')) {
+    s.mode = 'scene';
+    s.sceneName = p.get('scene');
+  }
   if (p.has('colors')) {
     const c = p.get('colors').split(';');
     if (c.length === 3 && c.every((h) => /^[0-9a-f]{6}$/i.test(h))) s.colors = c.map((h) => fromHex('#' + h));

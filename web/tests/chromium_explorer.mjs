@@ -776,6 +776,32 @@ try {
     assert.equal(await text('error'), '');
   });
 
+  await check("a scene link: the demo at the link's step; a file named by the link warned of, opened at the link's step once dropped", async () => {
+    const open = async (hash) => {
+      await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}${hash}` });
+      await b.page('Page.reload', {});
+      await until('the page', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"));
+    };
+    await open('#scene=demo&shading=flat&step=4');
+    assert.equal((await b.evaluate('explorer.state()')).mode, 'scene');
+    assert.match(await text('step-no'), /^step 4 \//);
+    assert.equal(await b.evaluate("document.getElementById('notice').hidden"), true);
+    // A file's name: the page cannot read it; the warning says which file and how to open it.
+    fs.copyFileSync(path.join(work, 'explorer_triangle.json'), path.join(work, 'lecture_scene.json'));
+    await open('#scene=lecture_scene.json&shading=flat&step=5');
+    const notice = await b.evaluate("(() => { const el = document.getElementById('notice'); const r = el.getBoundingClientRect(); return [el.hidden, el.textContent, r.top >= 0 && r.bottom <= innerHeight && r.height > 10]; })()");
+    assert.equal(notice[0], false, 'no warning');
+    assert.ok(notice[2], 'the warning is not in the window');
+    for (const words of ['lecture_scene.json', 'step 5', 'Drop']) assert.ok(notice[1].includes(words), notice[1]);
+    assert.ok((await b.evaluate('location.hash')).includes('scene=lecture_scene.json'), 'the address lost the link');
+    await setFile(path.join(work, 'lecture_scene.json'));
+    await until('the scene open', async () => (await b.evaluate('explorer.state().mode')) === 'scene');
+    assert.match(await text('step-no'), /^step 5 \//);
+    assert.equal(await b.evaluate("document.getElementById('notice').hidden"), true);
+    const hash = await b.evaluate('location.hash');
+    assert.ok(hash.includes('scene=lecture_scene.json') && hash.includes('step=5'), hash);
+  });
+
   await check('no console error, no exception, no network request', async () => {
     assert.deepStrictEqual(problems, []);
   });

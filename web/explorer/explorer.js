@@ -121,8 +121,10 @@ export async function start(st) {
   // The box's width is kept from the last layout (a ResizeObserver, below): reading clientWidth
   // in a mouse move made the browser lay the page out there and then (the tables had changed).
   let frameBoxWidth = frame.clientWidth, gridBoxWidth = grid.clientWidth;
+  // In presentation the frame fills the screen: composed up to 1920 wide, its text as large.
   function frameSize() {
-    const w = Math.round(Math.max(320, Math.min(1280, frameBoxWidth * (window.devicePixelRatio || 1))));
+    const most = document.body.classList.contains('presenting') ? 1920 : 1280;
+    const w = Math.round(Math.max(320, Math.min(most, frameBoxWidth * (window.devicePixelRatio || 1))));
     return { width: w, height: Math.max(180, Math.round((w * 9) / 16)) };
   }
 
@@ -474,7 +476,21 @@ export async function start(st) {
       history.replaceState(null, '', toHash(s));
       return location.href;
     },
-    present: () => {},
+    present,
+  });
+  $('present').addEventListener('click', () => present(!document.body.classList.contains('presenting')));
+  // Presentation: the frame alone (the page's CSS), full screen where the browser lets the page;
+  // leaving full screen (Esc, which the browser takes) leaves it too. The frame's box resized,
+  // the ResizeObserver below composes it again at its new size.
+  function present(on) {
+    if (on === document.body.classList.contains('presenting')) return;
+    document.body.classList.toggle('presenting', on);
+    $('present').setAttribute('aria-pressed', String(on));
+    if (on && document.fullscreenEnabled && !document.fullscreenElement) document.documentElement.requestFullscreen().catch(() => {});
+    if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
+  }
+  document.addEventListener('fullscreenchange', () => {
+    if (!document.fullscreenElement) present(false);
   });
   [0, 1, 2].forEach((i) => {
     const el = $(`color${i}`);

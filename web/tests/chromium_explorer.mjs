@@ -230,6 +230,50 @@ try {
     await key('PageUp', 'PageUp');
   });
 
+  await check('presentation (f) at 1366x768: the frame alone, as large as the screen, composed at that size; the keys step; Esc leaves', async () => {
+    // The height of the smallest text of the frame shown, in its pixels: of each text op the
+    // tallest glyph (its strokes' extent), the least of those.
+    const smallestText = () => b.evaluate(`(() => {
+      const f = explorer.module().frames(null, { first: explorer.state().step, count: 1, ...explorer.frameSize() }).frames[0];
+      const heights = f.ops.filter((op) => op[0] === 'G').map((op) => {
+        let most = 0;
+        for (let k = 0; k < op[6].length; k += 3) {
+          const ys = f.glyphs[op[6][k]].flatMap((s) => s.filter((v, i) => i % 2 === 1));
+          if (ys.length) most = Math.max(most, Math.max(...ys) - Math.min(...ys));
+        }
+        return most;
+      });
+      return Math.min(...heights);
+    })()`);
+    await b.page('Emulation.setDeviceMetricsOverride', { width: 1366, height: 768, deviceScaleFactor: 1, mobile: false });
+    try {
+      const before = await smallestText();
+      const at = await stepShown();
+      await typeKey('f');
+      await until('the frame composed at the screen\'s size', async () => (await b.evaluate('explorer.frameSize().width')) >= 1360);
+      const seen = await b.evaluate(`(() => {
+        const r = document.getElementById('frame').getBoundingClientRect();
+        const shown = (id) => document.getElementById(id).getBoundingClientRect().height > 0;
+        return [r.left, r.top, r.right, r.bottom, shown('grid'), shown('player'), shown('edge-table'), document.querySelector('header').getBoundingClientRect().height];
+      })()`);
+      assert.ok(seen[0] >= -0.5 && seen[1] >= -0.5 && seen[2] <= 1366.5 && seen[3] <= 768.5 && seen[2] - seen[0] >= 1360, `the frame is at ${seen.slice(0, 4)}`);
+      assert.deepStrictEqual(seen.slice(4), [false, false, false, 0], 'the grid, the player, the tables, the header: seen');
+      assert.equal(await staleValues(), 0, 'the frame shown is not the step drawn whole at its size');
+      const text = await smallestText();
+      assert.ok(text >= 9 && text >= 1.9 * before, `the smallest text is ${text.toFixed(1)} px tall (${before.toFixed(1)} in the page)`);
+      await key('ArrowRight', 'ArrowRight');
+      assert.equal(await stepShown(), at + 1);
+      await until('the frame of the step drawn', async () => (await b.evaluate("document.getElementById('frame').dataset.step")) === String(at + 1));
+      await typeKey('Escape');
+      await until('the page again', async () => (await b.evaluate("document.querySelector('header').getBoundingClientRect().height")) > 0);
+      await until('the frame composed at its column\'s size', async () => (await b.evaluate('explorer.frameSize().width')) < 1000);
+      await key('ArrowLeft', 'ArrowLeft');
+    } finally {
+      await b.evaluate("document.body.classList.contains('presenting') && document.getElementById('present').click()");
+      await b.page('Emulation.clearDeviceMetricsOverride');
+    }
+  });
+
   await check("the step's frame drawn from RGBA blocks is the frame drawn from PNG blocks", async () => {
     // The page draws the frame's pixel blocks from bytes (putImageData, the clip applied by hand);
     // drawScantraceFrame with the PNG data URIs (drawImage under the canvas's clip) must give the
@@ -778,8 +822,10 @@ try {
 
   await check("a scene link: the demo at the link's step; a file named by the link warned of, opened at the link's step once dropped", async () => {
     const open = async (hash) => {
+      // By way of a blank page: the same file with another hash would only change the hash.
+      await b.page('Page.navigate', { url: 'about:blank' });
+      await until('the blank page', () => b.evaluate("location.href === 'about:blank'"));
       await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}${hash}` });
-      await b.page('Page.reload', {});
       await until('the page', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"));
     };
     await open('#scene=demo&shading=flat&step=4');

@@ -262,7 +262,7 @@ export async function start(st) {
         gctx.fillStyle = s.mode === 'triangle' ? toHex(s.colors[i]) : ['#ff0000', '#00ff00', '#0000ff'][i % 3];
         gctx.strokeStyle = '#000';
         gctx.beginPath();
-        gctx.arc(px, py, 7, 0, 2 * Math.PI);
+        gctx.arc(px, py, handleRadius(), 0, 2 * Math.PI);
         gctx.fill();
         gctx.stroke();
       });
@@ -388,10 +388,29 @@ export async function start(st) {
     return Math.round(v * g) / g;
   };
 
-  grid.addEventListener('mousedown', (e) => {
+  // Grid canvas pixels a CSS pixel (the grid's 720 pixels over its box: 2 on a phone).
+  const canvasPerCss = () => grid.width / (gridBoxWidth || grid.width);
+  // The handles: drawn at least 7 canvas (and 6 CSS) pixels wide in radius; taken within 12
+  // CSS pixels of the vertex (a 24-pixel target), 18 for a finger.
+  const handleRadius = () => Math.max(7, 6 * canvasPerCss());
+  function vertexAt(px, py, touch) {
+    const reach = Math.max(9, (touch ? 18 : 12) * canvasPerCss());
+    let best = -1, bestDistance = reach;
+    vertices().forEach((v, i) => {
+      const d = Math.hypot(toScreen(v)[0] - px, toScreen(v)[1] - py);
+      if (d <= bestDistance) [best, bestDistance] = [i, d];
+    });
+    return best;
+  }
+
+  // Pointer events: a mouse, a pen or a finger (the grid's touch-action: none keeps a finger's
+  // drag from scrolling the page); the grid captures the pointer for the drag's length.
+  grid.addEventListener('pointerdown', (e) => {
+    if (e.button !== 0) return;
+    grid.setPointerCapture(e.pointerId);
     const [px, py] = pointer(e);
     if (s.mode !== 'scene') {
-      const i = vertices().findIndex((v) => Math.hypot(toScreen(v)[0] - px, toScreen(v)[1] - py) <= 9);
+      const i = vertexAt(px, py, e.pointerType === 'touch');
       if (s.mode === 'polygon' && e.altKey && i >= 0 && s.polygon.length > 3) {
         s.polygon.splice(i, 1);  // alt-click: the vertex removed
         return recompute();
@@ -408,7 +427,7 @@ export async function start(st) {
     }
     drag = { pan: [px, py, view.x, view.y], moved: false };
   });
-  window.addEventListener('mousemove', (e) => {
+  grid.addEventListener('pointermove', (e) => {
     if (!drag) return;
     const [px, py] = pointer(e);
     if (drag.vertex !== undefined) {
@@ -429,7 +448,11 @@ export async function start(st) {
       drawGrid();
     }
   });
-  window.addEventListener('mouseup', (e) => {
+  grid.addEventListener('pointercancel', () => {
+    if (drag && drag.vertex !== undefined) recompute();
+    drag = null;
+  });
+  grid.addEventListener('pointerup', (e) => {
     if (drag && drag.vertex !== undefined) {
       drag = null;
       recompute(); // the trace's JSON Lines too, and the address

@@ -848,6 +848,42 @@ try {
     assert.ok(hash.includes('scene=lecture_scene.json') && hash.includes('step=5'), hash);
   });
 
+  await check('a phone (390x844): one column, no horizontal scroll, a finger drags a vertex from 11 CSS px away', async () => {
+    await b.page('Emulation.setDeviceMetricsOverride', { width: 390, height: 844, deviceScaleFactor: 1, mobile: true });
+    await b.page('Emulation.setTouchEmulationEnabled', { enabled: true, maxTouchPoints: 5 });
+    try {
+      await b.page('Page.navigate', { url: 'about:blank' });
+      await until('the blank page', () => b.evaluate("location.href === 'about:blank'"));
+      await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}#triangle=20,20;250,80;300,400&shading=flat&step=3` });
+      await until('the page', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"));
+      const layout = await b.evaluate(`(() => {
+        const box = (el) => el.getBoundingClientRect();
+        const wide = [...document.querySelectorAll('header *, #player *, #grid, #frame')].filter((el) => box(el).width > 0 && box(el).right > innerWidth + 0.5).map((el) => el.id || el.tagName);
+        return { scroll: document.documentElement.scrollWidth, wide, grid: box(document.getElementById('grid')).toJSON(), frame: box(document.getElementById('frame')).toJSON() };
+      })()`);
+      assert.ok(layout.scroll <= 390, `the page is ${layout.scroll} px wide`);
+      assert.deepStrictEqual(layout.wide, [], 'cut off on the right');
+      assert.ok(layout.grid.width >= 370 && layout.frame.top >= layout.grid.bottom, `grid ${JSON.stringify(layout.grid)}, frame ${JSON.stringify(layout.frame)}`);
+      // A finger put down 11 CSS px right of vertex 2 (inside a 24-px target) and moved.
+      const v = await b.evaluate('explorer.vertexOnScreen(2)');
+      const scrolled = await b.evaluate('scrollY');
+      const from = [v[0] + 11, v[1]];
+      const touch = (type, [x, y]) => b.page('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchEnd' ? [] : [{ x, y, id: 1 }] });
+      await touch('touchStart', from);
+      for (let i = 1; i <= 4; ++i) await touch('touchMove', [from[0] - 10 * i, from[1] - 15 * i]);
+      await touch('touchEnd', from);
+      const tri = (await b.evaluate('explorer.state()')).triangle;
+      assert.notDeepStrictEqual(tri[2], [300, 400], 'the finger did not move vertex 2');
+      assert.deepStrictEqual(tri.slice(0, 2), [[20, 20], [250, 80]]);
+      assert.equal(await b.evaluate('scrollY'), scrolled, 'the drag scrolled the page');
+      native(['trace', '--triangle', tri.map((p) => p.join(',')).join(' '), '--shading', 'flat', '-o', 'touched.jsonl']);
+      assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'touched.jsonl'), 'utf8')));
+    } finally {
+      await b.page('Emulation.setTouchEmulationEnabled', { enabled: false });
+      await b.page('Emulation.clearDeviceMetricsOverride');
+    }
+  });
+
   await check('no console error, no exception, no network request', async () => {
     assert.deepStrictEqual(problems, []);
   });

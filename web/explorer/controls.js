@@ -13,6 +13,21 @@ export function stepTitle(step) {
   return `${step.kind.replace(/_/g, ' ')}${face}`;
 }
 
+// A step in a sentence, for the live region and the frame's label: its number, its title and,
+// for a scanline, the row's active edges, span and the edges entering or leaving (`row`: the
+// kept trace's scanline event of the step's last row).
+export function stepSentence(step, k, n, row) {
+  let out = `Step ${k + 1} of ${n}: ${stepTitle(step)}.`;
+  if (!row) return out;
+  const at = (x) => String(Math.round(x * 1000) / 1000);
+  if (row.active_edges.length) out += ` Active edges: ${row.active_edges.map((a) => `e${a.edge} at x = ${at(a.x)}`).join(', ')}.`;
+  const spans = row.spans || (row.span ? [row.span] : []);
+  out += spans.length ? ` Span: pixels ${spans.map((sp) => `${sp.x_begin} to ${sp.x_end - 1}`).join(', ')}.` : ' No pixel on this row.';
+  if (row.entered.length) out += ` Entering: ${row.entered.map((e) => `e${e}`).join(', ')}.`;
+  if (row.retired.length) out += ` Leaving: ${row.retired.map((e) => `e${e}`).join(', ')}.`;
+  return out;
+}
+
 // The list of steps: rebuilt when the plan's titles change (not during a drag: the caller skips
 // it there), the current one marked and scrolled into the list's view.
 let listedTitles = '';

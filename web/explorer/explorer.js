@@ -4,7 +4,7 @@
 // scene; drop an image rendered for it for a `diff`. The state is kept in the address.
 import { fromHash, fromHex, toHash, toHex } from './state.js';
 import { diffSummary, whyProse } from './answers.js';
-import { bindPlayer, showStepList, stepTitle } from './controls.js';
+import { bindPlayer, showStepList, stepSentence, stepTitle } from './controls.js';
 
 const $ = (id) => document.getElementById(id);
 
@@ -293,13 +293,21 @@ export async function start(st) {
   function showTables() {
     const step = currentStep();
     show('step-kind', step ? stepTitle(step) : '');
-    // The step list follows the plan, but not on a drag's mouse move: the release rebuilds it.
-    if (!(drag && drag.vertex !== undefined)) showStepList(plan, s.step);
+    const row = step && step.kind === 'scanlines' && shown ? shown.scanline : null;
+    // The step list, the sentence said and the labels follow the plan, but not on a drag's
+    // mouse move (a screen reader would be told every move): the release writes them.
+    if (!(drag && drag.vertex !== undefined)) {
+      showStepList(plan, s.step);
+      const sentence = step ? stepSentence(step, s.step, plan.length, row) : 'no steps';
+      show('announce', sentence);
+      const label = `the step's frame. ${sentence}`;
+      if (frame.getAttribute('aria-label') !== label) frame.setAttribute('aria-label', label);
+      if (grid.getAttribute('aria-label') !== gridLabel()) grid.setAttribute('aria-label', gridLabel());
+    }
     const table = shown && shown.edge_table;
     show('edge-table', table
       ? table.edges.map((e) => `edge ${e.edge}: (${e.from}) -> (${e.to})  rows ${e.first_row}..${e.last_row}  x@ymin ${e.x_at_y_min}  dx/dy ${e.dx_dy}`).join('\n')
       : '(none: the trace is at triangle level, or no edge)');
-    const row = step && step.kind === 'scanlines' && shown ? shown.scanline : null;
     show('active', row
       ? [`y = ${row.y}  entered [${row.entered}]  retired [${row.retired}]`,
         ...row.active_edges.map((a) => `edge ${a.edge}  x = ${a.x}`),
@@ -310,6 +318,13 @@ export async function start(st) {
     show('events', !shown ? ''
       : traceText === null ? `${shown.events} events (their JSON Lines written when the vertex is let go)`
         : `${shown.events} events, ${traceText.length} bytes of JSON Lines`);
+  }
+
+  // What the grid shows, in words (its label).
+  function gridLabel() {
+    const what = s.mode === 'scene' ? `the scene ${s.sceneName}` : `the ${s.mode} ${vertices().map((v) => `(${v.join(', ')})`).join(' ')}`;
+    const size = s.mode === 'scene' && fill ? [fill.width, fill.height] : s.size;
+    return `the pixel grid: ${what}, ${size.join(' by ')} pixels${marked ? `, pixel (${marked.join(', ')}) marked` : ''}`;
   }
 
   function setStep(k) {

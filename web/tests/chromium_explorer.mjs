@@ -274,6 +274,53 @@ try {
     }
   });
 
+  await check('accessibility: every control and canvas named, the canvases reached by Tab, each step said in a live region', async () => {
+    // The names as the browser computes them (its accessibility tree), of everything a person
+    // operates or sees as a picture.
+    await b.page('Accessibility.enable');
+    const { nodes } = await b.page('Accessibility.getFullAXTree', {});
+    const roles = ['button', 'combobox', 'slider', 'textbox', 'spinbutton', 'image', 'img', 'ColorWell', 'checkbox'];
+    const unnamed = nodes.filter((n) => !n.ignored && roles.includes(n.role?.value) && !(n.name?.value || '').trim()).map((n) => `${n.role.value} ${n.backendDOMNodeId}`);
+    assert.deepStrictEqual(unnamed, [], 'controls without a name');
+    const canvases = await b.evaluate("[...document.querySelectorAll('canvas')].filter((c) => c.getAttribute('aria-hidden') !== 'true').map((c) => [c.id, c.getAttribute('role'), (c.getAttribute('aria-label') || '').length > 10])");
+    assert.deepStrictEqual(canvases, [['grid', 'img', true], ['frame', 'img', true]]);
+    // Tab goes through the page and reaches both canvases.
+    await b.evaluate('document.activeElement && document.activeElement.blur()');
+    const reached = new Set();
+    for (let i = 0; i < 60 && !(reached.has('grid') && reached.has('frame')); ++i) {
+      await b.page('Input.dispatchKeyEvent', { type: 'rawKeyDown', key: 'Tab', code: 'Tab', windowsVirtualKeyCode: 9 });
+      await b.page('Input.dispatchKeyEvent', { type: 'keyUp', key: 'Tab', code: 'Tab' });
+      reached.add(await b.evaluate('document.activeElement.id'));
+    }
+    assert.ok(reached.has('grid') && reached.has('frame'), `Tab reached ${[...reached]}`);
+    // With the frame focused the keys step, and the live region says the step: its number, and
+    // for a scanline the row's span as the native trace has it.
+    await b.evaluate("document.getElementById('frame').focus()");
+    await key('Home', 'Home');
+    const n = Number((await text('step-no')).match(/\/ (\d+)/)[1]);
+    const live = await b.evaluate("(() => { const el = document.querySelector('[aria-live=polite]'); return el && el.id; })()");
+    assert.equal(live, 'announce');
+    const tri = (await b.evaluate('explorer.state()')).triangle;
+    native(['trace', '--triangle', tri.map((v) => v.join(',')).join(' '), '--shading', 'flat', '-o', 'spoken.jsonl']);
+    const rows = jsonl(fs.readFileSync(path.join(work, 'spoken.jsonl'), 'utf8')).filter((ev) => ev.type === 'scanline');
+    let scanlines = 0;
+    for (let k = 0; k < 25; ++k) {
+      const said = await text('announce');
+      assert.ok(said.startsWith(`Step ${k + 1} of ${n}: `), said);
+      const m = said.match(/^Step \d+ of \d+: rows? (?:\d+\.\.)?(\d+) of triangle/);
+      if (m) {
+        const row = rows.find((ev) => ev.y === Number(m[1]));
+        assert.ok(said.includes(row.span ? `Span: pixels ${row.span.x_begin} to ${row.span.x_end - 1}.` : 'No pixel'), `${said} / ${JSON.stringify(row.span)}`);
+        ++scanlines;
+      }
+      await key('ArrowRight', 'ArrowRight');
+    }
+    assert.ok(scanlines >= 5, `${scanlines} scanline steps said`);
+    assert.equal(await b.evaluate('document.activeElement.id'), 'frame');
+    await key('End', 'End');
+    await key('PageUp', 'PageUp');
+  });
+
   await check("the step's frame drawn from RGBA blocks is the frame drawn from PNG blocks", async () => {
     // The page draws the frame's pixel blocks from bytes (putImageData, the clip applied by hand);
     // drawScantraceFrame with the PNG data URIs (drawImage under the canvas's clip) must give the

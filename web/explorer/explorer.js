@@ -303,6 +303,8 @@ export async function start(st) {
       const label = `the step's frame. ${sentence}`;
       if (frame.getAttribute('aria-label') !== label) frame.setAttribute('aria-label', label);
       if (grid.getAttribute('aria-label') !== gridLabel()) grid.setAttribute('aria-label', gridLabel());
+      const title = `scantrace explorer: ${shownName()}${step ? `, step ${s.step + 1} of ${plan.length}` : ''}`;
+      if (document.title !== title) document.title = title;
     }
     const table = shown && shown.edge_table;
     show('edge-table', table
@@ -320,9 +322,10 @@ export async function start(st) {
         : `${shown.events} events, ${traceText.length} bytes of JSON Lines`);
   }
 
-  // What the grid shows, in words (its label).
+  // What the grid shows, in words: the page's title and the grid's label.
+  const shownName = () => (s.mode === 'scene' ? `scene ${s.sceneName}` : `${s.mode} ${vertices().map((v) => `(${v.join(',')})`).join(' ')}`);
   function gridLabel() {
-    const what = s.mode === 'scene' ? `the scene ${s.sceneName}` : `the ${s.mode} ${vertices().map((v) => `(${v.join(', ')})`).join(' ')}`;
+    const what = `the ${shownName()}`;
     const size = s.mode === 'scene' && fill ? [fill.width, fill.height] : s.size;
     return `the pixel grid: ${what}, ${size.join(' by ')} pixels${marked ? `, pixel (${marked.join(', ')}) marked` : ''}`;
   }

@@ -72,6 +72,14 @@ try {
     assert.deepStrictEqual((await b.evaluate('explorer.state()')).triangle, [[20, 20], [250, 80], [300, 400]]);
   });
 
+  await check('the page title says what it shows, and follows the step', async () => {
+    const n = Number((await text('step-no')).match(/\/ (\d+)/)[1]);
+    assert.equal(await b.evaluate('document.title'), `scantrace explorer: triangle (20,20) (250,80) (300,400), step 12 of ${n}`);
+    await key('ArrowRight', 'ArrowRight');
+    assert.equal(await b.evaluate('document.title'), `scantrace explorer: triangle (20,20) (250,80) (300,400), step 13 of ${n}`);
+    await key('ArrowLeft', 'ArrowLeft');
+  });
+
   await check('the trace shown is the native trace', async () => {
     native(['trace', '--triangle', '20,20 250,80 300,400', '--shading', 'flat', '-o', 'before.jsonl']);
     assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'before.jsonl'), 'utf8')));
@@ -923,6 +931,7 @@ try {
       assert.notDeepStrictEqual(tri[2], [300, 400], 'the finger did not move vertex 2');
       assert.deepStrictEqual(tri.slice(0, 2), [[20, 20], [250, 80]]);
       assert.equal(await b.evaluate('scrollY'), scrolled, 'the drag scrolled the page');
+      assert.ok((await b.evaluate('document.title')).startsWith(`scantrace explorer: triangle ${tri.map((p) => `(${p.join(',')})`).join(' ')}, step 3 of `), 'the title after the drag');
       native(['trace', '--triangle', tri.map((p) => p.join(',')).join(' '), '--shading', 'flat', '-o', 'touched.jsonl']);
       assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'touched.jsonl'), 'utf8')));
     } finally {

@@ -44,7 +44,7 @@ function showFatal(e) {
   el.textContent = 'error: ' + (e && e.message ? e.message : e);
 }`;
 // The explorer's modules (web/explorer/), in an order where each follows those it imports.
-const explorerModules = ['state.js', 'answers.js', 'controls.js', 'explorer.js'];
+const explorerModules = ['state.js', 'answers.js', 'controls.js', 'view.js', 'controller.js', 'explorer.js'];
 let script;
 if (kind === 'explorer') {
   // The full module (scantrace_wasm) and the JavaScript API.

@@ -10,11 +10,11 @@
 // toFixed and toPrecision round a tie up).
 function roundedDigits(a, p) {
   // a > 0: its first p significant digits, rounded, and the exponent of the first.
-  const [m, ex] = a.toExponential(Math.min(100, p + 25)).split('e');
+  const [m, power] = a.toExponential(Math.min(100, p + 25)).split('e');
   const all = m.replace('.', '');
   const d = all.slice(0, p).split('').map(Number);
   const rest = all.slice(p);
-  let e = Number(ex);
+  let e = Number(power);
   if (rest[0] > '5' || (rest[0] === '5' && (/[1-9]/.test(rest.slice(1)) || d[p - 1] % 2 === 1))) {
     let i = p - 1;
     while (i >= 0 && d[i] === 9) d[i--] = 0;

@@ -27,6 +27,7 @@ export function pointer(e) {
   const r = ex.grid.getBoundingClientRect();
   return [(e.clientX - r.left) * (ex.grid.width / r.width), (e.clientY - r.top) * (ex.grid.height / r.height)];
 }
+
 export const snap = (v) => {
   const g = 2 ** ex.s.subpixel_bits;
   return Math.round(v * g) / g;
@@ -67,6 +68,7 @@ export function onPointerDown(e) {
   }
   ex.drag = { pan: [px, py, ex.view.x, ex.view.y], moved: false };
 }
+
 export function onPointerMove(e) {
   if (!ex.drag) return;
   const [px, py] = pointer(e);
@@ -88,6 +90,7 @@ export function onPointerMove(e) {
     drawGrid();
   }
 }
+
 export function onPointerUp(e) {
   if (ex.drag && ex.drag.vertex !== undefined) {
     ex.drag = null;
@@ -99,6 +102,7 @@ export function onPointerUp(e) {
   }
   ex.drag = null;
 }
+
 export function onWheel(e) {
   e.preventDefault();
   const [px, py] = pointer(e);
@@ -108,6 +112,7 @@ export function onWheel(e) {
   ex.view.y = py - cy * ex.view.zoom;
   drawGrid();
 }
+
 export function bindPointer() {
   ex.grid.addEventListener('pointerdown', onPointerDown);
   ex.grid.addEventListener('pointermove', onPointerMove);
@@ -127,6 +132,7 @@ export function bindOption(id, key, parse = (v) => v) {
     recompute();
   });
 }
+
 // The bar's options and the player (controls.js), each change run through the module.
 export function bindOptions() {
   bindOption('shading', 'shading');
@@ -150,6 +156,7 @@ export function bindOptions() {
     present,
   });
 }
+
 // Presentation: the frame alone (the page's CSS), full screen where the browser lets the page;
 // leaving full screen (Esc, which the browser takes) leaves it too. The frame's box resized,
 // the ResizeObserver below composes it again at its new size.
@@ -160,12 +167,14 @@ export function present(on) {
   if (on && document.fullscreenEnabled && !document.fullscreenElement) document.documentElement.requestFullscreen().catch(() => {});
   if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
 }
+
 export function bindPresent() {
   $('present').addEventListener('click', () => present(!document.body.classList.contains('presenting')));
   document.addEventListener('fullscreenchange', () => {
     if (!document.fullscreenElement) present(false);
   });
 }
+
 // The vertex colours and the modes (triangle, polygon, the demo scene, a file).
 export function bindModes() {
   [0, 1, 2].forEach((i) => {
@@ -176,20 +185,15 @@ export function bindModes() {
       recompute();
     });
   });
-  $('triangle-mode').addEventListener('click', () => {
-    awaitScene(null);
-    ex.s.mode = 'triangle';
-    ex.diffPicture = null;
-    fitView();
-    recompute();
-  });
-  $('polygon-mode').addEventListener('click', () => {
-    awaitScene(null);
-    ex.s.mode = 'polygon';
-    ex.diffPicture = null;
-    fitView();
-    recompute();
-  });
+  for (const mode of ['triangle', 'polygon']) {
+    $(`${mode}-mode`).addEventListener('click', () => {
+      awaitScene(null);
+      ex.s.mode = mode;
+      ex.diffPicture = null;
+      fitView();
+      recompute();
+    });
+  }
   $('demo-scene').addEventListener('click', () => {
     awaitScene(null);
     openScene({ name: 'demo_scene.json', data: ex.st.demoScene() });
@@ -294,6 +298,7 @@ export function openAddress() {
   fitView();
   recompute();
 }
+
 export function awaitScene(a) {
   ex.awaited = a;
   const el = $('notice');

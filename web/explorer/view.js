@@ -250,6 +250,7 @@ export function showDiff(report) {
   $('diff-json').textContent = '';
   if ($('diff-json-box').open) $('diff-json').textContent = JSON.stringify(report, null, 1);
 }
+
 export function bindDiffToggle() {
   $('diff-json-box').addEventListener('toggle', () => {
     if ($('diff-json-box').open && ex.diffReport && !$('diff-json').textContent) $('diff-json').textContent = JSON.stringify(ex.diffReport, null, 1);

@@ -5,19 +5,23 @@
 
 const byId = (id) => document.getElementById(id);
 
-// A step's title in the list and the live region: what the frame explains.
-export function stepTitle(step) {
+// A step's title in the list and the live region: what the frame explains. The edge table's
+// steps, one an entry, are numbered (the plan's k-th step; the entries are consecutive).
+export function stepTitle(plan, k) {
+  const step = plan[k];
   const face = step.triangle >= 0 ? ` of triangle ${step.triangle}` : '';
   if (step.kind === 'scanlines')
     return step.first_row === step.last_row ? `row ${step.last_row}${face}` : `rows ${step.first_row}..${step.last_row}${face}`;
-  return `${step.kind.replace(/_/g, ' ')}${face}`;
+  let entry = 1;
+  while (step.kind === 'edge table' && entry <= k && plan[k - entry].kind === 'edge table' && plan[k - entry].triangle === step.triangle) ++entry;
+  return `${step.kind.replace(/_/g, ' ')}${step.kind === 'edge table' ? `, entry ${entry}` : ''}${face}`;
 }
 
 // A step in a sentence, for the live region and the frame's label: its number, its title and,
 // for a scanline, the row's active edges, span and the edges entering or leaving (`row`: the
 // kept trace's scanline event of the step's last row).
-export function stepSentence(step, k, n, row) {
-  let out = `Step ${k + 1} of ${n}: ${stepTitle(step)}.`;
+export function stepSentence(plan, k, row) {
+  let out = `Step ${k + 1} of ${plan.length}: ${stepTitle(plan, k)}.`;
   if (!row) return out;
   const at = (x) => String(Math.round(x * 1000) / 1000);
   if (row.active_edges.length) out += ` Active edges: ${row.active_edges.map((a) => `e${a.edge} at x = ${at(a.x)}`).join(', ')}.`;
@@ -33,7 +37,7 @@ export function stepSentence(step, k, n, row) {
 let listedTitles = '';
 export function showStepList(plan, k) {
   const list = byId('step-list');
-  const titles = plan.map(stepTitle);
+  const titles = plan.map((st, i) => stepTitle(plan, i));
   if (titles.join('\n') !== listedTitles) {
     listedTitles = titles.join('\n');
     list.replaceChildren(...titles.map((t) => {

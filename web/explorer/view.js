@@ -178,13 +178,13 @@ export function drawStep() {
 
 export function showTables() {
   const step = currentStep();
-  show('step-kind', step ? stepTitle(step) : '');
+  show('step-kind', step ? stepTitle(ex.plan, ex.s.step) : '');
   const row = step && step.kind === 'scanlines' && ex.shown ? ex.shown.scanline : null;
   // The step list, the sentence said and the labels follow the plan, but not on a drag's
   // mouse move (a screen reader would be told every move): the release writes them.
   if (!(ex.drag && ex.drag.vertex !== undefined)) {
     showStepList(ex.plan, ex.s.step);
-    const sentence = step ? stepSentence(step, ex.s.step, ex.plan.length, row) : 'no steps';
+    const sentence = step ? stepSentence(ex.plan, ex.s.step, row) : 'no steps';
     show('announce', sentence);
     const label = `the step's frame. ${sentence}`;
     if (ex.frame.getAttribute('aria-label') !== label) ex.frame.setAttribute('aria-label', label);

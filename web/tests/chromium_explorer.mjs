@@ -184,6 +184,8 @@ try {
     // The list: one item a step, titled as the step line says, the current one marked.
     const items = await b.evaluate("[...document.querySelectorAll('#step-list li')].map((li) => [li.textContent, li.hasAttribute('aria-current')])");
     assert.equal(items.length, n);
+    // Every step's title its own (the edge table's entries numbered).
+    assert.equal(new Set(items.map((it) => it[0])).size, n, items.map((it) => it[0]).join(' | '));
     assert.deepStrictEqual(items.map((it, i) => [i, it[1]]).filter((it) => it[1]).map((it) => it[0]), [await stepShown()]);
     await click('#step-list li:nth-child(7)');
     assert.equal(await stepShown(), 6);

@@ -43,6 +43,8 @@ function showFatal(e) {
   el.hidden = false;
   el.textContent = 'error: ' + (e && e.message ? e.message : e);
 }`;
+// The explorer's modules (web/explorer/), in an order where each follows those it imports.
+const explorerModules = ['state.js', 'answers.js', 'controls.js', 'view.js', 'controller.js', 'explorer.js'];
 let script;
 if (kind === 'explorer') {
   // The full module (scantrace_wasm) and the JavaScript API.
@@ -50,8 +52,8 @@ if (kind === 'explorer') {
     unmodule(read(path.join(dir, 'scantrace_wasm.mjs'))),
     unmodule(read(path.join(here, 'scantrace.mjs'))),
     helpers,
-    unmodule(read(path.join(here, 'explorer', 'state.js'))),
-    unmodule(read(path.join(here, 'explorer', 'explorer.js'))),
+    // The explorer's modules, each after those it imports.
+    ...explorerModules.map((m) => unmodule(read(path.join(here, 'explorer', m)))),
     `openMark('script');
 gunzipBase64('${inlined('scantrace_wasm.wasm')}')
   .then((wasmBinary) => { openMark('inflated'); return load({ wasmBinary }); })

@@ -51,6 +51,12 @@ if(SCANTRACE_BUILD_TESTS)
            COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/node_player.mjs ${web_dir})
   set_tests_properties("web: node player module composes the full module's frames" PROPERTIES
                        LABELS "web" TIMEOUT 300)
+  # The explorer's answers in the command's words and number formats (web/tests/node_answers.mjs;
+  # plain JavaScript: no module needed).
+  add_test(NAME "web: explorer answers in the command's number formats"
+           COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/node_answers.mjs)
+  set_tests_properties("web: explorer answers in the command's number formats" PROPERTIES
+                       LABELS "web" TIMEOUT 60)
 endif()
 
 if(SCANTRACE_BUILD_TESTS)

@@ -66,8 +66,18 @@ try {
 
   await check('the address restores the state', async () => {
     assert.equal(await b.evaluate("document.getElementById('shading').value"), 'flat');
-    assert.equal(await stepShown(), 12);
+    // #step=12 is the step shown as 'step 12', as on the trace page (web/player/player.js).
+    assert.match(await text('step-no'), /^step 12 \//);
+    assert.equal(await stepShown(), 11);
     assert.deepStrictEqual((await b.evaluate('explorer.state()')).triangle, [[20, 20], [250, 80], [300, 400]]);
+  });
+
+  await check('the page title says what it shows, and follows the step', async () => {
+    const n = Number((await text('step-no')).match(/\/ (\d+)/)[1]);
+    assert.equal(await b.evaluate('document.title'), `scantrace explorer: triangle (20,20) (250,80) (300,400), step 12 of ${n}`);
+    await key('ArrowRight', 'ArrowRight');
+    assert.equal(await b.evaluate('document.title'), `scantrace explorer: triangle (20,20) (250,80) (300,400), step 13 of ${n}`);
+    await key('ArrowLeft', 'ArrowLeft');
   });
 
   await check('the trace shown is the native trace', async () => {
@@ -135,6 +145,190 @@ try {
     await key('PageUp', 'PageUp');
     assert.equal(await stepShown(), n - 11);
     await until('the frame of the step drawn', async () => (await b.evaluate("document.getElementById('frame').dataset.step")) === String(n - 11));
+  });
+
+  const click = async (selector) => {
+    const at = await b.evaluate(`(() => { const el = document.querySelector(${JSON.stringify(selector)}); el.scrollIntoView({ block: 'nearest' }); const r = el.getBoundingClientRect(); return [r.left + r.width / 2, r.top + r.height / 2]; })()`);
+    await mouse('mousePressed', at);
+    await mouse('mouseReleased', at);
+  };
+  const typeKey = async (k) => {
+    await b.page('Input.dispatchKeyEvent', { type: 'keyDown', key: k, text: k.length === 1 ? k : k === 'Enter' ? '\r' : undefined, windowsVirtualKeyCode: k === 'Enter' ? 13 : k === 'Escape' ? 27 : k.length === 1 ? k.toUpperCase().charCodeAt(0) : 0 });
+    await b.page('Input.dispatchKeyEvent', { type: 'keyUp', key: k });
+  };
+
+  await check('the keys step after a dropdown is used, and the arrow keys never change a dropdown', async () => {
+    await key('Home', 'Home');
+    // The shading dropdown chosen by the mouse's click and the keyboard (focus, then a change).
+    await click('#shading');
+    await b.evaluate("(() => { const el = document.getElementById('shading'); el.focus(); el.value = 'gouraud'; el.dispatchEvent(new Event('change')); })()");
+    await key('ArrowRight', 'ArrowRight');
+    assert.equal(await stepShown(), 1, 'ArrowRight after the dropdown did not step');
+    // A dropdown that has the focus: ↓ ↑ leave its value, → ← step.
+    await b.evaluate("document.getElementById('shading').focus()");
+    for (const [k, vk] of [['ArrowDown', 40], ['ArrowUp', 38], ['ArrowDown', 40]]) {
+      await b.page('Input.dispatchKeyEvent', { type: 'rawKeyDown', key: k, code: k, windowsVirtualKeyCode: vk });
+      await b.page('Input.dispatchKeyEvent', { type: 'keyUp', key: k, code: k });
+    }
+    assert.equal(await b.evaluate("document.getElementById('shading').value"), 'gouraud');
+    await b.evaluate("document.getElementById('shading').focus()");
+    await key('ArrowRight', 'ArrowRight');
+    assert.equal(await stepShown(), 2);
+    assert.equal(await b.evaluate("document.getElementById('shading').value"), 'gouraud');
+    // Back to flat, as the next checks expect.
+    await b.evaluate("(() => { const el = document.getElementById('shading'); el.value = 'flat'; el.dispatchEvent(new Event('change')); })()");
+  });
+
+  await check('the player: step list, play at a speed, one-row and ten-row steps, g, ? and a link to the step', async () => {
+    const n = Number((await text('step-no')).match(/\/ (\d+)/)[1]);
+    // The list: one item a step, titled as the step line says, the current one marked.
+    const items = await b.evaluate("[...document.querySelectorAll('#step-list li')].map((li) => [li.textContent, li.hasAttribute('aria-current')])");
+    assert.equal(items.length, n);
+    // Every step's title its own (the edge table's entries numbered).
+    assert.equal(new Set(items.map((it) => it[0])).size, n, items.map((it) => it[0]).join(' | '));
+    assert.deepStrictEqual(items.map((it, i) => [i, it[1]]).filter((it) => it[1]).map((it) => it[0]), [await stepShown()]);
+    await click('#step-list li:nth-child(7)');
+    assert.equal(await stepShown(), 6);
+    assert.equal(await text('step-kind'), items[6][0]);
+    assert.equal(await b.evaluate("document.querySelector('#step-list li[aria-current]').textContent"), items[6][0]);
+    // Play at 8 steps a second: on by a few steps in a second, then paused, still.
+    await b.evaluate("(() => { const el = document.getElementById('speed'); el.value = '8'; el.dispatchEvent(new Event('change')); })()");
+    await click('#play');
+    await new Promise((r) => setTimeout(r, 1000));
+    await click('#play');
+    const played = await stepShown();
+    assert.ok(played >= 6 + 3, `at 8 steps a second, a second went from step 7 to step ${played + 1}`);
+    await new Promise((r) => setTimeout(r, 400));
+    assert.equal(await stepShown(), played, 'paused, yet stepping');
+    assert.equal(await text('play'), 'play');
+    // Rows a step: one, then ten (the composer's steps; rows where an edge enters or leaves keep a
+    // step of their own), then the composer's choice again.
+    const rowsOf = () => b.evaluate("(() => { const s = explorer.state(); return explorer.module().frames(null, { count: 0, rows_per_step: s.rows_per_step }).steps.filter((p) => p.kind === 'scanlines').map((p) => p.last_row - p.first_row + 1); })()");
+    const auto = await rowsOf();
+    for (const [rows, max] of [['1', 1], ['10', 10]]) {
+      await b.evaluate(`(() => { const el = document.getElementById('rows'); el.value = '${rows}'; el.dispatchEvent(new Event('change')); })()`);
+      const got = await rowsOf();
+      assert.equal(Math.max(...got), max, `rows a step ${rows}: ${got}`);
+      const listed = await b.evaluate("document.querySelectorAll('#step-list li').length");
+      assert.equal(listed, Number((await text('step-no')).match(/\/ (\d+)/)[1]));
+      assert.ok((await b.evaluate('location.hash')).includes(`rows=${rows}`));
+    }
+    assert.ok(Math.max(...auto) > 1 && Math.max(...auto) < 10, `the composer's own choice: ${Math.max(...auto)} rows`);
+    await b.evaluate("(() => { const el = document.getElementById('rows'); el.value = '0'; el.dispatchEvent(new Event('change')); })()");
+    // g, a row, Enter: the step of that row.
+    await typeKey('g');
+    assert.equal(await b.evaluate("document.activeElement.id"), 'goto-row');
+    for (const c of '200') await typeKey(c);
+    await typeKey('Enter');
+    const step = await b.evaluate('(() => { const s = explorer.state(); return explorer.module().frames(null, { count: 0 }).steps[s.step]; })()');
+    assert.ok(step.kind === 'scanlines' && step.first_row <= 200 && 200 <= step.last_row, JSON.stringify(step));
+    assert.equal(await b.evaluate('document.activeElement === document.body'), true);
+    // ? shows the keys, Esc hides them.
+    await typeKey('?');
+    assert.equal(await b.evaluate("document.getElementById('help').hidden"), false);
+    assert.ok((await text('help')).includes('previous step'));
+    await typeKey('Escape');
+    assert.equal(await b.evaluate("document.getElementById('help').hidden"), true);
+    // The link: the address of the step shown, its number as the page shows it.
+    await click('#copy-link');
+    await until('the link said', async () => (await text('link-status')).includes('file://'));
+    const href = await b.evaluate('location.href');
+    assert.ok((await text('link-status')).endsWith(href), await text('link-status'));
+    assert.ok(href.includes(`step=${(await stepShown()) + 1}`), href);
+    // The step the next checks expect (as the keys' check left it).
+    await key('End', 'End');
+    await key('PageUp', 'PageUp');
+  });
+
+  await check('presentation (f) at 1366x768: the frame alone, as large as the screen, composed at that size; the keys step; Esc leaves', async () => {
+    // The height of the smallest text of the frame shown, in its pixels: of each text op the
+    // tallest glyph (its strokes' extent), the least of those.
+    const smallestText = () => b.evaluate(`(() => {
+      const f = explorer.module().frames(null, { first: explorer.state().step, count: 1, ...explorer.frameSize() }).frames[0];
+      const heights = f.ops.filter((op) => op[0] === 'G').map((op) => {
+        let most = 0;
+        for (let k = 0; k < op[6].length; k += 3) {
+          const ys = f.glyphs[op[6][k]].flatMap((s) => s.filter((v, i) => i % 2 === 1));
+          if (ys.length) most = Math.max(most, Math.max(...ys) - Math.min(...ys));
+        }
+        return most;
+      });
+      return Math.min(...heights);
+    })()`);
+    await b.page('Emulation.setDeviceMetricsOverride', { width: 1366, height: 768, deviceScaleFactor: 1, mobile: false });
+    try {
+      const before = await smallestText();
+      const at = await stepShown();
+      await typeKey('f');
+      await until('the frame composed at the screen\'s size', async () => (await b.evaluate('explorer.frameSize().width')) >= 1360);
+      const seen = await b.evaluate(`(() => {
+        const r = document.getElementById('frame').getBoundingClientRect();
+        const shown = (id) => document.getElementById(id).getBoundingClientRect().height > 0;
+        return [r.left, r.top, r.right, r.bottom, shown('grid'), shown('player'), shown('edge-table'), document.querySelector('header').getBoundingClientRect().height];
+      })()`);
+      assert.ok(seen[0] >= -0.5 && seen[1] >= -0.5 && seen[2] <= 1366.5 && seen[3] <= 768.5 && seen[2] - seen[0] >= 1360, `the frame is at ${seen.slice(0, 4)}`);
+      assert.deepStrictEqual(seen.slice(4), [false, false, false, 0], 'the grid, the player, the tables, the header: seen');
+      assert.equal(await staleValues(), 0, 'the frame shown is not the step drawn whole at its size');
+      const text = await smallestText();
+      assert.ok(text >= 9 && text >= 1.9 * before, `the smallest text is ${text.toFixed(1)} px tall (${before.toFixed(1)} in the page)`);
+      await key('ArrowRight', 'ArrowRight');
+      assert.equal(await stepShown(), at + 1);
+      await until('the frame of the step drawn', async () => (await b.evaluate("document.getElementById('frame').dataset.step")) === String(at + 1));
+      await typeKey('Escape');
+      await until('the page again', async () => (await b.evaluate("document.querySelector('header').getBoundingClientRect().height")) > 0);
+      await until('the frame composed at its column\'s size', async () => (await b.evaluate('explorer.frameSize().width')) < 1000);
+      await key('ArrowLeft', 'ArrowLeft');
+    } finally {
+      await b.evaluate("document.body.classList.contains('presenting') && document.getElementById('present').click()");
+      await b.page('Emulation.clearDeviceMetricsOverride');
+    }
+  });
+
+  await check('accessibility: every control and canvas named, the canvases reached by Tab, each step said in a live region', async () => {
+    // The names as the browser computes them (its accessibility tree), of everything a person
+    // operates or sees as a picture.
+    await b.page('Accessibility.enable');
+    const { nodes } = await b.page('Accessibility.getFullAXTree', {});
+    const roles = ['button', 'combobox', 'slider', 'textbox', 'spinbutton', 'image', 'img', 'ColorWell', 'checkbox'];
+    const unnamed = nodes.filter((n) => !n.ignored && roles.includes(n.role?.value) && !(n.name?.value || '').trim()).map((n) => `${n.role.value} ${n.backendDOMNodeId}`);
+    assert.deepStrictEqual(unnamed, [], 'controls without a name');
+    const canvases = await b.evaluate("[...document.querySelectorAll('canvas')].filter((c) => c.getAttribute('aria-hidden') !== 'true').map((c) => [c.id, c.getAttribute('role'), (c.getAttribute('aria-label') || '').length > 10])");
+    assert.deepStrictEqual(canvases, [['grid', 'img', true], ['frame', 'img', true]]);
+    // Tab goes through the page and reaches both canvases.
+    await b.evaluate('document.activeElement && document.activeElement.blur()');
+    const reached = new Set();
+    for (let i = 0; i < 60 && !(reached.has('grid') && reached.has('frame')); ++i) {
+      await b.page('Input.dispatchKeyEvent', { type: 'rawKeyDown', key: 'Tab', code: 'Tab', windowsVirtualKeyCode: 9 });
+      await b.page('Input.dispatchKeyEvent', { type: 'keyUp', key: 'Tab', code: 'Tab' });
+      reached.add(await b.evaluate('document.activeElement.id'));
+    }
+    assert.ok(reached.has('grid') && reached.has('frame'), `Tab reached ${[...reached]}`);
+    // With the frame focused the keys step, and the live region says the step: its number, and
+    // for a scanline the row's span as the native trace has it.
+    await b.evaluate("document.getElementById('frame').focus()");
+    await key('Home', 'Home');
+    const n = Number((await text('step-no')).match(/\/ (\d+)/)[1]);
+    const live = await b.evaluate("(() => { const el = document.querySelector('[aria-live=polite]'); return el && el.id; })()");
+    assert.equal(live, 'announce');
+    const tri = (await b.evaluate('explorer.state()')).triangle;
+    native(['trace', '--triangle', tri.map((v) => v.join(',')).join(' '), '--shading', 'flat', '-o', 'spoken.jsonl']);
+    const rows = jsonl(fs.readFileSync(path.join(work, 'spoken.jsonl'), 'utf8')).filter((ev) => ev.type === 'scanline');
+    let scanlines = 0;
+    for (let k = 0; k < 25; ++k) {
+      const said = await text('announce');
+      assert.ok(said.startsWith(`Step ${k + 1} of ${n}: `), said);
+      const m = said.match(/^Step \d+ of \d+: rows? (?:\d+\.\.)?(\d+) of triangle/);
+      if (m) {
+        const row = rows.find((ev) => ev.y === Number(m[1]));
+        assert.ok(said.includes(row.span ? `Span: pixels ${row.span.x_begin} to ${row.span.x_end - 1}.` : 'No pixel'), `${said} / ${JSON.stringify(row.span)}`);
+        ++scanlines;
+      }
+      await key('ArrowRight', 'ArrowRight');
+    }
+    assert.ok(scanlines >= 5, `${scanlines} scanline steps said`);
+    assert.equal(await b.evaluate('document.activeElement.id'), 'frame');
+    await key('End', 'End');
+    await key('PageUp', 'PageUp');
   });
 
   await check("the step's frame drawn from RGBA blocks is the frame drawn from PNG blocks", async () => {
@@ -461,7 +655,41 @@ try {
     const [x, y] = pixel.split(',').map(Number);
     assert.ok(Math.abs(x - 150) <= 1 && Math.abs(y - 120) <= 1, `clicked ${pixel}`);
     const want = JSON.parse(native(['why', 'explorer_triangle.json', String(x), String(y), '--json', '--shading', 'flat']).stdout);
-    assert.deepStrictEqual(JSON.parse(await text('why')), want);
+    assert.deepStrictEqual(JSON.parse(await text('why-json')), want);
+  });
+
+  await check("at 1366x768 a click's why is seen without scrolling: the answer first, then the command's text", async () => {
+    await b.page('Emulation.setDeviceMetricsOverride', { width: 1366, height: 768, deviceScaleFactor: 1, mobile: false });
+    try {
+      await until('the grid at its new size', async () => (await b.evaluate("document.getElementById('grid').getBoundingClientRect().bottom")) < 768);
+      for (const [x, y] of [[254, 106], [100, 30], [3, 500]]) {
+        const at = (await b.evaluate(`explorer.pixelOnScreen(${x}, ${y})`)).map(Math.round);
+        await mouse('mousePressed', at);
+        await mouse('mouseReleased', at);
+        const pixel = await until('the why panel', async () => {
+          const p = await b.evaluate("document.getElementById('why').dataset.pixel");
+          return p && p !== (await b.evaluate('window.lastWhy')) && p;
+        });
+        await b.evaluate(`window.lastWhy = ${JSON.stringify(pixel)}`);
+        const [px, py] = pixel.split(',');
+        // The command's own text (its stdout; the timing line is on stderr), line for line.
+        const want = native(['why', 'explorer_triangle.json', px, py, '--shading', 'flat']).stdout;
+        assert.equal(await text('why'), want);
+        // The answer first: the text's last line (the final colour), as a sentence.
+        const last = want.trim().split('\n').pop().trim();
+        assert.equal(await text('why-answer'), `Pixel (${px}, ${py}): ${last}.`);
+        // Seen: the answer and the text's first three lines inside the window, nothing scrolled,
+        // the JSON behind its closed toggle.
+        const seen = await b.evaluate(`(() => {
+          const a = document.getElementById('why-answer').getBoundingClientRect(), w = document.getElementById('why').getBoundingClientRect();
+          const left = document.getElementById('left');
+          return [a.top >= 0, a.bottom <= innerHeight, w.top + 3 * 15 <= innerHeight, scrollY, left.scrollTop, document.getElementById('why-json-box').open];
+        })()`);
+        assert.deepStrictEqual(seen, [true, true, true, 0, 0, false], `answer inside, top, 3 lines of text seen, page and column scrolled, JSON open: ${seen}`);
+      }
+    } finally {
+      await b.page('Emulation.clearDeviceMetricsOverride');
+    }
   });
 
   await check("at high zoom each pixel's square is centred on its sample point: the pixels beside an edge on their side of it", async () => {
@@ -524,7 +752,7 @@ try {
       await mouse('mousePressed', click);
       await mouse('mouseReleased', click);
       await until('the why panel for (254, 106)', () => b.evaluate("document.getElementById('why').dataset.pixel === '254,106'"));
-      const why = JSON.parse(await text('why'));
+      const why = JSON.parse(await text('why-json'));
       const want = JSON.parse(native(['why', 'explorer_triangle.json', '254', '106', '--json', '--shading', 'flat']).stdout);
       assert.deepStrictEqual(why, want);
       assert.ok(!white(254, 106), 'pixel (254, 106) is filled');
@@ -561,8 +789,36 @@ try {
     fs.writeFileSync(path.join(work, 'student.png'), encodePng(img));
     const want = JSON.parse(native(['diff', 'explorer_triangle.json', 'student.png', '--json', '--shading', 'flat'], [0, 3]).stdout);
     await setFile(path.join(work, 'student.png'));
-    await until('the diff report', async () => (await text('diff')).startsWith('{'));
-    assert.deepStrictEqual(JSON.parse(await text('diff')), want);
+    await until('the diff report', async () => (await text('diff-verdict')).length > 0);
+    await b.evaluate("document.getElementById('diff-json-box').open = true");
+    await until('the JSON in its toggle', async () => (await text('diff-json')).startsWith('{'));
+    assert.deepStrictEqual(JSON.parse(await text('diff-json')), want);
+  });
+
+  await check("a diff is shown as its summary: the command's verdict and counts, a legend of the picture's colours, the JSON closed", async () => {
+    await b.evaluate("document.getElementById('diff-json-box').open = false");
+    // The command's Markdown summary: its verdict line and its table of categories.
+    const md = native(['diff', 'explorer_triangle.json', 'student.png', '--shading', 'flat'], [0, 3]).stdout;
+    const verdict = md.match(/\*\*(.*)\*\*/)[1];
+    assert.equal(await text('diff-verdict'), verdict);
+    const counts = Object.fromEntries([...md.matchAll(/^\| `(\w+)` \| (\d+) \|/gm)].map((m) => [m[1], Number(m[2])]));
+    assert.ok(Object.keys(counts).length >= 2, md);
+    const legend = await b.evaluate("[...document.querySelectorAll('#diff-legend li')].map((li) => [li.dataset.category, li.textContent, li.dataset.rgb, getComputedStyle(li.firstChild).backgroundColor])");
+    assert.deepStrictEqual(legend.map((l) => l[0]).sort(), Object.keys(counts).sort());
+    // Each colour of the legend is the colour the picture over the grid has at a pixel of its
+    // category (the report's first run of it), and its swatch is painted in it.
+    const report = JSON.parse(native(['diff', 'explorer_triangle.json', 'student.png', '--json', '--shading', 'flat'], [0, 3]).stdout);
+    const picture = await b.evaluate('Array.from(explorer.module().lastDiffPicture.rgba)');
+    for (const [category, label, rgb, css] of legend) {
+      assert.ok(label.includes(`${counts[category]}`), `${category}: '${label}' lacks the count ${counts[category]}`);
+      const run = report.category_map.runs.find((r) => report.category_map.legend[r[2]] === category);
+      assert.equal(picture.slice(run[0] * 4, run[0] * 4 + 3).join(','), rgb, `${category}: the picture's colour`);
+      assert.equal(css, `rgb(${rgb.split(',').join(', ')})`);
+    }
+    // The JSON is not what is seen: the toggle closed, the summary's box shorter than a window.
+    const [open, height] = await b.evaluate("[document.getElementById('diff-json-box').open, document.getElementById('diff-box').getBoundingClientRect().height]");
+    assert.equal(open, false);
+    assert.ok(height < 400, `the diff's box is ${height} px tall`);
   });
 
   // A .npy file as numpy.save writes it (format 1.0): the header dict padded to 64 bytes.
@@ -614,11 +870,76 @@ try {
       for (let c = 0; c < 3; ++c) values[k++] = img.rgba[i * 4 + c] / 255;
     fs.writeFileSync(path.join(work, 'student.npy'), npy('<f8', [img.height, img.width, 3], new Uint8Array(values.buffer)));
     const want = JSON.parse(native(['diff', 'explorer_triangle.json', 'student.npy', '--json', '--shading', 'flat'], [0, 3]).stdout);
-    await b.evaluate("document.getElementById('diff').textContent = ''");
+    await b.evaluate("document.getElementById('diff-verdict').textContent = ''; document.getElementById('diff-json-box').open = true");
     await setFile(path.join(work, 'student.npy'));
-    await until('the diff report', async () => (await text('diff')).startsWith('{'));
-    assert.deepStrictEqual(JSON.parse(await text('diff')), want);
+    await until('the diff report', async () => (await text('diff-json')).startsWith('{'));
+    assert.deepStrictEqual(JSON.parse(await text('diff-json')), want);
     assert.equal(await text('error'), '');
+  });
+
+  await check("a scene link: the demo at the link's step; a file named by the link warned of, opened at the link's step once dropped", async () => {
+    const open = async (hash) => {
+      // By way of a blank page: the same file with another hash would only change the hash.
+      await b.page('Page.navigate', { url: 'about:blank' });
+      await until('the blank page', () => b.evaluate("location.href === 'about:blank'"));
+      await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}${hash}` });
+      await until('the page', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"));
+    };
+    await open('#scene=demo&shading=flat&step=4');
+    assert.equal((await b.evaluate('explorer.state()')).mode, 'scene');
+    assert.match(await text('step-no'), /^step 4 \//);
+    assert.equal(await b.evaluate("document.getElementById('notice').hidden"), true);
+    // A file's name: the page cannot read it; the warning says which file and how to open it.
+    fs.copyFileSync(path.join(work, 'explorer_triangle.json'), path.join(work, 'lecture_scene.json'));
+    await open('#scene=lecture_scene.json&shading=flat&step=5');
+    const notice = await b.evaluate("(() => { const el = document.getElementById('notice'); const r = el.getBoundingClientRect(); return [el.hidden, el.textContent, r.top >= 0 && r.bottom <= innerHeight && r.height > 10]; })()");
+    assert.equal(notice[0], false, 'no warning');
+    assert.ok(notice[2], 'the warning is not in the window');
+    for (const words of ['lecture_scene.json', 'step 5', 'Drop']) assert.ok(notice[1].includes(words), notice[1]);
+    assert.ok((await b.evaluate('location.hash')).includes('scene=lecture_scene.json'), 'the address lost the link');
+    await setFile(path.join(work, 'lecture_scene.json'));
+    await until('the scene open', async () => (await b.evaluate('explorer.state().mode')) === 'scene');
+    assert.match(await text('step-no'), /^step 5 \//);
+    assert.equal(await b.evaluate("document.getElementById('notice').hidden"), true);
+    const hash = await b.evaluate('location.hash');
+    assert.ok(hash.includes('scene=lecture_scene.json') && hash.includes('step=5'), hash);
+  });
+
+  await check('a phone (390x844): one column, no horizontal scroll, a finger drags a vertex from 11 CSS px away', async () => {
+    await b.page('Emulation.setDeviceMetricsOverride', { width: 390, height: 844, deviceScaleFactor: 1, mobile: true });
+    await b.page('Emulation.setTouchEmulationEnabled', { enabled: true, maxTouchPoints: 5 });
+    try {
+      await b.page('Page.navigate', { url: 'about:blank' });
+      await until('the blank page', () => b.evaluate("location.href === 'about:blank'"));
+      await b.page('Page.navigate', { url: `file://${path.resolve(explorer)}#triangle=20,20;250,80;300,400&shading=flat&step=3` });
+      await until('the page', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"));
+      const layout = await b.evaluate(`(() => {
+        const box = (el) => el.getBoundingClientRect();
+        const wide = [...document.querySelectorAll('header *, #player *, #grid, #frame')].filter((el) => box(el).width > 0 && box(el).right > innerWidth + 0.5).map((el) => el.id || el.tagName);
+        return { scroll: document.documentElement.scrollWidth, wide, grid: box(document.getElementById('grid')).toJSON(), frame: box(document.getElementById('frame')).toJSON() };
+      })()`);
+      assert.ok(layout.scroll <= 390, `the page is ${layout.scroll} px wide`);
+      assert.deepStrictEqual(layout.wide, [], 'cut off on the right');
+      assert.ok(layout.grid.width >= 370 && layout.frame.top >= layout.grid.bottom, `grid ${JSON.stringify(layout.grid)}, frame ${JSON.stringify(layout.frame)}`);
+      // A finger put down 11 CSS px right of vertex 2 (inside a 24-px target) and moved.
+      const v = await b.evaluate('explorer.vertexOnScreen(2)');
+      const scrolled = await b.evaluate('scrollY');
+      const from = [v[0] + 11, v[1]];
+      const touch = (type, [x, y]) => b.page('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchEnd' ? [] : [{ x, y, id: 1 }] });
+      await touch('touchStart', from);
+      for (let i = 1; i <= 4; ++i) await touch('touchMove', [from[0] - 10 * i, from[1] - 15 * i]);
+      await touch('touchEnd', from);
+      const tri = (await b.evaluate('explorer.state()')).triangle;
+      assert.notDeepStrictEqual(tri[2], [300, 400], 'the finger did not move vertex 2');
+      assert.deepStrictEqual(tri.slice(0, 2), [[20, 20], [250, 80]]);
+      assert.equal(await b.evaluate('scrollY'), scrolled, 'the drag scrolled the page');
+      assert.ok((await b.evaluate('document.title')).startsWith(`scantrace explorer: triangle ${tri.map((p) => `(${p.join(',')})`).join(' ')}, step 3 of `), 'the title after the drag');
+      native(['trace', '--triangle', tri.map((p) => p.join(',')).join(' '), '--shading', 'flat', '-o', 'touched.jsonl']);
+      assert.deepStrictEqual(jsonl(await b.evaluate('explorer.traceText()')), jsonl(fs.readFileSync(path.join(work, 'touched.jsonl'), 'utf8')));
+    } finally {
+      await b.page('Emulation.setTouchEmulationEnabled', { enabled: false });
+      await b.page('Emulation.clearDeviceMetricsOverride');
+    }
   });
 
   await check('no console error, no exception, no network request', async () => {

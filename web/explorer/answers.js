@@ -122,6 +122,11 @@ export function diffSummary(r) {
   }
   for (const f of r.faces) lines.push(`Face ${f.face}: ${f.pixels} pixels, mostly ${f.category}.`);
   for (const n of r.notes) lines.push(`Note: ${n}`);
-  const verdict = `${r.differing_pixels} of ${r.compared_pixels} pixels differ (${percentOf(r.differing_pixels, r.compared_pixels).toFixed(2)} %).`;
+  const counts = `${r.differing_pixels} of ${r.compared_pixels} pixels differ (${percentOf(r.differing_pixels, r.compared_pixels).toFixed(2)} %).`;
+  // The mistakes named in the catalogue's words come first, as `scantrace diff` prints them
+  // (report.verdict: [{id, text, evidence}]); the counts follow. Without a verdict, the counts.
+  const said = (r.verdict || []).map((v) => v.text);
+  const verdict = said.length ? said.join('; ') : counts;
+  if (said.length) lines.unshift(counts);
   return { verdict, lines, legend: legend.map(([c, n, rgb]) => [c, n, rgb, percentOf(n, r.differing_pixels)]) };
 }

@@ -37,4 +37,12 @@ const summary = diffSummary({ agrees: false, compared_pixels: 262144, differing_
   categories: { colour: 35293, background: 22, boundary: 0 }, near_boundary: { extra: 0, missing: 0 }, colour: { max_error: 0.6627, diagnosis: [] }, faces: [] });
 assert.equal(summary.verdict, '35315 of 262144 pixels differ (13.47 %).');
 assert.deepStrictEqual(summary.legend.map((l) => l[0]), ['colour', 'background']);
+// With the mistakes the command names first (report.verdict), they are the verdict, in their
+// order, and the counts come next.
+const named = diffSummary({ agrees: false, compared_pixels: 100, differing_pixels: 7, global: [], patterns: [], notes: [],
+  categories: { order: 7 }, near_boundary: { extra: 0, missing: 0 }, colour: { max_error: 0, diagnosis: [] }, faces: [],
+  verdict: [{ id: 'order_reversed', text: 'faces are painted nearest first', evidence: '7 pixels' },
+            { id: 'bottom_row_dropped', text: 'the last row of each triangle is missing', evidence: '' }] });
+assert.equal(named.verdict, 'faces are painted nearest first; the last row of each triangle is missing');
+assert.equal(named.lines[0], '7 of 100 pixels differ (7.00 %).');
 console.log('explorer answers: the command\'s number formats and sentences');

@@ -96,6 +96,11 @@ std::vector<std::string> recap_lines(const trace::Trace& trace, const StepPlan& 
       "-   Each row: add the edges that start, drop those that ended; the active "
       "points are where the active edges cross the row.",
       "-   Fill from ceil(x_L) to ceil(x_R) - 1, then x += dx/dy for the next row.",
+      // The grader names float_drift when a student's float sum of dx/dy moves a span end: the
+      // card says how the fill shown keeps the same step exact.
+      "-   scantrace adds dx/dy exactly: x is kept as an integer part and a remainder over dy "
+      "(x = q + r/dy), so it never drifts; a floating-point x += dx/dy can land a hair off a "
+      "pixel centre and move a span end by one (float_drift in scantrace grade).",
       "-   Gouraud: colours interpolated along the edges, then along the row."};
   if (plan.order.size() > 1)
     lines.push_back(zbuffer ? "-   Z-buffer: a pixel is written only where the triangle is "

@@ -89,3 +89,19 @@ TEST_CASE("every text of every frame fits its area at the sizes the pages and vi
     }
   }
 }
+
+TEST_CASE("a triangle's end card tells how the fill keeps x += dx/dy exact, in full",
+          "[viz][display-list][text]") {
+  // The grader names float_drift on a student's floating-point x += dx/dy; the player teaches
+  // the same step, so its recap says how scantrace's own x stays exact (issue 47's one story).
+  const trace::Trace triangle = test::record(test::medium_triangle());
+  viz::StepOptions steps;
+  viz::FrameSequence s(triangle, steps, {1280, 720}, "test");
+  const viz::Frame end = s.frame(s.steps().size() - 1);
+  std::string text;
+  for (const viz::DrawOp& op : end.ops())
+    if (const auto* t = std::get_if<viz::TextOp>(&op.body)) text += t->text + " ";
+  CHECK(text.find("x = q + r/dy") != std::string::npos);
+  CHECK(text.find("never drifts") != std::string::npos);
+  CHECK(text.find("float_drift") != std::string::npos);
+}

@@ -85,18 +85,18 @@ TEST_CASE("an SVG frame of a trace whose strings hold ESC and non-UTF-8 bytes is
   std::get<trace::Header>(events.front()).generator = "scantrace \x1b]0;owned\x07" + kHostile;
   const trace::Trace t = trace::Trace::from_events(std::move(events), "t.jsonl");
   viz::FrameSequence s(t, {}, {1280, 720}, "dir/\x1b[2J" + kHostile + ".jsonl");
-  std::size_t replaced = 0;
+  bool shown = false;
   for (const std::size_t i : {std::size_t{0}, s.steps().size() - 1}) {
     INFO("step " << i);
     const std::string svg = viz::to_svg(s.frame(i));
     CHECK(svg.find('\x1b') == std::string::npos);
     CHECK(svg.find('\x07') == std::string::npos);
-    for (std::size_t at = 0; (at = svg.find(kBad, at)) != std::string::npos; at += kBad.size())
-      ++replaced;
+    shown |= svg.find("]0;owned") != std::string::npos;
     CHECK(xmllint_accepts(svg, fmt::format("hostile-trace-{}", i)));
   }
-  // The hostile text is there (replaced), not left out: the cards print the generator and name.
-  CHECK(replaced > 20);
+  // The hostile text is there, not left out: the cards print the generator, its control
+  // characters as '?' (a text op holds the ASCII its fonts draw: viz::hershey_ascii).
+  CHECK(shown);
 }
 
 TEST_CASE("every kind of frame operation with hostile text gives valid XML",

@@ -258,7 +258,7 @@ TEST_CASE("a float render that never went through 8 bits gets no truncation note
   CHECK_FALSE(mentions(r.notes, "truncation"));
 }
 
-TEST_CASE("one bright pixel is one differing pixel; values above 1 are a note, not a scale",
+TEST_CASE("one bright pixel is one differing pixel, and values above 1 are a note, not a scale",
           "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage good = render_wrong(s, Shading::gouraud, Mistake::none);

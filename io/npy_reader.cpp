@@ -10,7 +10,6 @@
 #include <utility>
 
 #include "io/input_error.hpp"
-#include "io/json_input.hpp"
 #include "io/memory_budget.hpp"
 
 namespace scantrace {
@@ -271,13 +270,6 @@ NpyImage parse_npy(std::string_view bytes, const std::string& name, std::uint64_
   for (std::size_t k = 0; k < out.values.size(); ++k)
     out.values[k] = npy_value(layout, bytes, k, name);
   return out;
-}
-
-NpyImage read_npy(const std::filesystem::path& file) {
-  const std::string bytes = json_input::read_text_file(file);
-  // The whole file is in memory already; the decoded floats take at most 4 bytes per stored byte.
-  check_memory(4 * static_cast<std::uint64_t>(bytes.size()), "the .npy image", file.string(), "");
-  return parse_npy(bytes, file.string());
 }
 
 }  // namespace scantrace

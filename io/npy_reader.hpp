@@ -55,7 +55,4 @@ float npy_value(const NpyLayout& layout, std::string_view bytes, std::size_t k,
 NpyImage parse_npy(std::string_view bytes, const std::string& name,
                    std::uint64_t max_bytes = std::uint64_t{1} << 32);
 
-// Reads and parses `file`; the declared size is checked against the memory available.
-NpyImage read_npy(const std::filesystem::path& file);
-
 }  // namespace scantrace

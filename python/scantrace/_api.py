@@ -10,6 +10,7 @@ import os
 import numpy as np
 
 from . import _scantrace
+from ._common import cv_module, load_scene_file
 from ._scantrace import InputError, Trace
 
 _WHITE = (1.0, 1.0, 1.0)
@@ -110,7 +111,7 @@ def load_scene(path, *, shading="gouraud"):
     ValueError) naming the file and the element: ``scene.json: faces[812]: vertex index 5012 is
     out of range (4999 vertices)``.
     """
-    return _scantrace.load_scene(os.fspath(path), shading)
+    return load_scene_file(path, shading)
 
 
 def demo_scene():
@@ -186,7 +187,6 @@ def explain(trace_or_vertices, vcolors=None, *, out="triangle.mp4", shading="gou
             raise TypeError("explain: vcolors is missing (3 x 3, one RGB colour per vertex)")
         trace = trace_triangle(trace_or_vertices, vcolors, shading=shading, fill_rule=fill_rule)
         source = "a triangle from Python"
-    from ._grade import _cv_module
-    video = _cv_module("explain (writing a video or PNG frames)")
+    video = cv_module("explain (writing a video or PNG frames)")
     return video.replay(trace, os.fspath(out), frame_size=frame_size, fps=fps, hold=hold,
                         source=source)

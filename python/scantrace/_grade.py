@@ -12,6 +12,7 @@ import os
 import numpy as np
 
 from . import _jupyter, _scantrace
+from ._common import cv_module, load_scene_file
 from ._scantrace import Trace
 
 _COURSE_SIZE = (512, 512)
@@ -22,8 +23,7 @@ def _scene_arrays(scene, shading):
     """The scene as keyword arguments of the C++ functions (vertices, faces, vcolors, depth, size,
     background)."""
     if isinstance(scene, (str, bytes, os.PathLike)):
-        from ._api import load_scene
-        scene = load_scene(scene, shading=shading)
+        scene = load_scene_file(scene, shading)
     if isinstance(scene, dict):
         missing = [k for k in ("vertices", "faces", "vcolors", "depth") if k not in scene]
         if missing:
@@ -213,7 +213,7 @@ def _image_argument(image, canvas):
         if npy:
             pixels, declared = _scantrace.read_npy_image(path, canvas)
             return pixels, "npy", declared
-        return _cv_module("diff of an image file (PNG, JPEG, BMP)").read_image(path, canvas)
+        return cv_module("diff of an image file (PNG, JPEG, BMP)").read_image(path, canvas)
     return image, "npy", None
 
 
@@ -257,17 +257,3 @@ def check(trace):
         # What the load's own checks refuse is a verdict too, as `scantrace check` gives it.
         return CheckResult(_scantrace.check_file(path))
     raise TypeError(f"trace: expected a Trace or a path, got {type(trace).__name__}")
-
-
-def _cv_module(what):
-    """The package's OpenCV part, or an error saying what needs it and how to get it."""
-    try:
-        from . import _scantrace_cv
-    except ImportError as e:
-        raise ModuleNotFoundError(
-            f"{what} needs scantrace's OpenCV module (scantrace._scantrace_cv), which this "
-            "installation does not have: `pip install` leaves it out unless "
-            "SCANTRACE_PYTHON_OPENCV=1 is set (it links OpenCV, Debian's libopencv-dev). "
-            "Arrays and .npy files need no OpenCV.") from e
-    return _scantrace_cv
-

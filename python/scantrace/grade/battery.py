@@ -90,6 +90,16 @@ def _accepted(args, kind):
             else v1]
 
 
+def course_arrays(scene):
+    """The course's dtypes for a loaded scene: integer vertices when they are whole numbers."""
+    vertices = np.asarray(scene["vertices"])
+    if np.all(vertices == np.round(vertices)):
+        vertices = vertices.astype(np.int64)
+    return {"vertices": vertices, "faces": np.asarray(scene["faces"], np.int64),
+            "vcolors": np.asarray(scene["vcolors"], np.float64),
+            "depth": np.asarray(scene["depth"], np.float64).reshape(-1)}
+
+
 def canvas(value, shape):
     """A student's canvas as float RGB in [0, 1] of `shape` (0–255 values rescaled: rescaled()),
     or an error message."""
@@ -146,7 +156,6 @@ class Battery:
         """The scene's arrays with the course's dtypes (int64 vertices and faces, float64
         colours and depths), whatever the scene was loaded or generated with: face by face the
         harness passes vertices[face] and vcolors[face] of these, as the course's render_img."""
-        from .grader import course_arrays   # grader imports battery: imported when used
         arrays, s = course_arrays(scene), self.session
         return {k: s.input(arrays[k]) for k in ("faces", "vertices", "vcolors", "depth")}
 

@@ -83,45 +83,60 @@ bool transform_applies(std::size_t t, int iw, int ih, int W, int H) {
   return t == kIdentity || (iw == W && ih == H);
 }
 
-// Colours in [0, 255]: a float array on that scale, that is most of its painted pixels (those
-// not of the scene's background) above 1. One bright pixel, or a Gouraud colour extrapolated a
-// little beyond a vertex's, is not a scale: the pixels above 1 are then a note saying what they
-// are, and are compared as they are (issue 47: one pixel at 1.01 gave "scaled_255" and 87,925
-// differing pixels). Undone (in `src`) when `undo`.
+}  // namespace
+
+Scale255 find_scale_255(RgbImage& src, Color scene_background, double tol, bool undo) {
+  const Rgb32f background = Rgb32f::from(scene_background);
+  const Rgb32f background_255{255 * background.r, 255 * background.g, 255 * background.b};
+  Scale255 s;
+  std::int64_t painted = 0, as_background = 0, as_background_255 = 0;
+  for (const Rgb32f p : src.pixels()) {
+    const float m = std::max({p.r, p.g, p.b});
+    s.top = std::max(s.top, m);
+    // Black is black on both scales: it says nothing about the scale.
+    if (max_diff(p, background) > tol && m > 0) ++painted;
+    s.above += m > 1.0f;
+    as_background += p == background;
+    as_background_255 += p == background_255;
+  }
+  s.scaled = s.above > 0 &&
+             static_cast<double>(s.above) >
+                 whole_image_tolerance("scaled_share") * static_cast<double>(painted) &&
+             s.top <= 255 + tol;
+  if (!s.scaled || !undo) return s;
+  // The painted pixels only: a fill writing colour * 255 on a canvas of the background (the
+  // grader's blank canvas of ones) leaves that canvas as it was, and divided by 255 it would be
+  // black; a canvas of its own at 255 x the background is divided with the rest.
+  const bool keep_background = as_background > as_background_255;
+  for (int y = 0; y < src.height(); ++y)
+    for (Rgb32f* p = src.row(y); p != src.row(y) + src.width(); ++p)
+      if (!(keep_background && *p == background)) *p = {p->r / 255.0f, p->g / 255.0f, p->b / 255.0f};
+  return s;
+}
+
+namespace {
+
+// Colours in [0, 255] (find_scale_255), named when found and undone in `src` when `undo`. One
+// bright pixel, or a Gouraud colour extrapolated a little beyond a vertex's, is not a scale: the
+// pixels above 1 are then a note saying what they are, and are compared as they are (one pixel
+// at 1.01 would otherwise be 87,925 differing pixels).
 void find_scaled_255(const Scene& scene, const SubmittedImage& in, double tol, bool undo,
                      RgbImage& src, std::vector<GlobalMistake>& found,
                      std::vector<std::string>& notes) {
   if (in.format != "npy" || in.eight_bit) return;
-  const Rgb32f background = Rgb32f::from(scene.background);
-  float top = 0;
-  std::int64_t painted = 0, above = 0;
-  for (const Rgb32f p : src.pixels()) {
-    const float m = std::max({p.r, p.g, p.b});
-    top = std::max(top, m);
-    if (max_diff(p, background) > tol) ++painted;
-    above += m > 1.0f;
-  }
-  if (above == 0) return;
-  const bool scaled = static_cast<double>(above) > whole_image_tolerance("scaled_share") *
-                                                       static_cast<double>(painted) &&
-                     top <= 255 + tol;
-  if (!scaled) {
+  const Scale255 s = find_scale_255(src, scene.background, tol, undo);
+  if (s.above == 0) return;
+  if (!s.scaled) {
     notes.push_back(fmt::format("{} pixel{} above 1.0 (largest {:.4g}): colours extrapolated "
                                 "outside the triangle?",
-                                above, above == 1 ? "" : "s", top));
+                                s.above, s.above == 1 ? "" : "s", s.top));
     return;
   }
   found.push_back({"scaled_255",
                    fmt::format("colours are scaled to [0, 255] (the largest value is {:.4g}), "
                                "not [0, 1]",
-                               top),
+                               s.top),
                    undo});
-  if (!undo) return;
-  for (int y = 0; y < src.height(); ++y)
-    for (int x = 0; x < src.width(); ++x) {
-      Rgb32f& p = src(x, y);
-      p = {p.r / 255.0f, p.g / 255.0f, p.b / 255.0f};
-    }
 }
 
 // The transform that explains the image, kIdentity when none does clearly. Each is scored on the

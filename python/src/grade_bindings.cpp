@@ -191,6 +191,18 @@ py::tuple diff(py::handle vertices, py::handle faces, py::handle vcolors, py::ha
   return py::make_tuple(report.to_json().dump(2), report.to_markdown(), pic);
 }
 
+// An image as an H x W x 3 float64 array.
+py::array_t<double> float64_pixels(const RgbImage& image) {
+  py::array_t<double> pixels({image.height(), image.width(), 3});
+  double* q = pixels.mutable_data();
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x, q += 3) {
+      const Rgb32f c = image(x, y);
+      q[0] = c.r, q[1] = c.g, q[2] = c.b;
+    }
+  return pixels;
+}
+
 // diff's whole-image mistakes (grade/global_mistakes.cpp) on images alone, for the grader
 // (scantrace/grade/whole_image.py): `reference` H×W×3, `faces` H×W true where the reference
 // shows a face, the scene's `background`. One implementation and one set of thresholds (the
@@ -235,14 +247,23 @@ py::tuple whole_image_mistakes(py::handle image, py::handle reference, py::handl
     d["kind"] = g.kind, d["text"] = g.text, d["undone"] = g.undone;
     mistakes.append(d);
   }
-  py::array_t<double> pixels({H, W, 3});
-  double* q = pixels.mutable_data();
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x, q += 3) {
-      const Rgb32f c = out(x, y);
-      q[0] = c.r, q[1] = c.g, q[2] = c.b;
-    }
-  return py::make_tuple(mistakes, pixels, py::cast(notes));
+  return py::make_tuple(mistakes, float64_pixels(out), py::cast(notes));
+}
+
+// The 0–255 scale of whole_image_mistakes alone (grade::find_scale_255), for the grader's canvases
+// of any size (probes included), whose white is the grader's blank canvas: returns (the image with
+// its painted pixels divided by 255 when scaled, float64; whether it was scaled; the largest
+// value).
+py::tuple scale_255(py::handle image, py::handle background, py::handle tolerance) {
+  grade::SubmittedImage in = submitted_array(image, "npy");
+  const Color bg = color_argument(background, "background");
+  const double tol = tolerance.cast<double>();
+  grade::Scale255 s;
+  {
+    py::gil_scoped_release free;
+    s = grade::find_scale_255(in.pixels, bg, tol, true);
+  }
+  return py::make_tuple(float64_pixels(in.pixels), s.scaled, s.top);
 }
 
 py::dict check(const PyTrace& t, const std::string& name) {
@@ -295,6 +316,8 @@ void bind_grade(py::module_& m) {
   m.def("whole_image_mistakes", &whole_image_mistakes, py::arg("image"), py::arg("reference"),
         py::arg("faces"), py::kw_only(), py::arg("background"), py::arg("tolerance"),
         py::arg("undo"));
+  m.def("scale_255", &scale_255, py::arg("image"), py::kw_only(), py::arg("background"),
+        py::arg("tolerance"));
   m.def("check", &check, py::arg("trace"), py::arg("name"));
   m.def("check_file", &check_file, py::arg("path"));
   py::list categories;

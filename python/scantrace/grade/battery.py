@@ -11,7 +11,7 @@ import numpy as np
 
 import scantrace
 
-from . import diagnose, fill_models, hidden, scoring, untrusted
+from . import diagnose, fill_models, hidden, scoring, untrusted, whole_image
 from .probes import (COLOURS, GOURAUD, PAIR_REGIONS, PAIRS, PAIRS_CORNER, PROBES,
                      SHARED_EDGE_FACES, SHARED_EDGE_SIZE)
 
@@ -101,28 +101,16 @@ def course_arrays(scene):
 
 
 def canvas(value, shape):
-    """A student's canvas as float RGB in [0, 1] of `shape` (0–255 values rescaled: rescaled()),
-    or an error message."""
+    """A student's canvas as float RGB in [0, 1] of `shape`, and the largest value when it came
+    on a 0–255 scale (its painted pixels then divided by 255: whole_image.scale_255, diff's
+    rule); or (None, an error message)."""
     if value.ndim != 3 or value.shape[2] != 3:
         return None, f"returned an array of shape {value.shape}, expected {shape}"
     if value.shape != tuple(shape) and value.shape[:2] != tuple(shape)[1::-1]:
         return None, f"returned an array of shape {value.shape}, expected {shape}"
     if not np.isfinite(value).all():
         return None, "returned NaN or infinite values"
-    return rescaled(value), ""
-
-
-def rescaled(value):
-    """0–255 values brought to [0, 1]: the painted pixels only. A fill writing `colour * 255`
-    on the grader's blank canvas of ones leaves that canvas's white at exactly 1.0, which must
-    stay white (divided by 255 it would be black); a canvas of its own of 255s is divided."""
-    if value.max() <= 1.5:
-        return value
-    white = (value == 1.0).all(axis=2)
-    out = value / 255.0
-    if white.sum() > (value == 255.0).all(axis=2).sum():
-        out[white] = 1.0
-    return out
+    return whole_image.scale_255(value)
 
 
 class Battery:
@@ -218,10 +206,12 @@ class Battery:
     def _canvas(self, value, shape, where):
         """canvas(), remembering where a canvas came on a 0–255 scale: it is rescaled to grade
         the rest, and the scale is named once (scaled_255), with the tests that showed it."""
-        img, error = canvas(value, shape)
-        if img is not None and value.max() > 1.5:
-            self.scaled.append((where, float(value.max())))
-        return img, error
+        img, scale = canvas(value, shape)
+        if img is None:
+            return None, scale
+        if scale is not None:
+            self.scaled.append((where, scale))
+        return img, ""
 
     def _scaled_255(self):
         if not self.scaled:
@@ -254,6 +244,7 @@ class Battery:
                                  shading, f"Hidden scene {k + 1}: {_SHADING[shading]} "
                                  "(render_img)", "hidden_scene", painter=True)
                 self._references.pop((f"hidden{k + 1}", shading), None)
+            self._drop_scene(f"hidden{k + 1}")
         for shading in ("f", "g") if self.scene is not None else ():
             if "course_scene" in self._course_tests():
                 self._scene_test(f"course_render_{shading}", ("course", self.scene), shading,
@@ -265,6 +256,7 @@ class Battery:
                                  f"({'f' if shading == 'f' else 'g'}_shading in the painter's "
                                  "order)", "course_faces", painter=False)
             self._references.pop(("course", shading), None)
+        self._drop_scene("course")
         self.causes += self._scaled_255()
         # A verdict on a probe beyond the assignment (a loop never reaching a float end) is in
         # that probe's line, not a cause: the course never passes such vertices.
@@ -555,6 +547,7 @@ class Battery:
         r = self.results[call_id]
         if r.status != "ok":
             return self._add(name, key, 0.0, [self._failed_call(r)], verdict=r.status)
+        scales = len(self.scaled)
         img, error = self._canvas(r.value, (512, 512, 3), name)
         if img is None:
             return self._add(name, key, 0.0, [f"`{func}` {error}."])
@@ -567,8 +560,8 @@ class Battery:
         self._add_causes(causes, f"{name}: ")
         credit, n_wrong, counted = scoring.image_credit(fixed, refs["reference"],
                                                         refs["uncovered"])
-        undone = [c.id for c in causes if c.id in ("transposed", "bgr", "background")]
-        if r.value.max() > 1.5:
+        undone = [c.id for c in causes if c.id in diagnose.WHOLE_IMAGE_MISTAKES]
+        if len(self.scaled) > scales:
             undone.append("the 0–255 range of the painted pixels")
         self._add(name, key, credit,
                   [f"Credit {credit:.1%}: {counted - n_wrong:,} of the {counted:,} pixels that "
@@ -590,8 +583,17 @@ class Battery:
             refs["uncovered"] = self._references[(label, "uncovered")]
         if painter and "alternatives" not in refs:
             refs["alternatives"] = _painter_alternatives(scene, shading)
-            refs["faces"] = _painter_faces(scene)
+            # Which face each pixel shows depends on the geometry and depths alone, not on the
+            # shading: found once per scene too.
+            if (label, "faces") not in self._references:
+                self._references[(label, "faces")] = _painter_faces(scene)
+            refs["faces"] = self._references[(label, "faces")]
         return refs
+
+    def _drop_scene(self, label):
+        """Forgets a scene's per-scene images once both its shadings are graded."""
+        for what in ("uncovered", "faces"):
+            self._references.pop((label, what), None)
 
     def _add_causes(self, causes, prefix):
         for c in causes:
@@ -636,6 +638,16 @@ def expected_mask(probe):
     mask = fill_models.correct(probe.array, probe.size)
     mask.flags.writeable = False
     return mask
+
+
+def warm_up():
+    """Computes what is the same for every submission (each probe's exact fill, the pairs
+    probe's references) in this process: a class's parent calls it before forking its workers,
+    which then share it instead of computing it once each."""
+    for probe in PROBES + GOURAUD:
+        expected_mask(probe)
+        fill_models.correct(probe.array, probe.size)
+    _pairs_references()
 
 
 @functools.lru_cache(maxsize=1)

@@ -10,11 +10,13 @@ import multiprocessing
 import multiprocessing.connection
 import os
 import pathlib
+import resource
 import signal
+import statistics
 import sys
 import traceback
 
-from . import report, untrusted
+from . import battery, report, untrusted
 from .causes import CATALOGUE
 from .grader import Graded, grade
 from .report import _write_atomic
@@ -97,6 +99,10 @@ def _worker(path, out_dir, options, conn):
     except Exception as e:  # a bug of the grader: the class report still gets written
         traceback.print_exc()
         row = not_graded(pathlib.Path(out_dir).name, out_dir, f"grader error: {e}"[:2000])
+    # The grader's own CPU for this submission: this process alone (a forked process starts at
+    # zero); the student's code runs in the sandbox's children and is not counted.
+    own = resource.getrusage(resource.RUSAGE_SELF)
+    row["grader_cpu"] = own.ru_utime + own.ru_stime
     conn.send_bytes(json.dumps(row).encode())   # JSON, not a pickle: read by the parent
     conn.close()
 
@@ -178,6 +184,7 @@ def run(paths, out, options, jobs, progress=True):
     names = _names(paths)
     rows = {}
     bar = _Progress(len(paths), progress)
+    battery.warm_up()   # once here, shared by the forked workers
     try:
         _grade_all([(p, n, out / n) for p, n in zip(paths, names)], options, jobs, bar, rows)
     finally:
@@ -189,7 +196,17 @@ def run(paths, out, options, jobs, progress=True):
     if progress:
         print(f"{len(ordered)} submissions graded: {out / 'class.csv'}, {out / 'class.html'}",
               file=sys.stderr)
+        print(own_time_line(ordered), file=sys.stderr)
     return 1 if any(r["error"] for r in ordered) else 0
+
+
+def own_time_line(rows):
+    """The grader's own CPU per submission (its workers', the students' code excluded)."""
+    cpu = [r["grader_cpu"] for r in rows if isinstance(r.get("grader_cpu"), (int, float))]
+    if not cpu:
+        return "the grader's own CPU per submission: not measured"
+    return (f"the grader's own CPU per submission (the students' code excluded): median "
+            f"{statistics.median(cpu):.2f} s, largest {max(cpu):.2f} s, over {len(cpu)}")
 
 
 def class_csv(rows):

@@ -8,8 +8,8 @@ import math
 
 import numpy as np
 
-from . import fill_models
-from .causes import CONFIDENCE, WHOLE_IMAGE, Cause  # noqa: F401 - Cause is used by battery too
+from . import fill_models, whole_image
+from .causes import CONFIDENCE, Cause  # noqa: F401 - Cause is used by battery too
 
 WHITE_TOLERANCE = 1e-6
 
@@ -291,81 +291,30 @@ def image_mismatch(a, b):
     return np.count_nonzero(wrong) / wrong.size
 
 
-_UNDO = {"transposed": lambda s: s.transpose(1, 0, 2), "bgr": lambda s: s[..., ::-1]}
-
-
-def _background(student, uncovered):
-    """(colour, its pixels, their share of the uncovered ones) when the pixels no face covers
-    are one colour other than white, else None."""
-    if not uncovered.any():
-        return None
-    bg = np.median(student[uncovered], axis=0)
-    if np.abs(bg - 1.0).max() <= 2 / 255:
-        return None
-    same = uncovered & (channel_error(student, bg) <= 1.5 / 255)
-    share = same.sum() / uncovered.sum()
-    # The catalogue's share, as diff's (grade/global_mistakes.cpp).
-    return (bg, same, share) if share >= WHOLE_IMAGE["background_share"] else None
-
-
-def _undone(student, reference, uncovered, mistakes):
-    """(image, mismatch, background) with `mistakes` undone, or None when one cannot be."""
-    fixed = student
-    for k in ("transposed", "bgr"):
-        if k in mistakes:
-            fixed = np.ascontiguousarray(_UNDO[k](fixed))
-    bg = None
-    if "background" in mistakes:
-        bg = _background(fixed, uncovered)
-        if bg is None:
-            return None
-        fixed = fixed.copy()
-        fixed[bg[1]] = 1.0
-    return fixed, image_mismatch(fixed, reference), bg
+# The whole-image mistakes whole_image.py finds and undoes (the 0–255 scale is undone earlier,
+# on every canvas: battery.canvas).
+WHOLE_IMAGE_MISTAKES = ("transposed", "flipped_vertically", "flipped_horizontally", "bgr",
+                        "background")
 
 
 def undo_global(student, reference, uncovered):
-    """The whole-image mistakes (transposed, BGR, background) undone *together*: every
-    combination is tried (one alone may not halve the mismatch while another hides it: a
-    transposed image on a 0.99 background differs almost everywhere either way), the one
-    leaving the fewest differing pixels kept, and each of its mistakes named when undoing it
-    halves what differs. Returns (image, causes)."""
-    kinds = [k for k in ("transposed", "bgr", "background")
-             if k != "transposed" or student.shape[0] == student.shape[1]]
-    tried = {}
-    for n in range(len(kinds) + 1):
-        for combo in itertools.combinations(kinds, n):
-            tried[frozenset(combo)] = _undone(student, reference, uncovered, combo)
-    best = min((k for k in tried if tried[k] is not None),
-               key=lambda k: (tried[k][1], len(k)))
-    fixed, m, bg = tried[best]
-    causes = []
-    def mismatch(combo):
-        # Without the transpose the background may not be found: then it is not undone either.
-        return tried[combo][1] if tried[combo] is not None else mismatch(combo - {"background"})
-
-    for k in (k for k in kinds if k in best):
-        without = mismatch(best - {k})
-        # Named when undoing it cuts what differs by the catalogue's gain, as diff names it.
-        if without <= WHOLE_IMAGE["transform_gain"] * m or without == 0:
-            continue
-        if k == "background":
-            colour, same, share = bg
-            causes.append(Cause("background", share,
-                                f"{share:.0%} of the pixels no face covers are "
-                                f"{_describe_colour(colour)}", detail=_describe_colour(colour),
-                                picture_pixels=image_picture(student, reference, same),
-                                legend=IMAGE_LEGEND))
-            continue
-        differ = channel_error(student, reference) > 1.5 / 255
-        causes.append(Cause(k, 1 - m / without,
-                            f"{without:.1%} of the pixels differ; {m:.1%} once it is undone"
-                            + (" too" if len(best) > 1 else ""),
-                            picture_pixels=image_picture(student, reference, differ),
-                            legend=IMAGE_LEGEND))
-    named = {c.id for c in causes}
-    if best - named and tried.get(frozenset(named)) is not None:
-        fixed = tried[frozenset(named)][0]   # an undo that did not earn its name is not kept
+    """The whole-image mistakes undone *together*, by diff's C++ (whole_image.py): the transform
+    (transposed, flipped, BGR) is chosen on the pixels the reference's faces cover, where a wrong
+    background cannot weigh, and the background on the pixels no face covers, once the transform
+    is undone; each is undone only when named. Returns (image, causes), the image `student`
+    itself when nothing was named."""
+    fixed, causes, _ = whole_image.whole_image_mistakes(student, reference, uncovered)
+    if not causes:
+        return student, []
+    same_shape = student.shape == reference.shape
+    for c in causes:
+        if c.id == "background":
+            # The pixels no face covers that the undo changed: the background as painted.
+            shown = uncovered & (channel_error(fixed, student) > 0) if same_shape else uncovered
+        else:
+            shown = channel_error(student, reference) > 1.5 / 255 if same_shape else None
+        if shown is not None:
+            c.picture_pixels, c.legend = image_picture(student, reference, shown), IMAGE_LEGEND
     return fixed, causes
 
 

@@ -42,8 +42,8 @@ bool inside(const RgbImage& m, int x, int y) {
   return x >= 0 && y >= 0 && x < m.width() && y < m.height();
 }
 
-// The transforms, the identity first and the transposition second (transform_applies() knows
-// them by position).
+// The transforms, the identity first and the transposition second (transform_applies() and
+// find_transform() know them by position).
 const std::vector<Transform>& transforms() {
   static const std::vector<Transform> all{
       {"identity", "",
@@ -69,17 +69,28 @@ const std::vector<Transform>& transforms() {
          out = {p.b, p.g, p.r};
          return true;
        }},
+      // Both at once (img[x][y] and a BGR canvas): neither alone makes the faces match, so
+      // each must be tried with the other. Named as the two mistakes it is.
+      {"transposed+bgr", "",
+       [](const RgbImage& m, int x, int y, Rgb32f& out) {
+         if (!inside(m, y, x)) return false;
+         const Rgb32f p = m(y, x);
+         out = {p.b, p.g, p.r};
+         return true;
+       }},
   };
   return all;
 }
 
-constexpr std::size_t kIdentity = 0, kTransposed = 1;
+constexpr std::size_t kIdentity = 0, kTransposed = 1, kBgr = 4, kTransposedBgr = 5;
+
+bool transposes(std::size_t t) { return t == kTransposed || t == kTransposedBgr; }
 
 // Whether transform t can explain an image of iw x ih on a canvas of W x H: the transposition
 // only an image of the swapped size, the others only one of the canvas's size (the identity
 // always: it is the image as it is, cropped or padded).
 bool transform_applies(std::size_t t, int iw, int ih, int W, int H) {
-  if (t == kTransposed) return iw == H && ih == W;
+  if (transposes(t)) return iw == H && ih == W;
   return t == kIdentity || (iw == W && ih == H);
 }
 
@@ -169,14 +180,17 @@ std::size_t find_transform(const Scene& scene, const RgbImage& reference, const 
   if (best != kIdentity && (d(score[best]) < gain * d(score[kIdentity]) ||
                             d(score[best]) < share * d(face_pixels)))
     best = kIdentity;
-  if (best != kIdentity) {
-    found.push_back({transforms()[best].kind,
-                     fmt::format("{} ({} of {} face pixels match after undoing it, {} before)",
-                                 transforms()[best].text, score[best], face_pixels,
-                                 score[kIdentity]),
+  const std::vector<std::size_t> named =
+      best == kTransposedBgr ? std::vector<std::size_t>{kTransposed, kBgr}
+      : best != kIdentity    ? std::vector<std::size_t>{best}
+                             : std::vector<std::size_t>{};
+  for (const std::size_t t : named)
+    found.push_back({transforms()[t].kind,
+                     fmt::format("{} ({} of {} face pixels match after undoing it{}, {} before)",
+                                 transforms()[t].text, score[best], face_pixels,
+                                 named.size() > 1 ? " with the other" : "", score[kIdentity]),
                      undo});
-  }
-  if ((iw != W || ih != H) && best != kTransposed) {
+  if ((iw != W || ih != H) && !transposes(best)) {
     const bool transposed_size = iw == H && ih == W && iw != ih;
     found.push_back({"canvas_size",
                      fmt::format("the image is {}x{}, the scene's canvas is {}x{}{}", iw, ih, W, H,

@@ -248,7 +248,7 @@ void find_background(const Scene& scene, const FaceIdImage& ids,
   const Rgb32f seen_px = Rgb32f::from(seen);
   if (max_diff(seen_px, expected) <= tol + 0.5 / 255) return;
   // Printed: the mean of the values in the mode's 8-bit bin, not the bin, so that a float
-  // image's 0.99 is not reported as 252/255 = 0.988 (issue 36).
+  // image's 0.99 is not reported as 252/255 = 0.988.
   double sum[3] = {0, 0, 0};
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)

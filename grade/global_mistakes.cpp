@@ -42,6 +42,14 @@ bool inside(const RgbImage& m, int x, int y) {
   return x >= 0 && y >= 0 && x < m.width() && y < m.height();
 }
 
+// The image's pixel (x, y) with red and blue swapped (false when it has none there).
+bool swapped(const RgbImage& m, int x, int y, Rgb32f& out) {
+  if (!inside(m, x, y)) return false;
+  const Rgb32f p = m(x, y);
+  out = {p.b, p.g, p.r};
+  return true;
+}
+
 // The transforms, the identity first and the transposition second (transform_applies() and
 // find_transform() know them by position).
 const std::vector<Transform>& transforms() {
@@ -63,21 +71,11 @@ const std::vector<Transform>& transforms() {
          return inside(m, m.width() - 1 - x, y) ? (out = m(m.width() - 1 - x, y), true) : false;
        }},
       {"bgr", "red and blue are swapped (BGR instead of RGB)",
-       [](const RgbImage& m, int x, int y, Rgb32f& out) {
-         if (!inside(m, x, y)) return false;
-         const Rgb32f p = m(x, y);
-         out = {p.b, p.g, p.r};
-         return true;
-       }},
+       [](const RgbImage& m, int x, int y, Rgb32f& out) { return swapped(m, x, y, out); }},
       // Both at once (img[x][y] and a BGR canvas): neither alone makes the faces match, so
       // each must be tried with the other. Named as the two mistakes it is.
       {"transposed+bgr", "",
-       [](const RgbImage& m, int x, int y, Rgb32f& out) {
-         if (!inside(m, y, x)) return false;
-         const Rgb32f p = m(y, x);
-         out = {p.b, p.g, p.r};
-         return true;
-       }},
+       [](const RgbImage& m, int x, int y, Rgb32f& out) { return swapped(m, y, x, out); }},
   };
   return all;
 }

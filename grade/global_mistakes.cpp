@@ -150,8 +150,8 @@ void find_scaled_255(const Scene& scene, const SubmittedImage& in, double tol, b
 
 // The transform that explains the image, kIdentity when none does clearly. Each is scored on the
 // pixels where the reference shows a face (a wrong background would otherwise weigh on all of
-// them alike); one must explain clearly more than the image as it is, and most of the faces'
-// pixels. Reports it, and a canvas of the wrong size that it does not explain.
+// them alike); one must explain clearly more than the image as it is, and a good share of the
+// faces' pixels. Reports it, and a canvas of the wrong size that it does not explain.
 std::size_t find_transform(const Scene& scene, const RgbImage& reference, const FaceIdImage& ids,
                            const RgbImage& src, double tol, bool undo,
                            std::vector<GlobalMistake>& found) {

@@ -18,7 +18,8 @@ def _scene_8x8():
     """An 8 x 8 reference: white, with an L of 7 pixels of FACE (column 1, rows 1..3, and row 3,
     columns 1..5), and the pixels no face covers. Transposed, it shares 2 pixels with itself,
     (1, 1) and (3, 3); flipped vertically or horizontally, none; with red and blue swapped, none:
-    each transform at least doubles the pixels that match, and makes most of them match."""
+    each transform at least doubles the pixels that match, and makes most of them match (more than
+    the catalogue's quarter)."""
     ref = np.ones((8, 8, 3))
     ref[1:4, 1] = FACE
     ref[3, 1:6] = FACE
@@ -147,3 +148,22 @@ def test_diff_and_the_grader_name_the_same_mistakes_on_the_demo_scene():
     fixed, causes = diagnose.undo_global(img, reference, uncovered)
     assert from_diff == {c.id for c in causes} == {"transposed", "background"}
     assert (diagnose.channel_error(fixed, reference) > 1.5 / 255).sum() == 0
+
+
+def test_a_transposed_image_with_other_mistakes_besides_is_still_undone():
+    """16 x 16, an L of 21 pixels (column 1, rows 1..10; row 10, columns 2..12), 12 of them
+    painted a wrong colour (column 1, rows 2..10; row 10, columns 10..12), then transposed: read
+    as it is, 1 face pixel matches ((1, 1)); transposed back, the 9 right ones do — 4.5 times as
+    many, but 9 of 21, under half. A quarter is enough to undo it, so the 9 count as right."""
+    ref = np.ones((16, 16, 3))
+    ref[1:11, 1] = FACE
+    ref[10, 2:13] = FACE
+    uncovered = (ref == 1.0).all(axis=2)
+    wrong = ref.copy()
+    wrong[2:11, 1] = (0.9, 0.1, 0.1)
+    wrong[10, 10:13] = (0.9, 0.1, 0.1)
+    fixed, causes = diagnose.undo_global(np.ascontiguousarray(wrong.transpose(1, 0, 2)), ref,
+                                         uncovered)
+    assert [c.id for c in causes] == ["transposed"]
+    assert "(9 of 21 face pixels match after undoing it, 1 before)" in causes[0].evidence
+    assert np.abs(fixed - wrong).max() < 1e-6

@@ -24,26 +24,54 @@ bool inside_polygon(const std::vector<Vec2>& p, double x, double y) {
   return in;
 }
 
-// How much an inset at `r` would hide: the pixels filled so far weigh most (they are what the
-// frames so far have explained), the rest of the polygon less (its pixels are still to come).
-// Markers and labels it may not hide at all; the placement keeps them free.
-double cost(const Rect& r, const ViewGeometry& main, const CanvasState& state,
-            const std::vector<Vec2>& polygon) {
-  double c = 0;
-  constexpr int kSamples = 12;
-  for (int i = 0; i < kSamples; ++i)
-    for (int j = 0; j < kSamples; ++j) {
-      const int u = r.x + (2 * i + 1) * r.width / (2 * kSamples);
-      const int v = r.y + (2 * j + 1) * r.height / (2 * kSamples);
-      const std::int64_t x = main.pixel_x(u), y = main.pixel_y(v);
-      if (state.written(x, y))
-        c += 3;
-      else if (!polygon.empty() &&
-               inside_polygon(polygon, static_cast<double>(x), static_cast<double>(y)))
-        c += 1;
-    }
-  return c;
-}
+// What an inset would hide, sampled once a frame on a 48 x 48 grid over the view: the pixels
+// filled so far weigh most (they are what the frames so far have explained), the rest of the
+// polygon less (its pixels are still to come). Markers and labels it may not hide at all; the
+// placement keeps them free. Sums over the grid's cells (a summed-area table) make each of the
+// few hundred places a frame weighs four look-ups.
+class HiddenCost {
+ public:
+  HiddenCost(const ViewGeometry& main, const CanvasState& state, const std::vector<Vec2>& polygon)
+      : view_(main.view()), sum_((kCells + 1) * (kCells + 1), 0) {
+    for (int j = 0; j < kCells; ++j)
+      for (int i = 0; i < kCells; ++i) {
+        const std::int64_t x = main.pixel_x(centre(view_.x, view_.width, i));
+        const std::int64_t y = main.pixel_y(centre(view_.y, view_.height, j));
+        double w = 0;
+        if (state.written(x, y))
+          w = 3;
+        else if (!polygon.empty() &&
+                 inside_polygon(polygon, static_cast<double>(x), static_cast<double>(y)))
+          w = 1;
+        at(i + 1, j + 1) = w + at(i, j + 1) + at(i + 1, j) - at(i, j);
+      }
+  }
+
+  // The mean weight of the grid cells whose centres lie in `r`, as 144 samples of it would sum.
+  double operator()(const Rect& r) const {
+    const int i0 = first(view_.x, view_.width, r.x), i1 = first(view_.x, view_.width, r.x + r.width);
+    const int j0 = first(view_.y, view_.height, r.y);
+    const int j1 = first(view_.y, view_.height, r.y + r.height);
+    const int n = (i1 - i0) * (j1 - j0);
+    if (n <= 0) return 0;
+    return 144 * (at(i1, j1) - at(i0, j1) - at(i1, j0) + at(i0, j0)) / n;
+  }
+
+ private:
+  static constexpr int kCells = 48;
+  static int centre(int from, int length, int i) { return from + (2 * i + 1) * length / (2 * kCells); }
+  // The first cell whose centre is at or right of (below) frame coordinate `u`.
+  static int first(int from, int length, int u) {
+    int i = 0;
+    while (i < kCells && centre(from, length, i) < u) ++i;
+    return i;
+  }
+  double& at(int i, int j) { return sum_[j * (kCells + 1) + i]; }
+  double at(int i, int j) const { return sum_[j * (kCells + 1) + i]; }
+
+  Rect view_;
+  std::vector<double> sum_;
+};
 
 // The point of `r` nearest `p`: where a leader line from `p` meets the inset.
 Point2d nearest(const Rect& r, Point2d p) {
@@ -143,8 +171,7 @@ struct Candidate {
 // The rest of the scanline is better left in sight too: it costs as much as a sixth of the inset
 // over filled pixels.
 std::vector<Candidate> candidates(const Rect& v, int margin, Size size, const Rect& span,
-                                  const ViewGeometry& main, const CanvasState& state,
-                                  const std::vector<Vec2>& polygon, const Placement& placed) {
+                                  const HiddenCost& cost, const Placement& placed) {
   std::vector<Candidate> out;
   const int x0 = v.x + margin, x1 = v.x + v.width - margin - size.width;
   const int y0 = v.y + margin, y1 = v.y + v.height - margin - size.height;
@@ -155,8 +182,10 @@ std::vector<Candidate> candidates(const Rect& v, int margin, Size size, const Re
       const Rect r(Point{x0 + (x1 - x0) * i / kSteps, y0 + (y1 - y0) * j / kSteps}, size);
       if (!placed.free(r) || !(r & span).empty()) continue;
       const bool on_row = r.y < span.y + span.height && span.y < r.y + r.height;
-      out.push_back({r, cost(r, main, state, polygon) + (on_row ? 72 : 0)});
+      out.push_back({r, cost(r) + (on_row ? 72 : 0)});
     }
+  std::stable_sort(out.begin(), out.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
   return out;
 }
 
@@ -175,7 +204,8 @@ struct Choice {
 };
 
 // The best place (or pair of places) among `c`: least hidden, leader lines short, not crossing,
-// and the left end's inset left of the right end's, which a student follows by eye.
+// and the left end's inset left of the right end's, which a student follows by eye. `c` is sorted
+// by cost: a pair is not weighed once its costs alone reach the best total so far.
 void choose(const std::vector<Candidate>& c, const InsetPlan& plan, const ViewGeometry& main,
             std::int64_t y, double penalty, Choice& best) {
   const Rect& v = main.view();
@@ -186,12 +216,13 @@ void choose(const std::vector<Candidate>& c, const InsetPlan& plan, const ViewGe
     return 8 * std::hypot(q.x - at[k].x, q.y - at[k].y) / (v.width + v.height);
   };
   for (std::size_t i = 0; i < c.size(); ++i) {
+    if (penalty + c[i].cost + (plan.two ? c.front().cost : 0) >= best.total) break;
     const double one = penalty + c[i].cost + reach(c[i].r, 0);
     if (!plan.two) {
       if (one < best.total) best = {one, {c[i].r, {}}, plan};
       continue;
     }
-    for (std::size_t j = 0; j < c.size(); ++j) {
+    for (std::size_t j = 0; j < c.size() && one + c[j].cost < best.total; ++j) {
       const Rect &a = c[i].r, &d = c[j].r;
       if (i == j || !(a & d).empty()) continue;
       double total = one + c[j].cost + reach(d, 1);
@@ -239,6 +270,7 @@ std::vector<PlacedBox> draw_zoom_insets(FrameView& frame, const ViewGeometry& ma
   const double right = on_canvas(row.active_points.back().x);
   const double cell = type.px(kInsetCell);
   const Rect span = span_box(main, left, right, row.y, type.px(4));
+  const HiddenCost cost(main, state, polygon);
 
   // Every size, largest first: a smaller inset over empty canvas is worth more than a large one
   // over the pixels the frames have filled (a sample of filled pixel costs 3, the penalties of
@@ -250,8 +282,8 @@ std::vector<PlacedBox> draw_zoom_insets(FrameView& frame, const ViewGeometry& ma
                     static_cast<int>(v.height * 0.31 * shrinks[k]));
     const InsetPlan plan =
         plan_for(left, right, row.active_points.size() >= 2, size.width / (2 * cell));
-    choose(candidates(v, type.px(10), size, span, main, state, polygon, placed), plan, main, row.y,
-           penalties[k], best);
+    choose(candidates(v, type.px(10), size, span, cost, placed), plan, main, row.y, penalties[k],
+           best);
   }
   if (!std::isfinite(best.total)) return {};
 

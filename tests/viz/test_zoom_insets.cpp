@@ -28,26 +28,16 @@ using namespace scantrace;
 
 namespace {
 
-struct Case {
-  std::string name;
-  trace::Trace trace;
-};
+trace::Trace rgb_triangle(std::array<Vec2, 3> v, int width, int height) {
+  trace::TriangleInput t{v, {Color{1, 0, 0}, Color{0, 1, 0}, Color{0, 0, 1}}, width, height};
+  return test::record(t);
+}
 
-std::vector<Case> cases() {
-  std::vector<Case> out;
-  auto triangle = [&](std::string name, std::array<Vec2, 3> v, int w, int h) {
-    trace::TriangleInput t;
-    t.vertices = v;
-    t.colors = {Color{1, 0, 0}, Color{0, 1, 0}, Color{0, 0, 1}};
-    t.width = w;
-    t.height = h;
-    out.push_back({std::move(name), test::record(t)});
-  };
-  // The demo's and the explorer's default triangle.
-  triangle("course triangle", {Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}}, 512, 512);
-  // Wide and flat, its long edge the other way: the empty corners are top left and bottom right.
-  triangle("wide", {Vec2{10, 300}, Vec2{400, 20}, Vec2{470, 120}}, 480, 320);
-  return out;
+// The demo's and the explorer's default triangle; and a wide, flat one whose long edge goes the
+// other way (its empty corners top left and bottom right).
+std::vector<std::pair<std::string, trace::Trace>> traces() {
+  return {{"course triangle", rgb_triangle({Vec2{20, 20}, Vec2{250, 80}, Vec2{300, 400}}, 512, 512)},
+          {"wide", rgb_triangle({Vec2{10, 300}, Vec2{400, 20}, Vec2{470, 120}}, 480, 320)}};
 }
 
 // The canvas columns `lo..hi` (inclusive) an inset shows, found from one of its markers.
@@ -121,25 +111,25 @@ cv::Rect span_box(const viz::ViewGeometry& g, const trace::Scanline& row) {
 
 TEST_CASE("zoom insets avoid their span and the filled pixels and show different places",
           "[viz][zoom]") {
-  for (const Case& c : cases())
+  for (const auto& [name, trace] : traces())
     for (const cv::Size size : {cv::Size(640, 360), cv::Size(1280, 720), cv::Size(1920, 1080)}) {
       const viz::Typography type(size);
       const double cell = type.px(18);
-      viz::Replayer r(c.trace, {}, size, "test");
+      viz::Replayer r(trace, {}, size, "test");
       int with_insets = 0, pairs = 0;
       double worst = 0;
       for (std::size_t i = 0; i < r.steps().size(); ++i) {
         const viz::Step& step = r.steps()[i];
         if (step.kind != viz::StepKind::scanlines) continue;
-        const trace::Scanline* row = viz::find_scanline(c.trace, step.triangle, step.last_row);
+        const trace::Scanline* row = viz::find_scanline(trace, step.triangle, step.last_row);
         if (!row || row->active_points.empty()) continue;
-        INFO(c.name << " at " << size.width << "x" << size.height << ", step " << i + 1
+        INFO(name << " at " << size.width << "x" << size.height << ", step " << i + 1
                     << ", row " << row->y);
         const viz::Frame frame = r.display_list(i);
         const viz::ViewGeometry g = *r.geometry(i);
         const std::vector<Inset> insets = insets_of(frame);
         with_insets += insets.empty() ? 0 : 1;
-        const auto pixels = filled(c.trace, step.last_row);
+        const auto pixels = filled(trace, step.last_row);
         std::vector<Columns> shown;
         for (const Inset& inset : insets) {
           INFO("inset " << inset.layer << " at " << inset.box);
@@ -155,7 +145,7 @@ TEST_CASE("zoom insets avoid their span and the filled pixels and show different
           CHECK((shown[0].hi < shown[1].lo || shown[1].hi < shown[0].lo));
         }
       }
-      INFO(c.name << " at " << size.width << "x" << size.height);
+      INFO(name << " at " << size.width << "x" << size.height);
       // Every scanline step of these triangles has room for its insets.
       CHECK(with_insets > 20);
       CHECK(pairs > 10);

@@ -254,6 +254,18 @@ void leader(FrameView& frame, const ViewGeometry& main, const Typography& type,
   }
 }
 
+// Inset k's title, in full where the inset is wide enough for it, else shortened; empty when
+// not even that fits (the size is then not taken).
+std::string title_of(const InsetPlan& plan, int k, int width, const Typography& type) {
+  const char* full[2] = {plan.two ? "zoom: left end of the span" : "zoom: the span",
+                         "zoom: right end of the span"};
+  const char* brief[2] = {plan.two ? "zoom: left end" : "zoom: span", "zoom: right end"};
+  for (const char* title : {full[k], brief[k]})
+    if (type.boxed_area(title, {0, 0}, TextStyle::small).width + 2 * type.px(6) <= width)
+      return title;
+  return {};
+}
+
 }  // namespace
 
 std::vector<PlacedBox> draw_zoom_insets(FrameView& frame, const ViewGeometry& main,
@@ -282,6 +294,7 @@ std::vector<PlacedBox> draw_zoom_insets(FrameView& frame, const ViewGeometry& ma
                     static_cast<int>(v.height * 0.31 * shrinks[k]));
     const InsetPlan plan =
         plan_for(left, right, row.active_points.size() >= 2, size.width / (2 * cell));
+    if (title_of(plan, plan.two ? 1 : 0, size.width, type).empty()) continue;
     choose(candidates(v, type.px(10), size, span, cost, placed), plan, main, row.y, penalties[k],
            best);
   }
@@ -290,8 +303,8 @@ std::vector<PlacedBox> draw_zoom_insets(FrameView& frame, const ViewGeometry& ma
   const InsetPlan& plan = best.plan;
   leader(frame, main, type, placed, best.r[0], plan.from[0], row.y);
   if (plan.two) leader(frame, main, type, placed, best.r[1], plan.from[1], row.y);
-  const std::string titles[2] = {plan.two ? "zoom: left end of the span" : "zoom: the span",
-                                 "zoom: right end of the span"};
+  const std::string titles[2] = {title_of(plan, 0, best.r[0].width, type),
+                                 title_of(plan, 1, best.r[0].width, type)};
   std::vector<PlacedBox> inside;
   for (int k = 0; k < (plan.two ? 2 : 1); ++k) {
     placed.mark(PlacedKind::inset, best.r[k], titles[k]);

@@ -1,6 +1,7 @@
 // Zoom insets show what a frame cannot, without hiding what it shows. On every step of a few
-// replays whose cells are too small for a grid: no inset covers the span it explains, two insets
-// never show the same canvas pixel, and the insets hide few of the pixels filled so far (where
+// replays whose cells are too small for a grid: no inset covers the span it explains, its title
+// and labels lie inside it, two insets never show the same canvas pixel, and the insets hide few
+// of the pixels filled so far (where
 // the view has room elsewhere, which these triangles' views have: each leaves an empty corner
 // on either side of its long edge).
 //
@@ -134,6 +135,13 @@ TEST_CASE("zoom insets avoid their span and the filled pixels and show different
         for (const Inset& inset : insets) {
           INFO("inset " << inset.layer << " at " << inset.box);
           CHECK((inset.box & span_box(g, *row)).empty());
+          // Its title and labels lie inside it: none is cut by its border.
+          for (const viz::Mark& m : frame.marks(viz::MarkKind::label))
+            if (m.layer == inset.layer) {
+              const cv::Rect box(m.box.x, m.box.y, m.box.width, m.box.height);
+              INFO("label " << m.what << " at " << box);
+              CHECK((box & inset.box) == box);
+            }
           worst = std::max(worst, filled_share(inset.box, g, pixels));
           if (const auto cols = columns_shown(frame, inset, *row, cell)) shown.push_back(*cols);
         }

@@ -69,7 +69,8 @@ namespace {
 
 // Channel values where floor(255·c) and round(255·c) differ, and which of the two the image holds.
 struct EightBit {
-  std::int64_t truncated = 0, rounded = 0;  // values at floor(255·c) / round(255·c) where they differ
+  // Values at floor(255·c) / at round(255·c), where those differ.
+  std::int64_t truncated = 0, rounded = 0;
   std::int64_t face_values = 0, on_level = 0;  // the faces' channel values, and those k/255
 };
 
@@ -164,7 +165,8 @@ DiffReport diff(const Scene& scene, const FillOptions& options, const SubmittedI
   report.near_boundary_missing = cls.near_boundary_missing;
   // Find the patterns.
   report.patterns = find_patterns(cls);
-  ColourDiagnosis colours = diagnose_colours(s, report.reference, aligned.image, tally.colour_pixels);
+  ColourDiagnosis colours =
+      diagnose_colours(s, report.reference, aligned.image, tally.colour_pixels);
   report.colour_diagnosis = std::move(colours.lines);
   report.max_colour_error = colours.max_error;
   FaceLists lists = list_faces(s, cmp, cls, faces, tally);

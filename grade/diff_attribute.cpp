@@ -27,8 +27,8 @@ int shown_face(const DiffScene& s, const RgbImage& image, std::size_t i) {
     const bool area = !g.degenerate();
     const bool covers = f != s.ids.ids[i] && g.covers(x, y, FillRule::closed);
     const bool better = best != kNoFace && area != best_area ? area
-                        : covers != best_covers                ? covers
-                                                               : err < best_err - 1e-7;
+                        : covers != best_covers              ? covers
+                                                             : err < best_err - 1e-7;
     if (better) best = f, best_err = err, best_covers = covers, best_area = area;
   }
   const double bg_err = max_diff(got, Rgb32f::from(s.scene.background));
@@ -57,8 +57,7 @@ bool recoloured(const DiffScene& s, const Aligned& aligned, const RgbImage& refe
   const int x0 = s.px(p0), y0 = s.py(p0);
   for (std::size_t k = ref.start[f]; k < ref.start[f + 1]; ++k) {
     const std::size_t p = ref.pixels[k];
-    if (!aligned.compared[p] || max_diff(image(s.px(p), s.py(p)), image(x0, y0)) != 0)
-      return false;
+    if (!aligned.compared[p] || max_diff(image(s.px(p), s.py(p)), image(x0, y0)) != 0) return false;
   }
   return max_diff(reference(x0, y0), image(x0, y0)) > s.tolerance;
 }
@@ -75,7 +74,8 @@ void unmatch_recoloured_flat_faces(const DiffScene& s, const Aligned& aligned,
   if (s.options.shading != Shading::flat) return;
   std::vector<std::int64_t> own(s.n_faces, 0);  // pixels showing their reference face
   for (std::size_t i = 0; i < a.seen.size(); ++i)
-    if (s.ids.ids[i] >= 0 && a.seen[i] == s.ids.ids[i]) ++own[static_cast<std::size_t>(s.ids.ids[i])];
+    if (s.ids.ids[i] >= 0 && a.seen[i] == s.ids.ids[i])
+      ++own[static_cast<std::size_t>(s.ids.ids[i])];
   const auto shown_right = [&](int f) {
     const auto u = static_cast<std::size_t>(f);
     return 2 * own[u] > static_cast<std::int64_t>(a.reference.count(u));
@@ -172,8 +172,8 @@ void find_widened(const DiffScene& s, const Comparison& cmp, const Attribution& 
       // the outline, an exact crossing, both reach: they do not tell.)
       if ((l || r) && g->on_outline(x, y) == OnOutline::no) {
         ++out.extended_off_outline;
-        out.extended_beyond_half += (l && !g->within(x + 0.5, y, 0)) ||
-                                    (r && !g->within(x - 0.5, y, 0));
+        out.extended_beyond_half +=
+            (l && !g->within(x + 0.5, y, 0)) || (r && !g->within(x - 0.5, y, 0));
       }
     }
     if (R >= 0 && !extension) ++uncovered[static_cast<std::size_t>(R)];

@@ -46,8 +46,8 @@ class Classifier {
     if (missing(R)) {
       // A skipped face or a face painted over everywhere: the rest of the image decides which
       // (settle_ambiguous_pixels).
-      hidden_[k] = I >= 0 && face(I).covers(x, y, s_.rule) &&
-                   order_category(I, R, x, y) != Category::other;
+      hidden_[k] =
+          I >= 0 && face(I).covers(x, y, s_.rule) && order_category(I, R, x, y) != Category::other;
       return Category::missing_face;
     }
     if (I >= 0 && R >= 0 && face(I).covers(x, y, s_.rule)) return classify_covered(k, I, R, x, y);
@@ -205,9 +205,8 @@ void Classifier::settle_ambiguous_pixels() {
         ++order_evidence_;
       }
     }
-  const bool order_mistake =
-      5 * order_evidence_ >= static_cast<std::int64_t>(differing_.size()) ||
-      2 * n_missing >= n_visible;
+  const bool order_mistake = 5 * order_evidence_ >= static_cast<std::int64_t>(differing_.size()) ||
+                             2 * n_missing >= n_visible;
   for (std::size_t k = 0; k < differing_.size(); ++k)
     if (hidden_[k] && order_mistake) {
       const std::size_t i = differing_[k];

@@ -64,9 +64,8 @@ class ColourHypotheses {
       test(fmt::format("flat colour is the {} vertex's colour, not the mean of the three",
                        kOrdinal[k]),
            [k](const FaceGeometry& g, int, int) { return g.colors()[k]; });
-    test("Gouraud shading where flat was asked", [](const FaceGeometry& g, int x, int y) {
-      return g.color_at(x, y, Shading::gouraud);
-    });
+    test("Gouraud shading where flat was asked",
+         [](const FaceGeometry& g, int x, int y) { return g.color_at(x, y, Shading::gouraud); });
     return std::move(out_);
   }
 
@@ -89,9 +88,8 @@ class ColourHypotheses {
            for (int k = 0; k < 3; ++k) c[o[k]] = g.colors()[k];
            return g.color_at(x, y, Shading::gouraud, c);
          });
-    test("flat shading where Gouraud was asked", [](const FaceGeometry& g, int x, int y) {
-      return g.color_at(x, y, Shading::flat);
-    });
+    test("flat shading where Gouraud was asked",
+         [](const FaceGeometry& g, int x, int y) { return g.color_at(x, y, Shading::flat); });
     return std::move(out_);
   }
 
@@ -121,17 +119,16 @@ ColourDiagnosis diagnose_colours(const DiffScene& s, const RgbImage& reference,
   if (colour.empty()) return d;
   ColourHypotheses tried(s, image, colour);
   std::vector<Hypothesis> hyp = s.options.shading == Shading::flat ? tried.flat() : tried.gouraud();
-  std::stable_sort(hyp.begin(), hyp.end(), [](const Hypothesis& a, const Hypothesis& b) {
-    return a.matches > b.matches;
-  });
+  std::stable_sort(hyp.begin(), hyp.end(),
+                   [](const Hypothesis& a, const Hypothesis& b) { return a.matches > b.matches; });
   const auto n = static_cast<std::int64_t>(colour.size());
   for (const auto& h : hyp)
     if (2 * h.matches > n)
       d.lines.push_back(
           fmt::format("{} (explains {} of the {} colour pixels)", h.text, h.matches, n));
   for (std::size_t i : colour)
-    d.max_error = std::max(d.max_error,
-                           max_diff(reference(s.px(i), s.py(i)), image(s.px(i), s.py(i))));
+    d.max_error =
+        std::max(d.max_error, max_diff(reference(s.px(i), s.py(i)), image(s.px(i), s.py(i))));
   return d;
 }
 

@@ -161,7 +161,8 @@ class Machine {
  private:
   // One opcode, by family; an opcode no numpy pickle uses is refused.
   void step(unsigned char op) {
-    if (framing(op) || scalar(op) || text_or_bytes(op) || container(op) || memo(op) || call(op)) return;
+    if (framing(op) || scalar(op) || text_or_bytes(op) || container(op) || memo(op) || call(op))
+      return;
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02x", op);
     fail(std::string("opcode ") + hex + " ('" + (op >= 32 && op < 127 ? std::string(1, op) : "") +

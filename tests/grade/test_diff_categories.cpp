@@ -17,8 +17,8 @@ namespace {
 
 // docs/grading.md's table, in the order the classifiers are tried.
 const std::array<std::string, 11> kDocumented{
-    "boundary", "near_boundary", "widened",          "shifted", "order",      "order_tie",
-    "missing_face", "degenerate_drawn", "colour", "background", "other"};
+    "boundary",     "near_boundary",    "widened", "shifted",    "order", "order_tie",
+    "missing_face", "degenerate_drawn", "colour",  "background", "other"};
 
 }  // namespace
 
@@ -38,8 +38,7 @@ TEST_CASE("every diff category's name reads back to it, names as documented", "[
   CHECK_FALSE(grade::category_named("").has_value());
 }
 
-TEST_CASE("the report's JSON and category map use the documented names in order",
-          "[grade][diff]") {
+TEST_CASE("the report's JSON and category map use the documented names in order", "[grade][diff]") {
   const Scene s = generated_scene();
   const RgbImage bad = render_wrong(s, Shading::flat, Mistake::flat_colour_not_mean);
   const grade::DiffReport r = grade::diff(s, opts(Shading::flat), as_8bit(bad));

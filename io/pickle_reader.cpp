@@ -217,31 +217,28 @@ class Machine {
     }
   }
 
-  // Text and bytes, each with a length of 1, 4 or 8 bytes before it.
+  // Text and bytes, each with its length before it in 1, 4 or 8 bytes.
   bool text_or_bytes(unsigned char op) {
-    switch (op) {
-      case 'X':  // BINUNICODE
-        push_string(Value::Kind::text, unsigned_le(read(4)));
+    struct Form {
+      unsigned char op;
+      Value::Kind kind;
+      int length_bytes;
+    };
+    static constexpr Form kForms[] = {
+        {'X', Value::Kind::text, 4},    // BINUNICODE
+        {0x8c, Value::Kind::text, 1},   // SHORT_BINUNICODE
+        {0x8d, Value::Kind::text, 8},   // BINUNICODE8
+        {'C', Value::Kind::bytes, 1},   // SHORT_BINBYTES
+        {'B', Value::Kind::bytes, 4},   // BINBYTES
+        {0x8e, Value::Kind::bytes, 8},  // BINBYTES8
+        {0x96, Value::Kind::bytes, 8},  // BYTEARRAY8
+    };
+    for (const Form& f : kForms)
+      if (f.op == op) {
+        push_string(f.kind, unsigned_le(read(static_cast<std::uint64_t>(f.length_bytes))));
         return true;
-      case 0x8c:  // SHORT_BINUNICODE
-        push_string(Value::Kind::text, unsigned_le(read(1)));
-        return true;
-      case 0x8d:  // BINUNICODE8
-        push_string(Value::Kind::text, unsigned_le(read(8)));
-        return true;
-      case 'C':  // SHORT_BINBYTES
-        push_string(Value::Kind::bytes, unsigned_le(read(1)));
-        return true;
-      case 'B':  // BINBYTES
-        push_string(Value::Kind::bytes, unsigned_le(read(4)));
-        return true;
-      case 0x8e:  // BINBYTES8
-      case 0x96:  // BYTEARRAY8
-        push_string(Value::Kind::bytes, unsigned_le(read(8)));
-        return true;
-      default:
-        return false;
-    }
+      }
+    return false;
   }
 
   // Tuples, lists and dicts: made empty or from the stack, and filled.

@@ -223,7 +223,7 @@ bool StepPlayer::key(int code) {
       help_ = !help_;
       break;
     case PlayerKey::quit:
-      // Esc closes the keys first; q always quits, as the keys say (issue 36: it only closed them).
+      // Esc closes the keys first; q always quits, as the keys say.
       if (help_ && (code & 0xff) != 'q') {
         help_ = false;
         break;
@@ -288,7 +288,7 @@ cv::Mat StepPlayer::image() {
 
 std::filesystem::path StepPlayer::save() {
   std::vector<unsigned char> png;
-  // What the window shows (issue 36): the frame with its boxes, and the status line.
+  // What the window shows, so the file matches the screen: the frame with its boxes, and the status line.
   if (!cv::imencode(".png", image(), png))
     throw std::runtime_error(fmt::format("cannot encode step {} as PNG", index_ + 1));
   const std::filesystem::path file =

@@ -86,8 +86,8 @@ bool transform_applies(std::size_t t, int iw, int ih, int W, int H) {
 // Colours in [0, 255]: a float array on that scale, that is most of its painted pixels (those
 // not of the scene's background) above 1. One bright pixel, or a Gouraud colour extrapolated a
 // little beyond a vertex's, is not a scale: the pixels above 1 are then a note saying what they
-// are, and are compared as they are (issue 47: one pixel at 1.01 gave "scaled_255" and 87,925
-// differing pixels). Undone (in `src`) when `undo`.
+// are, and are compared as they are (else one pixel at 1.01 would make the whole image
+// "scaled_255" and every pixel differ). Undone (in `src`) when `undo`.
 void find_scaled_255(const Scene& scene, const SubmittedImage& in, double tol, bool undo,
                      RgbImage& src, std::vector<GlobalMistake>& found,
                      std::vector<std::string>& notes) {
@@ -219,7 +219,7 @@ void find_background(const Scene& scene, const FaceIdImage& ids,
   const Rgb32f seen_px = Rgb32f::from(seen);
   if (max_diff(seen_px, expected) <= tol + 0.5 / 255) return;
   // Printed: the mean of the values in the mode's 8-bit bin, not the bin, so that a float
-  // image's 0.99 is not reported as 252/255 = 0.988 (issue 36).
+  // image's 0.99 is not reported as 252/255 = 0.988.
   double sum[3] = {0, 0, 0};
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)

@@ -16,7 +16,7 @@ namespace {
 
 using frame_text::hex_colour;
 using frame_text::json_string;
-using frame_text::number;
+using frame_text::markup_number;
 
 std::string box(const Rect& r) {
   // fmt, not "[" + std::to_string(...): GCC 12 warns (-Wrestrict, a false positive) on a literal
@@ -39,7 +39,7 @@ void put_all(std::string& out, const Parts&... parts) {
 // A polyline's points as JSON numbers, "x,y,x,y,...".
 void put_points(std::string& out, const std::vector<Point2d>& stroke) {
   for (std::size_t i = 0; i < stroke.size(); ++i)
-    put_all(out, i ? "," : "", number(stroke[i].x), ',', number(stroke[i].y));
+    put_all(out, i ? "," : "", markup_number(stroke[i].x), ',', markup_number(stroke[i].y));
 }
 
 // A block of one pixel (a grid's centre dot) is written as a filled rectangle, not an image.
@@ -60,15 +60,16 @@ struct Writer {
   }
   void operator()(const LineOp& l) const {
     const double s = 1.0 / (1 << l.shift);
-    put_all(out, "\"L\",", number(l.a.x * s), ',', number(l.a.y * s), ',', number(l.b.x * s), ',',
-            number(l.b.y * s), ",\"", hex_colour(l.colour), "\",", l.thickness);
+    put_all(out, "\"L\",", markup_number(l.a.x * s), ',', markup_number(l.a.y * s), ',',
+            markup_number(l.b.x * s), ',', markup_number(l.b.y * s), ",\"", hex_colour(l.colour),
+            "\",", l.thickness);
   }
   void operator()(const CircleOp& c) const {
     put_all(out, "\"C\",", c.centre.x, ',', c.centre.y, ',', c.radius, ",\"", hex_colour(c.colour),
             "\",", c.thickness);
   }
   void operator()(const TextOp& t) const {
-    if (text_form == TextForm::glyphs) {
+    if (text_form == TextForm::text_with_font) {
       char scale[32];
       std::snprintf(scale, sizeof scale, "%.17g", t.scale);
       put_all(out, "\"t\",", json_string(t.text), ",\"", hex_colour(t.colour), "\",", t.thickness,
@@ -82,8 +83,8 @@ struct Writer {
       const double s = hershey_scale(t.scale);
       bool first = true;
       for (const PlacedGlyph& g : hershey_layout(t.text, t.font, t.scale, t.origin)) {
-        put_all(out, first ? "" : ",", glyphs->id(g.c, t.font, s), ',', number(g.origin.x), ',',
-                number(g.origin.y));
+        put_all(out, first ? "" : ",", glyphs->id(g.c, t.font, s), ',', markup_number(g.origin.x),
+                ',', markup_number(g.origin.y));
         first = false;
       }
       out += ']';
@@ -112,8 +113,8 @@ struct Writer {
 };
 
 // A glyph's strokes as the "glyphs" table writes them, [[x,y,x,y,...],...]: the same few dozen
-// glyphs in every frame, so each is written once per thread and kept (their numbers were a fifth
-// of a step frame's JSON time in the explorer's module, which writes a frame per mouse move).
+// glyphs in every frame, so each is written once per thread and kept (the explorer's module writes
+// a frame per mouse move).
 const std::string& glyph_strokes_json(const GlyphTable::Glyph& g) {
   thread_local std::map<std::tuple<unsigned char, int, double>, std::string> written;
   auto [at, added] = written.try_emplace({g.c, static_cast<int>(g.font), g.scale});
@@ -137,7 +138,7 @@ void put_mark(std::string& out, const Mark& m) {
 }
 
 // One op appended to `out`, its text's glyphs (glyph_table) interned in `glyphs`; `b` is scratch
-// space for its body (a frame's ops reuse one: a string per op was a sixth of the JSON's time).
+// space for its body (a frame's ops reuse one rather than allocate a string each).
 void op_json(std::string& out, const DrawOp& op, TextForm text, GlyphTable* glyphs,
              const BlockWriter* block, std::string& b) {
   // The kind first, then clip and mark: written after the body's kind, as the format says.

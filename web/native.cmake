@@ -42,7 +42,7 @@ if(SCANTRACE_BUILD_TESTS)
   # The module against the native command: pixels, traces, why and diff (web/tests/node_compare.mjs).
   add_node_command_test("web: node module equals the native command" node_compare 600 node)
   # The API checks its arguments as the command does, caps a trace's text, and pre-checks an
-  # image against the scene's canvas (web/tests/node_arguments.mjs; issue 46).
+  # image against the scene's canvas (web/tests/node_arguments.mjs).
   add_node_command_test("web: node API checks its arguments as the command does" node_arguments
                         300 arguments)
   # The trace page's module against the full one: its exports, its steps and frames

@@ -101,7 +101,7 @@ class OpTable {
   std::size_t add(const viz::DrawOp& op) {
     if (const auto* t = std::get_if<viz::TextOp>(&op.body)) note_glyphs(t->text, glyphs_[t->font]);
     const auto* p = std::get_if<viz::PixelsOp>(&op.body);
-    if (!p || p->area.area() < 2) return intern(viz::to_json(op, viz::TextForm::glyphs));
+    if (!p || p->area.area() < 2) return intern(viz::to_json(op, viz::TextForm::text_with_font));
     // A block of pixels at the place of an earlier one (the same view, one step later) mostly
     // holds the same pixels: only the rectangle that changed is stored, over the earlier op.
     const auto key =
@@ -111,15 +111,15 @@ class OpTable {
     const auto earlier = blocks_.find(key);
     std::size_t id;
     if (earlier == blocks_.end()) {
-      id = intern(viz::to_json(op, viz::TextForm::glyphs));
+      id = intern(viz::to_json(op, viz::TextForm::text_with_font));
     } else {
       const viz::Rect changed = changed_rect(*earlier->second.second, *p);
       if (changed.area() * 2 > p->area.area()) {
-        id = intern(viz::to_json(op, viz::TextForm::glyphs));
+        id = intern(viz::to_json(op, viz::TextForm::text_with_font));
       } else {
         viz::DrawOp patch = op;
         patch.body = crop(*p, changed);
-        std::string json = viz::to_json(patch, viz::TextForm::glyphs);
+        std::string json = viz::to_json(patch, viz::TextForm::text_with_font);
         json.replace(0, 4, "[\"p\"");
         json.back() = ',';
         id = intern(json + std::to_string(earlier->second.first) + "]");

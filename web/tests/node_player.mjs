@@ -16,6 +16,8 @@ import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 import { check, summary } from './check.mjs';
+// The player core's checks (keys, stepping, g, play and speed) run first.
+import './node_player_core.mjs';
 
 const [webDir] = process.argv.slice(2);
 const { load } = await import(pathToFileURL(path.join(webDir, 'scantrace.mjs')));

@@ -29,6 +29,7 @@ export function bindPlayer(s, o) {
   };
   const act = (name) => (actions[name] ? (actions[name](), true) : s.act(name));
   o.scope.addEventListener('keydown', (e) => {
+    if (controlsKey(e)) return;
     const typing = s.typingRow;
     if (typing ? !s.typeRow(e.key) : !act(o.keys.action(e))) return;
     e.preventDefault();
@@ -54,6 +55,20 @@ export function bindPlayer(s, o) {
   }
   s.onChange(() => update(s, o, first, doc));
   return s;
+}
+
+// Whether a key is the focused control's own: a text field's keys, Space and Enter on a button
+// (a keyboard's click). A list's arrows are the player's, and ↑ ↓ nobody's: their default would
+// change its value unseen (the list is left, so the next keys step).
+function controlsKey(e) {
+  const t = e.target, k = e.key;
+  if (t.tagName === 'INPUT' && ['text', 'number', 'search'].includes(t.type)) return true;
+  if ((t.tagName === 'BUTTON' || t.tagName === 'SUMMARY') && (k === ' ' || k === 'Enter')) return true;
+  if (t.tagName === 'SELECT' && k.startsWith('Arrow')) {
+    t.blur();
+    if (k === 'ArrowUp' || k === 'ArrowDown') e.preventDefault();
+  }
+  return false;
 }
 
 // The speed list's options (steps a second) and its choice.

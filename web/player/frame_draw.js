@@ -18,10 +18,11 @@ function drawScantraceFrame(ctx, frame) {
     let k = 0;
     // putImageData ignores the context's transform: an RGBA block goes through it only on an
     // untransformed context (the explorer's), else through a canvas of its own and drawImage.
-    const untransformed = ctx.getTransform().isIdentity;
+    const transform = ctx.getTransform(), untransformed = transform.isIdentity;
     // Text ops from bitmaps kept between frames (scantraceTextBitmaps, below) where the context
-    // draws in its canvas's pixels; elsewhere (a scaled page) stroked as they come.
-    const text = untransformed
+    // draws in its canvas's pixels or scales them without turning (the trace page's); elsewhere
+    // stroked as they come.
+    const text = untransformed || (!transform.b && !transform.c && transform.a > 0 && transform.d > 0)
       ? (drawScantraceFrame.text || (drawScantraceFrame.text = scantraceTextBitmaps())).frame(frame)
       : null;
     // One save for the frame (the caller's context comes back as it was), and one more only
@@ -289,7 +290,9 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
     if (pool && pool.length) {
       --stats.spare;
       const canvas = pool.pop();
-      canvas.getContext('2d').clearRect(0, 0, width, height);
+      const g = canvas.getContext('2d');
+      g.setTransform(1, 0, 0, 1, 0, 0); // a scaled bitmap's canvas keeps its scale
+      g.clearRect(0, 0, width, height);
       return canvas;
     }
     const canvas = document.createElement('canvas');
@@ -298,8 +301,9 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
     return canvas;
   }
 
-  // The op's glyphs stroked onto a canvas of their box, at phase (fx, fy); null for no strokes.
-  function bitmap(frame, op, fx, fy, used) {
+  // The op's glyphs stroked onto a canvas of their box, at phase (fx, fy) and scale (sx, sy);
+  // null for no strokes.
+  function bitmap(frame, op, fx, fy, used, sx, sy) {
     const [, , , , colour, t, placed] = op;
     const box = [Infinity, Infinity, -Infinity, -Infinity];
     for (let k = 0, j = 0; k < placed.length; k += 3, ++j) {
@@ -310,14 +314,16 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
       box[3] = Math.max(box[3], dy + b[3]);
     }
     if (!(box[0] <= box[2])) return null;
-    const pad = Math.ceil(t / 2) + 2, left = Math.floor(box[0]) - pad, top = Math.floor(box[1]) - pad;
-    const width = Math.ceil(box[2]) + pad + 1 - left, height = Math.ceil(box[3]) + pad + 1 - top;
+    const pad = Math.ceil(t * Math.max(sx, sy) / 2) + 2;
+    const left = Math.floor(box[0] * sx) - pad, top = Math.floor(box[1] * sy) - pad;
+    const width = Math.ceil(box[2] * sx) + pad + 1 - left, height = Math.ceil(box[3] * sy) + pad + 1 - top;
     const canvas = blank(width, height), g = canvas.getContext('2d');
+    g.setTransform(sx, 0, 0, sy, 0, 0);
     g.strokeStyle = colour;
     g.lineWidth = t;
     g.lineCap = 'round';
     g.lineJoin = 'round';
-    scantraceStrokeGlyphs(g, frame.glyphs, placed, fx - left - placed[1], fy - top - placed[2]);
+    scantraceStrokeGlyphs(g, frame.glyphs, placed, (fx - left) / sx - placed[1], (fy - top) / sy - placed[2]);
     stats.area += canvas.width * canvas.height;
     return { canvas, left, top, width, height };
   }
@@ -329,9 +335,13 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
       draw(ctx, op) {
         const colour = op[4], t = op[5], placed = op[6];
         if (!placed.length) return;
-        const x = placed[1] + 0.5, y = placed[2] + 0.5, ix = Math.floor(x), iy = Math.floor(y);
-        const key = [t, x - ix, y - iy], used = [];
-        let h = mix(mix(mix(placed.length, t), x - ix), y - iy);
+        // On a scaled context the bitmap is made at the scale, put at whole canvas pixels.
+        const m = ctx.getTransform(), scaled = m.a !== 1 || m.d !== 1;
+        const x = scaled ? m.a * (placed[1] + 0.5) + m.e : placed[1] + 0.5;
+        const y = scaled ? m.d * (placed[2] + 0.5) + m.f : placed[2] + 0.5;
+        const ix = Math.floor(x), iy = Math.floor(y);
+        const key = [t, x - ix, y - iy, m.a, m.d], used = [];
+        let h = mix(mix(mix(mix(placed.length, t), x - ix), y - iy), m.a);
         for (let k = 0; k < placed.length; k += 3) {
           const g = seen[placed[k]] || (seen[placed[k]] = glyph(f.glyphs[placed[k]]));
           used.push(g);
@@ -345,13 +355,15 @@ function scantraceTextBitmaps(limit = 256, maxArea = 1 << 22) {
           recent.delete(b);
         } else {
           ++stats.misses;
-          b = { hash: h, colour, key, image: bitmap(f, op, x - ix, y - iy, used) };
+          b = { hash: h, colour, key, image: bitmap(f, op, x - ix, y - iy, used, m.a, m.d) };
           bucket.push(b);
           ops.set(h, bucket);
         }
         recent.add(b);
-        const m = b.image;
-        if (m) ctx.drawImage(m.canvas, 0, 0, m.width, m.height, ix + m.left, iy + m.top, m.width, m.height);
+        const image = b.image;
+        if (image && scaled) ctx.setTransform(1, 0, 0, 1, 0, 0);
+        if (image) ctx.drawImage(image.canvas, 0, 0, image.width, image.height, ix + image.left, iy + image.top, image.width, image.height);
+        if (image && scaled) ctx.setTransform(m);
         for (const old of recent) {
           if (recent.size <= limit && stats.area <= maxArea) break;
           if (old !== b) drop(old);

@@ -23,10 +23,10 @@ const unmodule = (text) =>
     .replace(/^export default \w+;$/gm, '')
     .replace(/^export (class|async function|function|const) /gm, '$1 ');
 
-// The trace page's own scripts without their whole-line comments, which are for their readers
-// (a tenth of the course triangle's page, whose goal is 400 KB); none of these files has a line
-// starting with // inside a string.
-const uncommented = (text) => text.replace(/^[ \t]*\/\/.*\n/gm, '');
+// The trace page's own scripts without their whole-line comments and indentation, which are for
+// their readers (a tenth of the course triangle's page, whose goal is 400 KB); none of these
+// files has a string running over lines.
+const uncommented = (text) => text.replace(/^[ \t]*\/\/.*\n/gm, '').replace(/^[ \t]+/gm, '');
 
 // A module's .wasm as the page holds it: gzip, base64.
 const inlined = (name) => zlib.gzipSync(fs.readFileSync(path.join(dir, name)), { level: 9 }).toString('base64');

@@ -11,6 +11,14 @@
 // Play speeds offered, in steps per second.
 export const PLAY_SPEEDS = [0.5, 1, 2.5, 5, 10, 20];
 
+// The stepping actions of keys.json's table, on a stepper.
+const STEP_ACTIONS = {
+  next: (s) => s.go(s.index + 1), previous: (s) => s.go(s.index - 1),
+  forward10: (s) => s.go(s.index + 10), back10: (s) => s.go(s.index - 10),
+  first: (s) => s.go(0), last: (s) => s.go(s.count - 1), play: (s) => s.play(!s.playing),
+  faster: (s) => s.faster(), slower: (s) => s.slower(), go_to_row: (s) => s.startRow(),
+};
+
 // o: {count, show(index), rows?: [[first, last] or null per step], say?(text), speed? (steps per
 // second), timers?: {setInterval, clearInterval} (tests)}.
 export function createStepper(o) {
@@ -87,13 +95,8 @@ export function createStepper(o) {
     onChange: (f) => listeners.push(f),
     // The action of keys.json's table, as the keys and the buttons do it; false: not a stepping one.
     act(action) {
-      const acts = {
-        next: () => go(index + 1), previous: () => go(index - 1), forward10: () => go(index + 10),
-        back10: () => go(index - 10), first: () => go(0), last: () => go(s.count - 1),
-        play: () => play(timer === null), faster: s.faster, slower: s.slower, go_to_row: s.startRow,
-      };
-      if (!acts[action]) return false;
-      acts[action]();
+      if (!STEP_ACTIONS[action]) return false;
+      STEP_ACTIONS[action](s);
       return true;
     },
   };

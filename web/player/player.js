@@ -15,45 +15,11 @@ export async function startPlayer(pm, cfg, traceText) {
   const $ = (id) => document.getElementById(id);
   const plan = planner(pm, cfg, traceText);
   const events = traceText.split('\n').filter((l) => l).map((l) => JSON.parse(l));
-  const canvas = $('frame'), ctx = canvas.getContext('2d');
-  let steps = plan.steps(cfg.rows_per_step), drawing = Promise.resolve(), scale = 1;
+  const canvas = $('frame');
+  let steps = plan.steps(cfg.rows_per_step);
   const say = (text) => { $('status').textContent = text; };
-
-  // The frame drawn at the size it is shown, in device pixels: sharp at any zoom.
-  function fit() {
-    const stage = $('stage');
-    scale = Math.min(stage.clientWidth / cfg.width, stage.clientHeight / cfg.height);
-    canvas.style.width = `${Math.floor(cfg.width * scale)}px`;
-    canvas.style.height = `${Math.floor(cfg.height * scale)}px`;
-  }
-  // The next step's frame is composed ahead, once the shown one is drawn: stepping on, the
-  // common case, then only draws (composing a course triangle's frame is most of a step's time).
-  let ahead = null; // {index, frame}
-  const frameOf = (i) => (ahead && ahead.index === i ? ahead.frame : pm.frame(plan.first + i));
-  function composeAhead(i) {
-    setTimeout(() => {
-      if (s.index === i - 1 && i < s.count && !(ahead && ahead.index === i)) ahead = { index: i, frame: pm.frame(plan.first + i) };
-    }, 0);
-  }
-  function show(wanted) {
-    drawing = drawing.then(async () => {
-      if (wanted !== s.index) return;
-      const t0 = performance.now();
-      const f = frameOf(wanted);
-      const t1 = performance.now();
-      const dpr = window.devicePixelRatio || 1;
-      canvas.width = Math.round(cfg.width * scale * dpr);
-      canvas.height = Math.round(cfg.height * scale * dpr);
-      ctx.setTransform(canvas.width / f.w, 0, 0, canvas.height / f.h, 0, 0);
-      await drawScantraceFrame(ctx, f);
-      canvas.dataset.step = String(wanted);
-      // For the tests and anyone timing the page: composing (0 when composed ahead), drawing.
-      canvas.dataset.composeMs = (t1 - t0).toFixed(1);
-      canvas.dataset.drawMs = (performance.now() - t1).toFixed(1);
-      composeAhead(wanted + 1);
-    });
-  }
-  const s = createStepper({ count: steps.length, show, rows: rowsOf(steps), say, speed: 2.5 });
+  const drawer = canvasDrawer(pm, plan, cfg, canvas, () => s);
+  const s = createStepper({ count: steps.length, show: drawer.show, rows: rowsOf(steps), say, speed: 2.5 });
   const relist = () => {
     $('list').replaceChildren(...steps.map((st, i) => {
       const el = document.createElement('div');
@@ -69,7 +35,7 @@ export async function startPlayer(pm, cfg, traceText) {
     const row = steps[s.index].kind === 'scanlines' ? steps[s.index].first_row : null;
     rowChoice = (rowChoice + 1) % rowChoices.length;
     steps = plan.steps(rowChoices[rowChoice]);
-    ahead = null;
+    drawer.forget();
     s.rows = rowsOf(steps);
     relist();
     const at = row === null ? -1 : steps.findIndex((st) => st.kind === 'scanlines' && st.first_row <= row && row <= st.last_row);
@@ -88,18 +54,61 @@ export async function startPlayer(pm, cfg, traceText) {
   });
   $('toggle-list').addEventListener('click', () => {
     $('list').hidden = !$('list').hidden;
-    fit();
+    drawer.fit();
     s.go(s.index);
   });
   window.addEventListener('resize', () => {
-    fit();
+    drawer.fit();
     s.go(s.index);
   });
-  fit();
+  drawer.fit();
   s.go(s.initialIndex);
   // Milliseconds from navigation to a working page (the test prints it; docs/performance.md).
   document.body.dataset.readyMs = performance.now().toFixed(0);
   document.body.dataset.ready = '1';
+}
+
+// The canvas's drawing: fit() sizes it to the stage, show(i) draws step i when it is still the
+// stepper's (`stepper()`), forget() drops the frame composed ahead (the steps planned again).
+// The frame is drawn at the size it is shown, in device pixels: sharp at any zoom.
+function canvasDrawer(pm, plan, cfg, canvas, stepper) {
+  const ctx = canvas.getContext('2d');
+  let drawing = Promise.resolve(), scale = 1;
+  // The next step's frame is composed ahead, once the shown one is drawn: stepping on, the
+  // common case, then only draws (composing a course triangle's frame is most of a step's time).
+  let ahead = null; // {index, frame}
+  const frameOf = (i) => (ahead && ahead.index === i ? ahead.frame : pm.frame(plan.first + i));
+  const composeAhead = (i) => setTimeout(() => {
+    const s = stepper();
+    if (s.index === i - 1 && i < s.count && !(ahead && ahead.index === i)) ahead = { index: i, frame: pm.frame(plan.first + i) };
+  }, 0);
+  return {
+    fit() {
+      const stage = document.getElementById('stage');
+      scale = Math.min(stage.clientWidth / cfg.width, stage.clientHeight / cfg.height);
+      canvas.style.width = `${Math.floor(cfg.width * scale)}px`;
+      canvas.style.height = `${Math.floor(cfg.height * scale)}px`;
+    },
+    forget: () => { ahead = null; },
+    show: (wanted) => {
+      drawing = drawing.then(async () => {
+        if (wanted !== stepper().index) return;
+        const t0 = performance.now();
+        const f = frameOf(wanted);
+        const t1 = performance.now();
+        const dpr = window.devicePixelRatio || 1;
+        canvas.width = Math.round(cfg.width * scale * dpr);
+        canvas.height = Math.round(cfg.height * scale * dpr);
+        ctx.setTransform(canvas.width / f.w, 0, 0, canvas.height / f.h, 0, 0);
+        await drawScantraceFrame(ctx, f);
+        canvas.dataset.step = String(wanted);
+        // For the tests and anyone timing the page: composing (0 when composed ahead), drawing.
+        canvas.dataset.composeMs = (t1 - t0).toFixed(1);
+        canvas.dataset.drawMs = (performance.now() - t1).toFixed(1);
+        composeAhead(wanted + 1);
+      });
+    },
+  };
 }
 
 // The trace opened with `rows_per_step` (0: as planned), its steps cfg.first..cfg.last when

@@ -25,16 +25,47 @@ namespace {
 std::string key_name(int code) {
   switch (code) {
     // Qt (OpenCV's Qt backend passes Qt::Key for keys without text), GTK/X11 keysyms, Windows.
-    case 0x01000014: case 0xff53: case 0x270000: return "ArrowRight";
-    case 0x01000012: case 0xff51: case 0x250000: return "ArrowLeft";
-    case 0x01000017: case 0xff56: case 0x220000: return "PageDown";
-    case 0x01000016: case 0xff55: case 0x210000: return "PageUp";
-    case 0x01000010: case 0xff50: case 0x240000: return "Home";
-    case 0x01000011: case 0xff57: case 0x230000: return "End";
-    case 0x01000004: case 0x01000005: case 0xff0d: case 0xff8d: case '\r': case '\n': return "Enter";
-    case 0x01000003: case 0xff08: case 8: return "Backspace";
-    case 0x01000000: case 0xff1b: case 27: return "Escape";
-    default: break;
+    case 0x01000014:
+    case 0xff53:
+    case 0x270000:
+      return "ArrowRight";
+    case 0x01000012:
+    case 0xff51:
+    case 0x250000:
+      return "ArrowLeft";
+    case 0x01000017:
+    case 0xff56:
+    case 0x220000:
+      return "PageDown";
+    case 0x01000016:
+    case 0xff55:
+    case 0x210000:
+      return "PageUp";
+    case 0x01000010:
+    case 0xff50:
+    case 0x240000:
+      return "Home";
+    case 0x01000011:
+    case 0xff57:
+    case 0x230000:
+      return "End";
+    case 0x01000004:
+    case 0x01000005:
+    case 0xff0d:
+    case 0xff8d:
+    case '\r':
+    case '\n':
+      return "Enter";
+    case 0x01000003:
+    case 0xff08:
+    case 8:
+      return "Backspace";
+    case 0x01000000:
+    case 0xff1b:
+    case 27:
+      return "Escape";
+    default:
+      break;
   }
   const int c = code & 0xff;  // GTK adds modifier bits above the character
   if (c < ' ' || c > '~') return "";
@@ -47,13 +78,18 @@ std::string key_name(int code) {
 // with every page's player), each key's action as a PlayerKey.
 const std::map<std::string, PlayerKey>& window_keys() {
   static const std::map<std::string, PlayerKey> keys = [] {
-    const std::map<std::string, PlayerKey> actions = {
-        {"next", PlayerKey::next},         {"previous", PlayerKey::previous},
-        {"forward10", PlayerKey::forward10}, {"back10", PlayerKey::back10},
-        {"first", PlayerKey::first},       {"last", PlayerKey::last},
-        {"go_to_row", PlayerKey::go_to_row}, {"play", PlayerKey::play},
-        {"toggle_rows", PlayerKey::toggle_rows}, {"save", PlayerKey::save},
-        {"help", PlayerKey::help},         {"quit", PlayerKey::quit}};
+    const std::map<std::string, PlayerKey> actions = {{"next", PlayerKey::next},
+                                                      {"previous", PlayerKey::previous},
+                                                      {"forward10", PlayerKey::forward10},
+                                                      {"back10", PlayerKey::back10},
+                                                      {"first", PlayerKey::first},
+                                                      {"last", PlayerKey::last},
+                                                      {"go_to_row", PlayerKey::go_to_row},
+                                                      {"play", PlayerKey::play},
+                                                      {"toggle_rows", PlayerKey::toggle_rows},
+                                                      {"save", PlayerKey::save},
+                                                      {"help", PlayerKey::help},
+                                                      {"quit", PlayerKey::quit}};
     std::map<std::string, PlayerKey> out;
     const nlohmann::json table = nlohmann::json::parse(viz::web_player::keys_json);
     for (const nlohmann::json& a : table["actions"]) {

@@ -3,9 +3,13 @@
 // each one's text, zero-terminated.
 namespace scantrace::viz::web_player {
 
-extern const char frame_draw_js[];   // web/player/frame_draw.js: drawScantraceFrame
-extern const char player_core_js[];  // the key table, keys.mjs, controller.mjs, bind.mjs, hershey.mjs
-extern const char keys_json[];       // web/player/keys.json: the players' keys
-extern const char step_page_html[];  // web/player/step_page.html with its scripts inlined
+// web/player/frame_draw.js: drawScantraceFrame
+extern const char frame_draw_js[];
+// the player core: the key table, keys.mjs, controller.mjs, bind.mjs, hershey.mjs
+extern const char player_core_js[];
+// web/player/keys.json: the players' keys
+extern const char keys_json[];
+// web/player/step_page.html with its scripts inlined
+extern const char step_page_html[];
 
 }  // namespace scantrace::viz::web_player

@@ -176,7 +176,6 @@ void bind_frames_class(py::module_& m) {
       });
 }
 
-
 // A trace's replay as Frames (steps as `scantrace replay` plans them).
 std::unique_ptr<PyFrames> trace_frames(py::object trace, py::handle frame_size,
                                        const std::string& mode, int rows_per_step,

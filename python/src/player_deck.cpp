@@ -218,8 +218,8 @@ Deck write_deck(viz::FrameSequence& frames, std::size_t first, std::size_t last)
   out << ",\n\"ops\":[";
   const auto& ops = table.ops();
   for (std::size_t k = 0; k < ops.size(); ++k) out << (k ? ",\n" : "") << *ops[k];
-  out << "],\n\"frames\":[" << runs.str() << "],\n\"labels\":[" << labels.str()
-      << "],\n\"rows\":[" << rows.str() << "]}";
+  out << "],\n\"frames\":[" << runs.str() << "],\n\"labels\":[" << labels.str() << "],\n\"rows\":["
+      << rows.str() << "]}";
   return {out.str(), last - first + 1, ops.size()};
 }
 

@@ -8,13 +8,13 @@
 //   native trace's span of its row holds it;
 // - the player core's controls (web/player/): ? shows the key table of keys.json (the trace page's
 //   actions, read here from the file) and Esc closes it; g 15 Enter goes to step 19 (rows 2..27
-//   from step 6, counted by hand); + and - change the play speed, and play keeps to it (at 20
-//   steps a second, 8 steps take at least 350 ms; at 0.5, one second moves at most one step);
-//   after the speed list or the slider is used, the arrow keys still step by one and leave the
-//   control as it was, and ↓ on the focused list leaves its value; step N is numbered N in the
-//   counter, the list and #step=N; r replans at most ten rows a step (12 steps: the planner
-//   also breaks a step where an edge begins or ends), rows 2..27 each in one step, and keeps
-//   the shown row (back to a row a step, the step of its first row);
+//   from step 6, counted by hand), and c gives its link (#step=19); + and - change the play
+//   speed, and play keeps to it (at 20 steps a second, 8 steps take at least 350 ms; at 0.5, one
+//   second moves at most one step); after the speed list or the slider is used, the arrow keys
+//   still step by one and leave the control as it was, and ↓ on the focused list leaves its
+//   value; step N is numbered N in the counter, the list and #step=N; r replans at most ten rows
+//   a step (12 steps: the planner also breaks a step where an edge begins or ends), rows 2..27
+//   each in one step, and keeps the shown row (back to a row a step, the step of its first row);
 // - the course triangle's page steps within 50 ms (median of 30 steps, key to drawn frame, at
 //   1366x768: docs/performance.md), held when the load is at most the machine's cores;
 // - the frame fits a 1280x800 window with the step list shown beside it;
@@ -139,6 +139,14 @@ try {
     for (const k of ['g', '1', '5', 'Enter']) await key(k);
     assert.deepStrictEqual(await shown(), [19, 33, '#step=19']);
     assert.match(await b.evaluate("document.getElementById('step-no').textContent"), /rows 15\.\.15/);
+  });
+  await check('c: the link to the step shown (copied, or shown to copy)', async () => {
+    await key('c');
+    const said = await until('the link said', async () => {
+      const t = await b.evaluate("document.getElementById('status').textContent");
+      return t.startsWith('link') && t;
+    });
+    assert.match(said, /^link( copied)?: file:\/\/.*t\.html#step=19$/);
   });
   await check('step N is numbered N in the counter, the list and the address', async () => {
     await b.evaluate("location.hash = '#step=12'");

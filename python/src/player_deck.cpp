@@ -178,7 +178,7 @@ class OpTable {
 
 Deck write_deck(viz::FrameSequence& frames, std::size_t first, std::size_t last) {
   OpTable table;
-  std::ostringstream runs, labels;
+  std::ostringstream runs, labels, rows;
   viz::Size size;
   viz::Scalar background;
   for (std::size_t i = first; i <= last; ++i) {
@@ -203,6 +203,13 @@ Deck write_deck(viz::FrameSequence& frames, std::size_t first, std::size_t last)
     runs << "]";
     labels << (i == first ? "" : ",")
            << json_string(viz::step_label(frames.plan(), frames.steps()[i]));
+    // The scanlines a step shows, for the player's g (go to a row's step).
+    const viz::Step& s = frames.steps()[i];
+    rows << (i == first ? "" : ",");
+    if (s.kind == viz::StepKind::scanlines)
+      rows << "[" << s.first_row << "," << s.last_row << "]";
+    else
+      rows << "null";
   }
   std::ostringstream out;
   out << "{\"w\":" << size.width << ",\"h\":" << size.height << ",\"bg\":\""
@@ -211,7 +218,8 @@ Deck write_deck(viz::FrameSequence& frames, std::size_t first, std::size_t last)
   out << ",\n\"ops\":[";
   const auto& ops = table.ops();
   for (std::size_t k = 0; k < ops.size(); ++k) out << (k ? ",\n" : "") << *ops[k];
-  out << "],\n\"frames\":[" << runs.str() << "],\n\"labels\":[" << labels.str() << "]}";
+  out << "],\n\"frames\":[" << runs.str() << "],\n\"labels\":[" << labels.str() << "],\n\"rows\":["
+      << rows.str() << "]}";
   return {out.str(), last - first + 1, ops.size()};
 }
 

@@ -52,7 +52,7 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 }
 
 // The first word that is not an option of the main command, when it names no subcommand: CLI11
-// would only say "A subcommand is required" (issue 36), which does not tell a typo from a
+// would only say "A subcommand is required", which does not tell a typo from a
 // missing word. The closest name within two edits is suggested.
 std::optional<std::string> unknown_subcommand(const CLI::App& app, int argc, char** argv,
                                               std::span<const char* const> left_out) {

@@ -332,7 +332,7 @@ void half_canvas_limit(BenchRun& run) {
   jobs.push_back({"memset", [&] { limit.fill_all(Bgr8{7, 8, 9}); }});
   // memset itself, of a one-byte value, for comparison: glibc writes it with `rep stosb`, which
   // no store of a 3-byte pattern matches (docs/performance.md, "The clear"). The targets are
-  // against the pixel limit above, as issue 16 measured them.
+  // against the pixel limit above, the fastest a store of the canvas can be.
   jobs.push_back({"memset of one byte", [&] {
                     std::memset(static_cast<void*>(limit.row(0)), 7,
                                 static_cast<std::size_t>(pixels) * sizeof(Bgr8));
@@ -573,7 +573,7 @@ void occlusion(BenchRun& run) {
             st.triangles_hidden, st.triangles_rejected, 100 * share, st.pixels_clipped,
             same ? "yes" : "**no**");
         const bool hides = w.name.find("nothing hidden") == std::string::npos;
-        if (zbuffer) continue;  // the issue's targets are the painter's
+        if (zbuffer) continue;  // the targets are set for the painter's order
         if (w.name == "course scene" && sh == Shading::flat && bytes) {
           run.targets.push_back(
               {"course scene, flat: near to far / far to near", t[1] / t[0], "≤ 0.5", false});

@@ -140,7 +140,7 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool beside_triangle_flags) {
     add_deprecated_alias(cmd, "--model-size", "--size", f.size)->check(parsed_by(parse_size));
   } else {
     add_canvas_size_option(cmd, f.size);
-    // The model's old name for the canvas works here as on trace, explain and step (issue 36).
+    // The model's old name for the canvas works here as on trace, explain and step, so one spelling works everywhere.
     add_deprecated_alias(cmd, "--model-size", "--size", f.size)->check(parsed_by(parse_size));
     // render spelled the model's colours --colors before they had one name everywhere.
     add_deprecated_alias(cmd, "--colors", "--model-colors", f.colors)

@@ -80,7 +80,7 @@ void check_selection(
                          "), so there is nothing to trace");
   if (!filter.rows) return;
   // The rows the selected faces can cover: `--triangles 40 --rows 0:5` of a face far below gave
-  // a trace without a scanline and exit 0 (issue 36).
+  // a trace without a scanline and exit 0, which looked like success.
   const auto [first, last] =
       std::visit([&](const auto& x) { return selected_rows(x, filter); }, in);
   const std::int64_t lo = std::max<std::int64_t>(first, 0),

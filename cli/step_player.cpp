@@ -2,89 +2,120 @@
 
 #include <algorithm>
 #include <charconv>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
 #include <spdlog/fmt/fmt.h>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/atomic_write.hpp"
 #include "viz/frame_layout.hpp"
 #include "viz/step_label.hpp"
 #include "viz/typography.hpp"
+#include "viz/web_player_files.hpp"
 
 namespace scantrace::cli {
 
-PlayerKey decode_key(int code) {
-  if (code < 0) return PlayerKey::none;
+namespace {
+
+// The name of a key code, as keys.json spells keys (KeyboardEvent.key): the backends' codes of
+// keys without text, else the character ("" for none).
+std::string key_name(int code) {
   switch (code) {
     // Qt (OpenCV's Qt backend passes Qt::Key for keys without text), GTK/X11 keysyms, Windows.
     case 0x01000014:
     case 0xff53:
     case 0x270000:
-      return PlayerKey::next;
+      return "ArrowRight";
     case 0x01000012:
     case 0xff51:
     case 0x250000:
-      return PlayerKey::previous;
+      return "ArrowLeft";
     case 0x01000017:
     case 0xff56:
     case 0x220000:
-      return PlayerKey::forward10;
+      return "PageDown";
     case 0x01000016:
     case 0xff55:
     case 0x210000:
-      return PlayerKey::back10;
+      return "PageUp";
     case 0x01000010:
     case 0xff50:
     case 0x240000:
-      return PlayerKey::first;
+      return "Home";
     case 0x01000011:
     case 0xff57:
     case 0x230000:
-      return PlayerKey::last;
+      return "End";
     case 0x01000004:
     case 0x01000005:
     case 0xff0d:
     case 0xff8d:
     case '\r':
     case '\n':
-      return PlayerKey::enter;
+      return "Enter";
     case 0x01000003:
     case 0xff08:
     case 8:
-      return PlayerKey::backspace;
+      return "Backspace";
     case 0x01000000:
     case 0xff1b:
     case 27:
-      return PlayerKey::quit;
+      return "Escape";
     default:
       break;
   }
-  switch (code & 0xff) {  // GTK adds modifier bits above the character
-    case ' ':
-    case 'n':
-      return PlayerKey::next;
-    case 'p':
-      return PlayerKey::previous;
-    case 'g':
-      return PlayerKey::go_to_row;
-    case 'a':
-      return PlayerKey::play;
-    case 'r':
-      return PlayerKey::toggle_rows;
-    case 's':
-      return PlayerKey::save;
-    case '?':
-      return PlayerKey::help;
-    case 'q':
-      return PlayerKey::quit;
-    case '-':
-      return PlayerKey::minus;
-    default:
-      if ((code & 0xff) >= '0' && (code & 0xff) <= '9' && code < 0x10000) return PlayerKey::digit;
-      return PlayerKey::none;
-  }
+  const int c = code & 0xff;  // GTK adds modifier bits above the character
+  if (c < ' ' || c > '~') return "";
+  // A digit only below the modifier bits: Qt's F keys (0x01000030..) hold one in their low byte.
+  if (c >= '0' && c <= '9' && code >= 0x10000) return "";
+  return std::string(1, static_cast<char>(c));
+}
+
+// The window's keys: keys.json's actions of the "window" player (web/player/keys.json, shared
+// with every page's player), each key's action as a PlayerKey.
+const std::map<std::string, PlayerKey>& window_keys() {
+  static const std::map<std::string, PlayerKey> keys = [] {
+    const std::map<std::string, PlayerKey> actions = {{"next", PlayerKey::next},
+                                                      {"previous", PlayerKey::previous},
+                                                      {"forward10", PlayerKey::forward10},
+                                                      {"back10", PlayerKey::back10},
+                                                      {"first", PlayerKey::first},
+                                                      {"last", PlayerKey::last},
+                                                      {"go_to_row", PlayerKey::go_to_row},
+                                                      {"play", PlayerKey::play},
+                                                      {"toggle_rows", PlayerKey::toggle_rows},
+                                                      {"save", PlayerKey::save},
+                                                      {"help", PlayerKey::help},
+                                                      {"quit", PlayerKey::quit}};
+    std::map<std::string, PlayerKey> out;
+    const nlohmann::json table = nlohmann::json::parse(viz::web_player::keys_json);
+    for (const nlohmann::json& a : table["actions"]) {
+      const auto& in = a["in"];
+      if (std::find(in.begin(), in.end(), "window") == in.end()) continue;
+      const auto action = actions.find(a["action"].get<std::string>());
+      if (action == actions.end())
+        throw std::logic_error("keys.json: the window has no action " + a["action"].dump());
+      for (const auto& k : a["keys"]) out.emplace(k.get<std::string>(), action->second);
+    }
+    return out;
+  }();
+  return keys;
+}
+
+}  // namespace
+
+PlayerKey decode_key(int code) {
+  if (code < 0) return PlayerKey::none;
+  const std::string name = key_name(code);
+  if (name == "Enter") return PlayerKey::enter;
+  if (name == "Backspace") return PlayerKey::backspace;
+  if (const auto k = window_keys().find(name); k != window_keys().end()) return k->second;
+  if (name == "-") return PlayerKey::minus;
+  if (name.size() == 1 && name[0] >= '0' && name[0] <= '9') return PlayerKey::digit;
+  return PlayerKey::none;
 }
 
 int status_strip_height(int height) {
@@ -223,7 +254,7 @@ bool StepPlayer::key(int code) {
       help_ = !help_;
       break;
     case PlayerKey::quit:
-      // Esc closes the keys first; q always quits, as the keys say (issue 36: it only closed them).
+      // Esc closes the keys first; q always quits, as the keys say.
       if (help_ && (code & 0xff) != 'q') {
         help_ = false;
         break;
@@ -288,7 +319,7 @@ cv::Mat StepPlayer::image() {
 
 std::filesystem::path StepPlayer::save() {
   std::vector<unsigned char> png;
-  // What the window shows (issue 36): the frame with its boxes, and the status line.
+  // What the window shows, so the file matches the screen: the frame with its boxes, and the status line.
   if (!cv::imencode(".png", image(), png))
     throw std::runtime_error(fmt::format("cannot encode step {} as PNG", index_ + 1));
   const std::filesystem::path file =

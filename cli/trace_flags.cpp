@@ -134,7 +134,7 @@ void TraceFlags::check(const std::string& fill_rule, const std::string& method) 
       throw CLI::ValidationError("--fill-rule",
                                  "closed is not defined for general polygons (where edges cross "
                                  "or contours touch); use top-left");
-    // A usage error like the one above, before the fill refuses it as bad input (issue 36).
+    // A usage error like the one above, before the fill refuses it as bad input.
     if (method == "halfspace")
       throw CLI::ValidationError("--method",
                                  "halfspace tests convex half-planes, which a general polygon "

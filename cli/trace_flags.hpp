@@ -1,5 +1,5 @@
 #pragma once
-// What to trace and how much, shared by `trace` and (with the replay issue) `explain`:
+// What to trace and how much, shared by `trace` and `explain`:
 //   (SCENE | --triangle "x0,y0 x1,y1 x2,y2" [--colors "r,g,b r,g,b r,g,b"] [--size WxH]
 //          | --polygon "x,y x,y … | x,y …" [--colors "r,g,b …"] [--winding even-odd|non-zero])
 //   [--level triangle|scanline|pixel] [--triangles 3,17,40-45] [--rows A:B] [--max-events N]

@@ -129,7 +129,7 @@ Command add_why_command(CLI::App& app) {
                 "print one JSON document instead of text (schema:\n"
                 "trace/why_schema.json)");
   // Checked while parsing, as replay's -o is: a bad extension is a usage error before the
-  // story is printed, not an error after it (issue 36).
+  // story is printed, not an error after it.
   cmd->add_option("--explain", args->explain,
                   "also replay the faces around the pixel into OUT.mp4,\n"
                   "OUT_DIR/ or OUT.html (as 'replay' writes them)")

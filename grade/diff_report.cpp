@@ -35,6 +35,12 @@ nlohmann::json category_runs(const std::vector<std::uint8_t>& map) {
 
 }  // namespace
 
+std::optional<Category> category_named(std::string_view name) {
+  for (std::size_t i = 0; i < kCategoryCount; ++i)
+    if (name == kCategories[i]) return category_at(i);
+  return std::nullopt;
+}
+
 nlohmann::json DiffReport::to_json() const {
   nlohmann::json global_json = nlohmann::json::array();
   for (const auto& g : global)

@@ -19,6 +19,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
@@ -30,12 +31,33 @@
 
 namespace scantrace::grade {
 
-// The per-pixel categories, in the order they are tried (the names of the JSON report).
-inline constexpr std::array<const char*, 11> kCategories{
-    "boundary",  "near_boundary", "widened",          "shifted", "order",      "order_tie",
+// The per-pixel categories, in the order they are tried (docs/grading.md's table).
+enum class Category : std::uint8_t {
+  boundary,
+  near_boundary,
+  widened,
+  shifted,
+  order,
+  order_tie,
+  missing_face,
+  degenerate_drawn,
+  colour,
+  background,
+  other
+};
+inline constexpr std::size_t kCategoryCount = 11;
+// Their names, indexed by Category: the JSON report's keys, diff.png's legend.
+inline constexpr std::array<const char*, kCategoryCount> kCategories{
+    "boundary",     "near_boundary",    "widened", "shifted",    "order", "order_tie",
     "missing_face", "degenerate_drawn", "colour",  "background", "other"};
-// Index of a category name in kCategories; -1 when unknown.
-int category_index(const std::string& name);
+constexpr const char* category_name(Category c) {
+  return kCategories[static_cast<std::size_t>(c)];
+}
+constexpr Category category_at(std::size_t index) {
+  return static_cast<Category>(index);
+}
+// The category of a name of kCategories; none for any other text.
+std::optional<Category> category_named(std::string_view name);
 
 struct DiffOptions {
   double tolerance = 1.0 / 255.0;  // per channel

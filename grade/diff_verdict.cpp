@@ -24,7 +24,8 @@ class Verdicts {
     if (wide.empty()) outline();  // a span too wide puts its right end on outlines: not another rule
     missing_faces();
     colours();
-    if (at("degenerate_drawn") >= share()) name("degenerate_drawn", count("degenerate_drawn"));
+    if (at(Category::degenerate_drawn) >= share())
+      name("degenerate_drawn", count(Category::degenerate_drawn));
     if (!explained_)
       out_.push_back({"", "no usual mistake explains most of the differing pixels",
                       "the categories below say where they are"});
@@ -32,11 +33,11 @@ class Verdicts {
   }
 
  private:
-  std::int64_t at(const char* category) const { return r_.categories.at(category); }
+  std::int64_t at(Category c) const { return r_.categories.at(category_name(c)); }
   double share() const { return kVerdictShare * static_cast<double>(r_.differing_pixels); }
-  std::string count(const char* category) const {
-    return fmt::format("{} of the {} differing pixels are `{}`", at(category),
-                       r_.differing_pixels, category);
+  std::string count(Category c) const {
+    return fmt::format("{} of the {} differing pixels are `{}`", at(c), r_.differing_pixels,
+                       category_name(c));
   }
 
   void name(const std::string& id, std::string evidence) {
@@ -66,7 +67,7 @@ class Verdicts {
   }
 
   void order() {
-    const std::int64_t o = at("order"), t = at("order_tie");
+    const std::int64_t o = at(Category::order), t = at(Category::order_tie);
     if (static_cast<double>(o + t) < share()) return;
     name(t > o ? "order_unstable_on_ties" : "order_reversed",
          fmt::format("{} of the {} differing pixels show a face the reference paints earlier",
@@ -100,14 +101,14 @@ class Verdicts {
 
   // Faces moved by one pixel; and what the image cannot tell.
   void moved(const std::string& wide) {
-    const std::int64_t s = at("shifted");
+    const std::int64_t s = at(Category::shifted);
     const std::string settle =
         "`scantrace grade` on the code settles it: its probes fill one triangle at a time";
     if (!wide.empty() && 10 * s >= r_.differing_pixels) {
       out_.push_back({"", "an image cannot always tell " + wide + " from faces moved by one pixel",
                       fmt::format("{} pixels read as moved (`shifted`); {}", s, settle)});
     } else if (wide.empty() && static_cast<double>(s) >= share()) {
-      name("edge_lag", count("shifted"));
+      name("edge_lag", count(Category::shifted));
       out_.push_back({"",
                       "an image cannot always tell a face moved by one pixel from span ends "
                       "rounded or one pixel too wide",
@@ -119,15 +120,16 @@ class Verdicts {
   // pixels it would change; accumulated x changes some of them, and others the closed rule
   // would not (a left end one pixel short).
   void outline() {
-    if (static_cast<double>(at("boundary")) < share() || e_.closed_rule_share < 0) return;
+    if (static_cast<double>(at(Category::boundary)) < share() || e_.closed_rule_share < 0) return;
     const std::string evidence =
-        fmt::format("{}; they are {:.0f} % of the pixels the closed rule changes", count("boundary"),
-                    100 * e_.closed_rule_share);
+        fmt::format("{}; they are {:.0f} % of the pixels the closed rule changes",
+                    count(Category::boundary), 100 * e_.closed_rule_share);
     name(e_.closed_rule_share >= 0.5 ? "closed_rule" : "float_drift", evidence);
   }
 
   void missing_faces() {
-    if (static_cast<double>(at("missing_face")) < share() || r_.missing_faces.empty()) return;
+    if (static_cast<double>(at(Category::missing_face)) < share() || r_.missing_faces.empty())
+      return;
     const auto horizontal = std::count_if(r_.missing_faces.begin(), r_.missing_faces.end(),
                                           [](const MissingFace& m) {
                                             return m.shape.find("horizontal edge") !=
@@ -140,7 +142,7 @@ class Verdicts {
   }
 
   void colours() {
-    if (static_cast<double>(at("colour")) < share() || r_.colour_diagnosis.empty()) return;
+    if (static_cast<double>(at(Category::colour)) < share() || r_.colour_diagnosis.empty()) return;
     const std::string& d = r_.colour_diagnosis.front();
     const auto has = [&](const char* words) { return d.find(words) != std::string::npos; };
     if (has("vertex's colour, not the mean"))
@@ -150,7 +152,7 @@ class Verdicts {
     else if (has("after sorting"))
       name("colours_paired_after_sort", d);
     else
-      out_.push_back({"", d, count("colour")}), explained_ = true;
+      out_.push_back({"", d, count(Category::colour)}), explained_ = true;
   }
 
   const DiffReport& r_;

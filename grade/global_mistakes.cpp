@@ -119,7 +119,8 @@ Scale255 find_scale_255(RgbImage& src, Color scene_background, double tol, bool 
   const bool keep_background = as_background > as_background_255;
   for (int y = 0; y < src.height(); ++y)
     for (Rgb32f* p = src.row(y); p != src.row(y) + src.width(); ++p)
-      if (!(keep_background && *p == background)) *p = {p->r / 255.0f, p->g / 255.0f, p->b / 255.0f};
+      if (!(keep_background && *p == background))
+        *p = {p->r / 255.0f, p->g / 255.0f, p->b / 255.0f};
   return s;
 }
 
@@ -127,8 +128,8 @@ namespace {
 
 // Colours in [0, 255] (find_scale_255), named when found and undone in `src` when `undo`. One
 // bright pixel, or a Gouraud colour extrapolated a little beyond a vertex's, is not a scale: the
-// pixels above 1 are then a note saying what they are, and are compared as they are (one pixel
-// at 1.01 would otherwise be 87,925 differing pixels).
+// pixels above 1 are then a note saying what they are, and are compared as they are (else one
+// pixel at 1.01 would make the whole image "scaled_255" and every pixel differ).
 void find_scaled_255(const Scene& scene, const SubmittedImage& in, double tol, bool undo,
                      RgbImage& src, std::vector<GlobalMistake>& found,
                      std::vector<std::string>& notes) {

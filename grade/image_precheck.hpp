@@ -8,7 +8,7 @@
 //   2. that size against the scene's canvas: when it is not the canvas's, the header alone
 //      answers (`canvas_size`, canvas_size_report) and nothing more is read or decoded — a
 //      746 KB PNG declaring 16000x16000 was decoded (6 GB, 8-16 s) against a 32x32 scene only to
-//      be reported the wrong size (issue 46 #16). The one exception is the canvas with width and
+//      be reported the wrong size. The one exception is the canvas with width and
 //      height swapped: whether the image is transposed only its pixels say, and it has as many
 //      pixels as the canvas;
 //   3. the memory its decoding needs (io/memory_budget.hpp) and a PNG's chunks

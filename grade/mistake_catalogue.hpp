@@ -1,5 +1,5 @@
 #pragma once
-// The one mistake catalogue (issue 50): python/scantrace/grade/mistakes.json, embedded into this
+// The one mistake catalogue, so every reader names a mistake alike: python/scantrace/grade/mistakes.json, embedded into this
 // library at build time (grade/CMakeLists.txt generates mistake_catalogue_data.cpp from it), so
 // `diff`'s verdicts speak the grader's words and both use one set of whole-image tolerances.
 #include <string>

@@ -33,7 +33,7 @@ NpyHeader parse_npy_header(std::string_view bytes, const std::string& name);
 struct NpyLayout {
   int height = 0, width = 0;
   std::string dtype;
-  bool integer = false;   // an integer dtype: 8-bit values 0..255 (any width, issue 47)
+  bool integer = false;   // an integer dtype: 8-bit values 0..255 (any width)
   bool is_signed = false;  // of an integer dtype
   std::size_t item = 0;    // bytes per value: 1, 2, 4 or 8
   std::size_t data = 0;  // offset of the first value

@@ -159,130 +159,172 @@ class Machine {
   }
 
  private:
+  // One opcode, by family; an opcode no numpy pickle uses is refused.
   void step(unsigned char op) {
-    switch (op) {
-      case 0x80:
-        read(1);
-        return;  // PROTO
-      case 0x95:
-        read(8);
-        return;  // FRAME: its length only groups opcodes
-      case 0x98:
-        return;  // READONLY_BUFFER: the value stays as it is
-      case '(':
-        mark();
-        return;  // MARK
-      case 'N':
-        push_new(Value::Kind::none);
-        return;
-      case 0x88:
-        push_integer(1, Value::Kind::boolean);
-        return;  // NEWTRUE
-      case 0x89:
-        push_integer(0, Value::Kind::boolean);
-        return;  // NEWFALSE
-      case 'K':
-        push_integer(unsigned_le(read(1)));
-        return;  // BININT1
-      case 'M':
-        push_integer(unsigned_le(read(2)));
-        return;  // BININT2
-      case 'J':
-        push_integer(static_cast<std::int32_t>(unsigned_le(read(4))));
-        return;  // BININT
-      case 0x8a:
-        long1();
-        return;  // LONG1
-      case 'X':
-        push_string(Value::Kind::text, unsigned_le(read(4)));
-        return;  // BINUNICODE
-      case 0x8c:
-        push_string(Value::Kind::text, unsigned_le(read(1)));
-        return;  // SHORT_BINUNICODE
-      case 0x8d:
-        push_string(Value::Kind::text, unsigned_le(read(8)));
-        return;  // BINUNICODE8
-      case 'C':
-        push_string(Value::Kind::bytes, unsigned_le(read(1)));
-        return;  // SHORT_BINBYTES
-      case 'B':
-        push_string(Value::Kind::bytes, unsigned_le(read(4)));
-        return;  // BINBYTES
-      case 0x8e:
-        push_string(Value::Kind::bytes, unsigned_le(read(8)));
-        return;  // BINBYTES8
-      case 0x96:
-        push_string(Value::Kind::bytes, unsigned_le(read(8)));
-        return;  // BYTEARRAY8
-      case ')':
-        push_container(Value::Kind::tuple, {});
-        return;  // EMPTY_TUPLE
-      case 0x85:
-        push_container(Value::Kind::tuple, pop_n(1));
-        return;  // TUPLE1
-      case 0x86:
-        push_container(Value::Kind::tuple, pop_n(2));
-        return;  // TUPLE2
-      case 0x87:
-        push_container(Value::Kind::tuple, pop_n(3));
-        return;  // TUPLE3
-      case 't':
-        push_container(Value::Kind::tuple, pop_mark());
-        return;  // TUPLE
-      case ']':
-        push_container(Value::Kind::list, {});
-        return;  // EMPTY_LIST
-      case '}':
-        push_container(Value::Kind::dict, {});
-        return;  // EMPTY_DICT
-      case 'a':
-        add_items(Value::Kind::list, pop_n(1));
-        return;  // APPEND
-      case 'e':
-        add_items(Value::Kind::list, pop_mark());
-        return;  // APPENDS
-      case 's':
-        add_items(Value::Kind::dict, pop_n(2));
-        return;  // SETITEM
-      case 'u':
-        add_items(Value::Kind::dict, pop_mark());
-        return;  // SETITEMS
-      case 'q':
-        memo_put(unsigned_le(read(1)));
-        return;  // BINPUT
-      case 'r':
-        memo_put(unsigned_le(read(4)));
-        return;  // LONG_BINPUT
-      case 0x94:
-        memo_put(memo_.size());
-        return;  // MEMOIZE
-      case 'h':
-        memo_get(unsigned_le(read(1)));
-        return;  // BINGET
-      case 'j':
-        memo_get(unsigned_le(read(4)));
-        return;    // LONG_BINGET
-      case 'c': {  // GLOBAL: module and name, one line each (in this order: not as arguments)
-        const std::string module = line();
-        global(module, line());
-        return;
-      }
-      case 0x93:
-        stack_global();
-        return;  // STACK_GLOBAL
-      case 'R':
-        reduce();
-        return;  // REDUCE
-      case 'b':
-        build();
-        return;  // BUILD
-      default:
-        break;
-    }
+    if (framing(op) || scalar(op) || text_or_bytes(op) || container(op) || memo(op) || call(op))
+      return;
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02x", op);
     fail(std::string("opcode ") + hex + " ('" + (op >= 32 && op < 127 ? std::string(1, op) : "") +
          "') is not one a pickle of numpy arrays uses; refused");
+  }
+
+  // PROTO, FRAME, READONLY_BUFFER, MARK: nothing pushed but a mark.
+  bool framing(unsigned char op) {
+    switch (op) {
+      case 0x80:  // PROTO
+        read(1);
+        return true;
+      case 0x95:  // FRAME: its length only groups opcodes
+        read(8);
+        return true;
+      case 0x98:  // READONLY_BUFFER: the value stays as it is
+        return true;
+      case '(':  // MARK
+        mark();
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  // None, booleans and integers.
+  bool scalar(unsigned char op) {
+    switch (op) {
+      case 'N':
+        push_new(Value::Kind::none);
+        return true;
+      case 0x88:  // NEWTRUE
+        push_integer(1, Value::Kind::boolean);
+        return true;
+      case 0x89:  // NEWFALSE
+        push_integer(0, Value::Kind::boolean);
+        return true;
+      case 'K':  // BININT1
+        push_integer(unsigned_le(read(1)));
+        return true;
+      case 'M':  // BININT2
+        push_integer(unsigned_le(read(2)));
+        return true;
+      case 'J':  // BININT
+        push_integer(static_cast<std::int32_t>(unsigned_le(read(4))));
+        return true;
+      case 0x8a:  // LONG1
+        long1();
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  // Text and bytes, each with its length before it in 1, 4 or 8 bytes.
+  bool text_or_bytes(unsigned char op) {
+    struct Form {
+      unsigned char op;
+      Value::Kind kind;
+      int length_bytes;
+    };
+    static constexpr Form kForms[] = {
+        {'X', Value::Kind::text, 4},    // BINUNICODE
+        {0x8c, Value::Kind::text, 1},   // SHORT_BINUNICODE
+        {0x8d, Value::Kind::text, 8},   // BINUNICODE8
+        {'C', Value::Kind::bytes, 1},   // SHORT_BINBYTES
+        {'B', Value::Kind::bytes, 4},   // BINBYTES
+        {0x8e, Value::Kind::bytes, 8},  // BINBYTES8
+        {0x96, Value::Kind::bytes, 8},  // BYTEARRAY8
+    };
+    for (const Form& f : kForms)
+      if (f.op == op) {
+        push_string(f.kind, unsigned_le(read(static_cast<std::uint64_t>(f.length_bytes))));
+        return true;
+      }
+    return false;
+  }
+
+  // Tuples, lists and dicts: made empty or from the stack, and filled.
+  bool container(unsigned char op) {
+    switch (op) {
+      case ')':  // EMPTY_TUPLE
+        push_container(Value::Kind::tuple, {});
+        return true;
+      case 0x85:  // TUPLE1
+        push_container(Value::Kind::tuple, pop_n(1));
+        return true;
+      case 0x86:  // TUPLE2
+        push_container(Value::Kind::tuple, pop_n(2));
+        return true;
+      case 0x87:  // TUPLE3
+        push_container(Value::Kind::tuple, pop_n(3));
+        return true;
+      case 't':  // TUPLE
+        push_container(Value::Kind::tuple, pop_mark());
+        return true;
+      case ']':  // EMPTY_LIST
+        push_container(Value::Kind::list, {});
+        return true;
+      case '}':  // EMPTY_DICT
+        push_container(Value::Kind::dict, {});
+        return true;
+      case 'a':  // APPEND
+        add_items(Value::Kind::list, pop_n(1));
+        return true;
+      case 'e':  // APPENDS
+        add_items(Value::Kind::list, pop_mark());
+        return true;
+      case 's':  // SETITEM
+        add_items(Value::Kind::dict, pop_n(2));
+        return true;
+      case 'u':  // SETITEMS
+        add_items(Value::Kind::dict, pop_mark());
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  // The memo: values put aside by index and fetched again.
+  bool memo(unsigned char op) {
+    switch (op) {
+      case 'q':  // BINPUT
+        memo_put(unsigned_le(read(1)));
+        return true;
+      case 'r':  // LONG_BINPUT
+        memo_put(unsigned_le(read(4)));
+        return true;
+      case 0x94:  // MEMOIZE
+        memo_put(memo_.size());
+        return true;
+      case 'h':  // BINGET
+        memo_get(unsigned_le(read(1)));
+        return true;
+      case 'j':  // LONG_BINGET
+        memo_get(unsigned_le(read(4)));
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  // Globals (only numpy's few, allowed_global) and what calls them.
+  bool call(unsigned char op) {
+    switch (op) {
+      case 'c': {  // GLOBAL: module and name, one line each (in this order: not as arguments)
+        const std::string module = line();
+        global(module, line());
+        return true;
+      }
+      case 0x93:  // STACK_GLOBAL
+        stack_global();
+        return true;
+      case 'R':  // REDUCE
+        reduce();
+        return true;
+      case 'b':  // BUILD
+        build();
+        return true;
+      default:
+        return false;
+    }
   }
 
   // --- reading the byte stream ---

@@ -15,7 +15,7 @@ set -euo pipefail
 # io/scene_json_fast.hpp.)
 # (ccache: scripts/build.sh compiles through it when it is installed; the demo installs it too, so
 # that the demo's build and the full one use the same compiler launcher and the full build reuses
-# the demo's objects instead of compiling everything again, issue 36.)
+# the demo's objects instead of compiling everything again.)
 demo_packages=(cmake g++ make pkg-config libspdlog-dev nlohmann-json3-dev libsimdjson-dev libdeflate-dev
                libcli11-dev libtinyobjloader-dev libhwy-dev ccache)
 

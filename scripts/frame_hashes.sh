@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The sha256 of every PNG frame a scantrace binary draws for four replays that together use every
-# kind of frame (issue 32: the display-list refactor must leave them byte for byte as they were):
+# kind of frame, so that a change to the drawing can be shown to leave them byte for byte:
 #   triangle  explain of the course's example triangle (47 steps: cards, edge table, scanlines, insets)
 #   painter   explain of the built-in demo scene (painter's algorithm, batches)
 #   zbuffer   explain of an OBJ model with interpenetrating faces (z-buffer, rejected pixels)

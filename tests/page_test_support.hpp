@@ -40,7 +40,7 @@ inline nlohmann::json page_data(const std::string& page) {
   const std::string start = "const DATA = ";
   const std::size_t a = page.find(start);
   REQUIRE(a != std::string::npos);
-  const std::size_t b = page.find(";\n(function", a);
+  const std::size_t b = page.find(";\n", a);  // the data is one line
   REQUIRE(b != std::string::npos);
   return nlohmann::json::parse(page.substr(a + start.size(), b - a - start.size()));
 }

@@ -34,13 +34,14 @@
 
 namespace scantrace::viz {
 
-// How text is written: its strokes ("T"); its glyphs placed from the frame's glyph table ("G",
-// whole frames only); or, for one op, as
+// How text is written: `strokes`, its strokes ("T"); `glyph_table`, its glyphs placed from the
+// frame's glyph table ("G", whole frames only); or `text_with_font`, for one op, the text itself
+// with what lays it out:
 //   ["t", clip, mark, text, colour, thickness, font, scale, x, y]   (font: OpenCV's number; the
 // scale with 17 digits; origin on the baseline), for a reader that holds the Hershey glyphs and
 // repeats hershey_strokes() (the Jupyter player's deck, python/src/player_deck.hpp: strokes are
 // ~95 % of a frame's JSON).
-enum class TextForm { strokes, glyphs, glyph_table };
+enum class TextForm { strokes, text_with_font, glyph_table };
 
 // A pixel block's last element, as JSON (by default the PNG data URI as a string): the
 // WebAssembly module writes the offset of its RGBA bytes instead (web/bindings_trace.cpp).

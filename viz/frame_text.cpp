@@ -15,9 +15,9 @@ namespace {
 // The cents %.2f prints of v at a tie's neighbourhood: v·100 rounded (r) is within 1e-6 of the
 // tie t = floor(r) + 0.5, where rounding r says nothing, and %.2f rounds v's exact binary value,
 // half to even on the tie itself. Decided exactly, in integers: with |v| = m / 2^s (m below 2^53),
-// 200·|v| = 200·m / 2^s (200·m below 2^61) against the odd integer |2t|. (These were printed and,
-// for the canvas's numbers, parsed back, by emscripten's snprintf and strtod, whose long double is
-// emulated: a tenth of a drag move's frame in the explorer's module, docs/performance.md.)
+// 200·|v| = 200·m / 2^s (200·m below 2^61) against the odd integer |2t|. (Not snprintf and
+// strtod: emscripten emulates their long double, too slow for a frame per drag move;
+// docs/performance.md.)
 long long cents_at_tie(double v, double r) {
   const auto k = static_cast<std::uint64_t>(std::llabs(2 * static_cast<long long>(std::floor(r)) + 1));
   const std::uint64_t below = (k - 1) / 2, above = below + 1;  // |cents| on either side
@@ -50,7 +50,7 @@ bool cents(double v, long long& n) {
 
 }  // namespace
 
-std::string number(double v) {
+std::string markup_number(double v) {
   // Two decimals are finer than any backend draws; trailing zeros dropped. A frame's canvas JSON
   // prints thousands of these (the text's strokes), and snprintf of a double is slow where long
   // double is emulated (emscripten's musl: 43 ms of a frame's 137 in the explorer's module):
@@ -73,7 +73,7 @@ std::string number(double v) {
 
 double number_value(double v) {
   // n / 100.0 is the double nearest n/100 (IEEE division rounds correctly), as is what a JSON
-  // reader makes of number()'s digits; "0" for -0.004 too.
+  // reader makes of markup_number()'s digits; "0" for -0.004 too.
   if (long long n = 0; cents(v, n)) return n == 0 ? 0.0 : static_cast<double>(n) / 100.0;
   return std::strtod(number_by_printf(v).c_str(), nullptr);
 }
@@ -89,8 +89,7 @@ std::string number_by_printf(double v) {
 }
 
 std::string hex_colour(const Scalar& c) {
-  // Without snprintf: emscripten's formatting was a tenth of a frame's JSON in the browser
-  // (docs/performance.md); every op writes a colour.
+  // Without snprintf, slow in emscripten (docs/performance.md): every op writes a colour.
   static constexpr char kHex[] = "0123456789abcdef";
   std::string out = "#000000";
   for (int i = 0; i < 3; ++i) {
@@ -138,7 +137,7 @@ bool xml_char(char32_t c) {
 std::string xml_escape(const std::string& s) {
   // A trace's strings (its generator, its file's name) are anyone's bytes: a character XML 1.0
   // forbids (ESC, U+FFFF) or a byte that is not UTF-8 made the SVG frame a document no parser
-  // reads (issue 46, "PCDATA invalid Char value 27"). XML has no escape for them (&#27; is not
+  // reads ("PCDATA invalid Char value 27"). XML has no escape for them (&#27; is not
   // well-formed either): each becomes U+FFFD, as a UTF-8 decoder shows a byte it cannot read.
   std::string out;
   out.reserve(s.size());

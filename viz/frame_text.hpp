@@ -9,11 +9,12 @@
 namespace scantrace::viz::frame_text {
 
 // At most two decimals, trailing zeros dropped ("12.5", "3", "-0.25").
-std::string number(double v);
-// The number a reader of number(v)'s digits gets, as a double (the canvas frame's numbers
+std::string markup_number(double v);
+// The number a reader of markup_number(v)'s digits gets, as a double (the canvas frame's numbers
 // without their text, viz/frame_json.hpp's to_numbers).
 double number_value(double v);
-// The same digits by snprintf("%.2f") alone: number()'s reference (tests/viz/test_frame_text.cpp).
+// The same digits by snprintf("%.2f") alone: markup_number()'s reference
+// (tests/viz/test_frame_text.cpp).
 std::string number_by_printf(double v);
 // "#rrggbb" of a BGR colour.
 std::string hex_colour(const Scalar& c);

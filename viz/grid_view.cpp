@@ -62,9 +62,8 @@ void GridView::cells(const CanvasState& state, std::optional<Color> background) 
                       palette::kOutsideCanvas[2]);
   // Per column of the view, once: a row of the canvas as it shows unwritten (`blank`: outside
   // the canvas or empty), and the window's column it shows, or -1 (outside the window). Each row
-  // is then its blank row copied, and the written pixels of the window put on it: deciding
-  // every frame pixel in turn from its canvas coordinates was a fifth of the explorer's step
-  // frame in its module (docs/performance.md, "Ninth round").
+  // is then its blank row copied, and the written pixels of the window put on it, rather than
+  // deciding every frame pixel from its canvas coordinates (docs/performance.md, "Ninth round").
   const std::int64_t wx0 = state.window().x, wx1 = wx0 + state.window().width;
   std::vector<Vec3b> blank(w);
   std::vector<int> window_column(w, -1);
@@ -79,8 +78,8 @@ void GridView::cells(const CanvasState& state, std::optional<Color> background) 
   for (int r = 0; r < v.height; ++r) {
     const std::int64_t y = geometry_.pixel_y(v.y + r);
     Vec3b* out = cells->data() + static_cast<std::size_t>(r) * w;
-    // A row of the same canvas row as the one above: a copy of it (a cell is many frame rows;
-    // this loop was a sixth of a browser's drag move, docs/performance.md).
+    // A row of the same canvas row as the one above: a copy of it (a cell is many frame rows,
+    // and the explorer draws a frame per drag move).
     if (r > 0 && y == previous_y) {
       std::copy(out - v.width, out, out);
       continue;
@@ -321,7 +320,7 @@ void GridView::active_point_labels(const trace::Scanline& row) {
     if (n >= 2 && i == 0) preferred = {-1, -1};
     if (n >= 2 && i == n - 1) preferred = {1, -1};
     if (n > 2 && i > 0 && i + 1 < n && i % 2 == 1) preferred = {0, 1};
-    const std::string text = fmt::format("x = {}", number(p.x, 2));
+    const std::string text = fmt::format("x = {}", display_number(p.x, 2));
     label(text, TextStyle::strong, around(text, TextStyle::strong, true, q, ring, preferred),
           palette::kLabelBox, palette::edge_colour(p.edge));
   }

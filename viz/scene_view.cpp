@@ -21,7 +21,7 @@ namespace {
 constexpr std::size_t kListedTriangles = 6;
 
 std::string depth_text(const std::optional<double>& d) {
-  return d ? number(*d, 3) : "-";
+  return d ? display_number(*d, 3) : "-";
 }
 
 // A bar from the farthest depth (left) to the nearest (right), filled up to the depth reached.
@@ -41,8 +41,8 @@ void depth_bar(PanelWriter& w, const Typography& type, const SceneSummary& scene
   }
   frame.rectangle(bar, palette::kMutedText, 1);
   w.gap(16);
-  const std::string left = fmt::format("far: depth {}", number(far, 3));
-  const std::string right = fmt::format("near: depth {}", number(near, 3));
+  const std::string left = fmt::format("far: depth {}", display_number(far, 3));
+  const std::string right = fmt::format("near: depth {}", display_number(near, 3));
   type.draw(frame, left, {w.left(), w.y()}, TextStyle::small, palette::kMutedText);
   type.draw(frame, right, {w.left() + w.width() - type.width(right, TextStyle::small), w.y()},
             TextStyle::small, palette::kMutedText);
@@ -152,7 +152,7 @@ void scene_panel_batch(PanelWriter& w, const trace::Trace& trace, const StepPlan
   const std::size_t n = plan.order.size();
   if (const trace::TriangleBegin* b = find_begin(trace, step.triangle)) {
     w.line(b->depth ? fmt::format("Highlighted: face {}, depth {}", step.triangle,
-                                  number(*b->depth, 4))
+                                  display_number(*b->depth, 4))
                     : fmt::format("Highlighted: face {}", step.triangle),
            TextStyle::strong);
     std::string vs = "vertices";

@@ -48,8 +48,8 @@ void edge_table(PanelWriter& w, const EdgeTableEvent& table, const TriangleBegin
   for (int i = 0; i < n && (listed < 0 || i < listed); ++i) {
     const EdgeEntry& e = table.edges[i];
     TableRow r;
-    r.cells = {edge_name(e.edge, b), number(e.y_min),    number(e.y_max),
-               number(e.x_at_y_min), number(e.dx_dy, 4), rows_text(e)};
+    r.cells = {edge_name(e.edge, b),         display_number(e.y_min),    display_number(e.y_max),
+               display_number(e.x_at_y_min), display_number(e.dx_dy, 4), rows_text(e)};
     r.marker = palette::edge_colour(e.edge);
     r.highlighted = i == newest;
     if (row)
@@ -83,7 +83,8 @@ void setup_panel(PanelWriter& w, const trace::Trace& t, const TriangleBegin& b) 
   w.gap(8);
   for (std::size_t i = 0; i < b.colors.size(); ++i)
     w.swatch(b.colors[i], fmt::format("v{} colour (r, g, b) = {}", i, colour(b.colors[i])));
-  if (b.depth) w.line(fmt::format("depth {} (mean of the vertex depths)", number(*b.depth, 4)));
+  if (b.depth)
+    w.line(fmt::format("depth {} (mean of the vertex depths)", display_number(*b.depth, 4)));
   w.gap(8);
   if (b.flat_color) {
     w.paragraph("Flat shading: every pixel gets one colour, the mean of the vertex colours:");
@@ -136,14 +137,15 @@ void entry_panel(PanelWriter& w, const trace::Trace& t, const TriangleBegin* b,
     w.gap(6);
     const bool tl = top_left_rule(t);
     w.formula({"dx/dy = (x_bottom - x_top) / (y_bottom - y_top)",
-               fmt::format("      = ({} - {}) / ({} - {}) = {}", number(bottom.x), number(top.x),
-                           number(bottom.y), number(top.y), number(e.dx_dy, 4)),
+               fmt::format("      = ({} - {}) / ({} - {}) = {}", display_number(bottom.x),
+                           display_number(top.x), display_number(bottom.y), display_number(top.y),
+                           display_number(e.dx_dy, 4)),
                fmt::format("active rows: {} = {}",
                            tl ? "ceil(y_min) .. ceil(y_max) - 1" : "ceil(y_min) .. floor(y_max)",
                            rows_text(e))});
   } else {
     const trace::HorizontalEntry& hz = table.horizontal[entry - n];
-    w.line(fmt::format("e{} is horizontal (y = {}): no entry", hz.edge, number(hz.y)),
+    w.line(fmt::format("e{} is horizontal (y = {}): no entry", hz.edge, display_number(hz.y)),
            TextStyle::strong);
     std::string reason = hz.reason;
     if (!reason.empty()) reason[0] = static_cast<char>(std::toupper(reason[0]));
@@ -170,7 +172,7 @@ std::string narrative(const trace::Trace& t, const Step& step, const Scanline& r
         fmt::format("{} {} the active edge table: row {} is the first row {}", id_list(row.entered),
                     many ? "enter" : "enters", row.y, many ? "they cross" : "it crosses");
     if (const EdgeEntry* e = find_edge(table, row.entered.front()))
-      s += fmt::format(" (y_min = {})", number(e->y_min));
+      s += fmt::format(" (y_min = {})", display_number(e->y_min));
     s += ". ";
   }
   if (!row.retired.empty()) {
@@ -178,7 +180,7 @@ std::string narrative(const trace::Trace& t, const Step& step, const Scanline& r
     s += fmt::format("{} {} it: row {} was {} last", id_list(row.retired),
                      many ? "leave" : "leaves", row.y - 1, many ? "their" : "its");
     if (const EdgeEntry* e = find_edge(table, row.retired.front()))
-      s += fmt::format(" (y_max = {})", number(e->y_max));
+      s += fmt::format(" (y_max = {})", display_number(e->y_max));
     s += ". ";
   }
   if (!row.span && row.active_points.size() >= 2)
@@ -216,7 +218,8 @@ void polygon_scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& s
     const bool inside = even_odd ? (winding & 1) != 0 : winding != 0;
     TableRow r;
     r.cells = {edge_name(a.edge, b), fixed(a.x, 3), d > 0 ? "+1 down" : "-1 up",
-               fmt::format("{}{}", winding, inside ? "  in" : "  out"), e ? number(e->y_max) : "?"};
+               fmt::format("{}{}", winding, inside ? "  in" : "  out"),
+               e ? display_number(e->y_max) : "?"};
     r.marker = palette::edge_colour(a.edge);
     aet.push_back(r);
   }
@@ -259,8 +262,8 @@ void active_edge_table(PanelWriter& w, const EdgeTableEvent* table, const Triang
   for (const trace::EdgeCrossing& a : row.active_edges) {
     TableRow r;
     const EdgeEntry* e = find_edge(table, a.edge);
-    r.cells = {edge_name(a.edge, b), fixed(a.x, 3), e ? number(e->dx_dy, 4) : "?",
-               e ? number(e->y_max) : "?"};
+    r.cells = {edge_name(a.edge, b), fixed(a.x, 3), e ? display_number(e->dx_dy, 4) : "?",
+               e ? display_number(e->y_max) : "?"};
     r.marker = palette::edge_colour(a.edge);
     aet.push_back(r);
   }
@@ -330,7 +333,7 @@ std::vector<std::string> scanline_formulas(const trace::Trace& t, const Step& st
     const double xl = row.active_points.front().x, xr = row.active_points.back().x;
     const double t0 = xr > xl ? (static_cast<double>(row.span->x_begin) - xl) / (xr - xl) : 0;
     f.push_back(fmt::format("      t({}) = ({} {}) / ({} {}) = {}", row.span->x_begin,
-                            row.span->x_begin, minus_term(xl, 2), number(xr, 2),
+                            row.span->x_begin, minus_term(xl, 2), display_number(xr, 2),
                             minus_term(xl, 2), fixed(t0, 4)));
   }
   f.push_back("c_L, c_R: interpolated the same way along their edges, in y");

@@ -13,11 +13,11 @@ namespace scantrace::viz {
 namespace {
 
 using frame_text::hex_colour;
-using frame_text::number;
+using frame_text::markup_number;
 
 // A pixel-centre coordinate (OpenCV) as an SVG coordinate.
 std::string at(double v) {
-  return number(v + 0.5);
+  return markup_number(v + 0.5);
 }
 
 struct Writer {
@@ -45,7 +45,7 @@ struct Writer {
   void operator()(const CircleOp& c) const {
     out << "<circle cx=\"" << at(c.centre.x) << "\" cy=\"" << at(c.centre.y) << "\" r=\"";
     if (c.thickness < 0)  // the disc covers the pixels whose centres are within the radius
-      out << number(c.radius + 0.5) << "\" fill=\"" << hex_colour(c.colour) << "\"/>\n";
+      out << markup_number(c.radius + 0.5) << "\" fill=\"" << hex_colour(c.colour) << "\"/>\n";
     else
       out << c.radius << "\" fill=\"none\" stroke=\"" << hex_colour(c.colour)
           << "\" stroke-width=\"" << c.thickness << "\"/>\n";
@@ -87,9 +87,9 @@ std::string glyph_defs(const GlyphTable& glyphs) {
     for (const auto& stroke : glyphs.strokes(static_cast<int>(id)))
       for (std::size_t i = 0; i < stroke.size(); ++i) {
         out += i == 0 ? 'M' : 'L';
-        out += number(stroke[i].x);
+        out += markup_number(stroke[i].x);
         out += ' ';
-        out += number(stroke[i].y);
+        out += markup_number(stroke[i].y);
       }
     out += "\"/>\n";
   }

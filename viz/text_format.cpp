@@ -18,16 +18,16 @@ std::string fixed(double v, int decimals) {
 }
 
 std::string plus_term(double v, int decimals) {
-  const std::string magnitude = number(std::abs(v), decimals);
+  const std::string magnitude = display_number(std::abs(v), decimals);
   return (v < 0 && magnitude != "0" ? "- " : "+ ") + magnitude;
 }
 
 std::string minus_term(double v, int decimals) {
-  const std::string magnitude = number(std::abs(v), decimals);
+  const std::string magnitude = display_number(std::abs(v), decimals);
   return (v < 0 && magnitude != "0" ? "+ " : "- ") + magnitude;
 }
 
-std::string number(double v, int decimals) {
+std::string display_number(double v, int decimals) {
   std::string s = fixed(v, decimals);
   if (s.find('.') != std::string::npos) {
     while (s.back() == '0') s.pop_back();
@@ -50,7 +50,7 @@ std::string integer(std::int64_t v) {
 }
 
 std::string point(Vec2 p, int decimals) {
-  return fmt::format("({}, {})", number(p.x, decimals), number(p.y, decimals));
+  return fmt::format("({}, {})", display_number(p.x, decimals), display_number(p.y, decimals));
 }
 
 std::string colour(const Color& c, int decimals) {

@@ -10,7 +10,7 @@
 namespace scantrace::viz {
 
 // At most `decimals` decimals, trailing zeros dropped: 3.8333 -> "3.833", 20.0 -> "20".
-std::string number(double v, int decimals = 3);
+std::string display_number(double v, int decimals = 3);
 // Exactly `decimals` decimals, for columns that should line up.
 std::string fixed(double v, int decimals = 3);
 // `v` added or taken away in a formula, its sign as the operator: "+ 0.39", "- 0.39" (never

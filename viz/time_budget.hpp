@@ -2,7 +2,7 @@
 // How long a replay may take, checked while it draws: a frame's cost is measured, not assumed.
 // --max-frames bounds what a replay writes before it starts; but a frame of a 10⁶-triangle trace at
 // 4K, or an HTML page's frames, cost ten times a small one's, so 20,000 frames can be minutes or
-// hours (issue 37). After the first frames the rate so far gives the whole replay's duration; a
+// hours. After the first frames the rate so far gives the whole replay's duration; a
 // replay that would run past the budget stops there with one line saying the estimate, the frames
 // and how to shorten it — before hours are spent, and with nothing written (the sinks remove their
 // temporaries when they are not committed).

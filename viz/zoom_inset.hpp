@@ -2,10 +2,13 @@
 // When the whole triangle fits the view only with cells too small for a grid (the 280x380 demo
 // triangle gets ~1.5 px per pixel at 720p), the ends of the current span are what a student
 // needs to see pixel by pixel: where the edge crosses the row, which pixel centre is the first and
-// the last inside. Each end gets a magnified inset at a corner or the middle of a side of the view,
-// chosen among the places that cover no marker and no label to hide as little of the polygon as
-// possible; where nothing is free at full size the insets shrink, and where nothing is free at all
-// they are left out (the view never loses a vertex or an x value to them).
+// the last inside. A span that fits in one inset gets one, centred on it; a wider one gets an
+// inset for each end, and the two never show the same canvas pixel. Each inset is drawn at 18
+// design pixels a canvas pixel, at the place of a 9 x 9 grid over the view that covers no marker,
+// no label and not the span, and hides least of what the frames have filled so far, then of the
+// rest of the polygon and of the scanline; a smaller inset over empty canvas is preferred to a
+// large one over filled pixels, and where nothing is free at all they are left out (the view
+// never loses a vertex or an x value to them).
 #include <vector>
 
 #include "viz/frame.hpp"

@@ -35,7 +35,7 @@ int run(const std::function<void()>& work) {
           work();
         } catch (const nlohmann::json::exception& e) {
           // An option of the wrong type read with nlohmann's value(): a bad argument, said
-          // without the library's "[json.exception.type_error.302]" (issue 46 #13).
+          // without the library's "[json.exception.type_error.302]".
           const std::string what = e.what();
           const std::size_t end = what.find("] ");
           throw std::invalid_argument("options: a value of the wrong type (" +

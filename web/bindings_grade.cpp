@@ -71,7 +71,7 @@ extern "C" {
 
 // Why pixel (x, y) of the scene file at `path` has its colour: `scantrace why --json`'s document.
 // x and y come as doubles, so nothing is truncated on the way: 2^32 + 100, NaN or 100.9 are the
-// command's usage error (issue 46 #13), a pixel off the canvas its bad input.
+// command's usage error, a pixel off the canvas its bad input.
 EMSCRIPTEN_KEEPALIVE int st_why(const char* path, double x_in, double y_in, const char* options_json) {
   return web::run([&] {
     const int x = web::pixel_coordinate(x_in, 'X'), y = web::pixel_coordinate(y_in, 'Y');

@@ -100,7 +100,7 @@ void require_input(const nlohmann::json& in) {
 // 2^50), which the module applies to a trace's text and to frames' result: options.max_bytes,
 // lowered to the longest string a JavaScript engine makes (V8: 2^29 - 24 characters; the text is
 // ASCII), with room for the footer line the cap leaves on top. Without it a pixel-level trace of
-// 2048^2 was 493 MiB of text, and at 2600^2 V8 refused to make the string (issue 46 #14).
+// 2048^2 was 493 MiB of text, and at 2600^2 V8 refused to make the string.
 constexpr std::int64_t kCommandMaxBytes = std::int64_t{1} << 30;
 constexpr std::int64_t kLongestText = (std::int64_t{1} << 29) - 24 - 128;
 

@@ -23,6 +23,11 @@ const unmodule = (text) =>
     .replace(/^export default \w+;$/gm, '')
     .replace(/^export (class|async function|function|const) /gm, '$1 ');
 
+// The trace page's own scripts without their whole-line comments and indentation, which are for
+// their readers (a tenth of the course triangle's page, whose goal is 400 KB); none of these
+// files has a string running over lines.
+const uncommented = (text) => text.replace(/^[ \t]*\/\/.*\n/gm, '').replace(/^[ \t]+/gm, '');
+
 // A module's .wasm as the page holds it: gzip, base64.
 const inlined = (name) => zlib.gzipSync(fs.readFileSync(path.join(dir, name)), { level: 9 }).toString('base64');
 const helpers = `async function gunzipBase64(text) {
@@ -45,6 +50,8 @@ function showFatal(e) {
 }`;
 // The explorer's modules (web/explorer/), in an order where each follows those it imports.
 const explorerModules = ['state.js', 'answers.js', 'controls.js', 'view.js', 'controller.js', 'explorer.js'];
+// The player core's modules, each after those it imports.
+const playerCore = ['keys.mjs', 'controller.mjs', 'bind.mjs'];
 let script;
 if (kind === 'explorer') {
   // The full module (scantrace_wasm) and the JavaScript API.
@@ -67,7 +74,11 @@ gunzipBase64('${inlined('scantrace_wasm.wasm')}')
     unmodule(read(path.join(dir, 'scantrace_player.mjs'))),
     unmodule(read(path.join(here, 'player', 'player_api.mjs'))),
     helpers,
-    unmodule(read(path.join(here, 'player', 'player.js'))),
+    // The canvas drawer and the player core (keys.json, keys.mjs, controller.mjs, bind.mjs) the
+    // step page embeds too (cmake/web_player.cmake), then the trace page's own script.
+    uncommented(read(path.join(here, 'player', 'frame_draw.js'))),
+    `const SCANTRACE_KEYS = ${JSON.stringify(JSON.parse(read(path.join(here, 'player', 'keys.json'))), (k, v) => (k === 'about' ? undefined : v))};`,
+    ...[...playerCore, 'player.js'].map((m) => uncommented(unmodule(read(path.join(here, 'player', m))))),
     'const page = /*SCANTRACE_PAGE_DATA*/null;',
     `Promise.all([gunzipBase64('${inlined('scantrace_player.wasm')}'), gunzipBase64(page.trace)])
   .then(([wasmBinary, trace]) => loadPlayer(wasmBinary).then((pm) => startPlayer(pm, page.cfg, new TextDecoder().decode(trace))))

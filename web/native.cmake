@@ -42,7 +42,7 @@ if(SCANTRACE_BUILD_TESTS)
   # The module against the native command: pixels, traces, why and diff (web/tests/node_compare.mjs).
   add_node_command_test("web: node module equals the native command" node_compare 600 node)
   # The API checks its arguments as the command does, caps a trace's text, and pre-checks an
-  # image against the scene's canvas (web/tests/node_arguments.mjs; issue 46).
+  # image against the scene's canvas (web/tests/node_arguments.mjs).
   add_node_command_test("web: node API checks its arguments as the command does" node_arguments
                         300 arguments)
   # The trace page's module against the full one: its exports, its steps and frames
@@ -78,6 +78,15 @@ if(SCANTRACE_BUILD_TESTS)
                      $<TARGET_FILE:scantrace> ${CMAKE_BINARY_DIR}/web-tests/chromium)
     set_tests_properties("web: explorer in headless Chromium" PROPERTIES LABELS "web;browser"
                          FIXTURES_REQUIRED explorer_page TIMEOUT 300)
+    # At a projector's, a desktop's and a phone's sizes, screenshots kept in
+    # web-tests/chromium-sizes/screenshots/ (web/tests/chromium_explorer_sizes.mjs).
+    add_test(NAME "web: explorer at lecture sizes in headless Chromium"
+             COMMAND ${SCANTRACE_NODE} --experimental-websocket --no-warnings
+                     ${PROJECT_SOURCE_DIR}/web/tests/chromium_explorer_sizes.mjs
+                     ${CMAKE_BINARY_DIR}/web-tests/explorer.html
+                     ${CMAKE_BINARY_DIR}/web-tests/chromium-sizes)
+    set_tests_properties("web: explorer at lecture sizes in headless Chromium" PROPERTIES
+                         LABELS "web;browser" FIXTURES_REQUIRED explorer_page TIMEOUT 300)
   endif()
 endif()
 

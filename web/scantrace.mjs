@@ -41,7 +41,7 @@ export async function load(options = {}) {
 }
 
 // The checks the command makes of its arguments, made here before anything reaches the module
-// (which makes them again: web/bindings*.cpp), with the command's words (issue 46 #13): a value
+// (which makes them again: web/bindings*.cpp), with the command's words: a value
 // is never truncated into another one (`x | 0` made 2**32 + 100 pixel 100, NaN and "abc" pixel 0).
 function pixelCoordinate(v, axis) {
   // `scantrace why`'s X and Y: an int, 0 or more (from_chars into an int).

@@ -1,5 +1,7 @@
-"""A trace's replay in Python and inline in Jupyter: Trace.frames(), Trace.frame(), Trace.player()
-and Trace._repr_html_ (a trace in a cell's last line shows itself as the stepping player).
+"""A trace's replay inline in Jupyter: the Player behind Trace.player() and Trace._repr_html_ (a
+trace in a cell's last line shows itself as the stepping player). Those methods, with
+Trace.frames() and Trace.frame(), are defined on the type by the extension module
+(python/src/frame_bindings.cpp), which calls player() and _repr_html_() here.
 
 The frames are the replay's display lists (the frames of ``scantrace replay``, without OpenCV):
 one as SVG or canvas JSON, or all of them as the player's deck (python/src/player_deck.hpp), a
@@ -17,7 +19,6 @@ import os
 import pathlib
 
 from . import _scantrace
-from ._scantrace import Trace
 
 TRIANGLES_BUDGET = 1_000_000
 SCENE_BUDGET = 2_000_000
@@ -26,34 +27,11 @@ _DEFAULT_STEPS = {"max_scanline_steps": 40, "max_scene_steps": 100}
 _ids = itertools.count(1)
 
 
-def frames(self, *, frame_size=(1280, 720), mode="auto", rows_per_step=0, max_scanline_steps=40,
-           max_scene_steps=100):
-    """The replay of this trace, one frame per step (the steps of ``scantrace replay``).
-
-    mode: ``'auto'`` (one triangle step by step; several: the scene), ``'triangles'`` or
-    ``'scene'``. rows_per_step: scanlines per step (0: at most ``max_scanline_steps`` per
-    triangle). max_scene_steps: the painter's batches of a scene. Returns :class:`Frames`::
-
-        f = t.frames()
-        len(f), f.steps[5]['label']     # 'scanline y = 24 (5 of 380)'
-        f[5].to_svg()                   # the frame as a self-contained SVG document
-        f[5].marks('scanline')          # [{'kind': 'scanline', 'what': 'y = 24', 'box': ...}]
-    """
-    return _scantrace.frames(self, frame_size=frame_size, mode=mode, rows_per_step=rows_per_step,
-                             max_scanline_steps=max_scanline_steps,
-                             max_scene_steps=max_scene_steps, source="the trace")
-
-
-def frame(self, step, **options):
-    """The :class:`Frame` of replay step ``step`` (from 0; negative from the end); the options
-    are those of :meth:`frames`. ``t.frame(10).to_svg()``."""
-    return frames(self, **options)[step]
-
-
 class Player:
     """A trace's replay as one self-contained HTML player (``trace.player()``; a Trace in a cell's
     last line shows this). Buttons, a slider and keys step it (click it first: Right/Space/n next,
-    Left/p previous, PageDown/PageUp ten, Home/End, a play).
+    Left/p previous, PageDown/PageUp ten, Home/End, g and a row, a play, + and - its speed,
+    ? every key: web/player/keys.json).
 
     ``html`` is the player (an HTML fragment, what Jupyter shows), ``save(path)`` writes it as a
     page. ``steps`` is how many steps it holds, ``full_steps`` how many the replay has with the
@@ -66,7 +44,7 @@ class Player:
                                       not isinstance(max_bytes, (int, float)) or
                                       not max_bytes >= 1):
             raise ValueError(f"max_bytes: expected a positive number of bytes, got {max_bytes!r}")
-        first = frames(trace, frame_size=frame_size, mode=mode)
+        first = trace.frames(frame_size=frame_size, mode=mode)
         self.mode = first.mode
         self.max_bytes = int(max_bytes if max_bytes is not None else
                              TRIANGLES_BUDGET if self.mode == "triangles" else SCENE_BUDGET)
@@ -89,7 +67,7 @@ class Player:
             if smaller >= options[key]:
                 break
             options[key] = smaller
-            replay = frames(trace, frame_size=self.frame_size, mode=mode, **options)
+            replay = trace.frames(frame_size=self.frame_size, mode=mode, **options)
             deck, _ = replay.deck()
         steps = len(replay)
         # Batching cannot shrink it further (many triangles, each with its set-up and edge
@@ -143,21 +121,26 @@ def player_html(deck_json, steps, note, frame_size):
         # Geometric shapes every font has (the media symbols U+23E9.. are missing from many).
         for act, text, tip in (("first", "|&#x25C0;", "first step (Home)"),
                                ("back10", "&#x25C0;&#x25C0;", "10 steps back (PageUp)"),
-                               ("prev", "&#x25C0;", "previous step (Left, p)"),
+                               ("previous", "&#x25C0;", "previous step (Left, p)"),
                                ("play", "&#x25B6; play", "play / pause (a)"),
                                ("next", "&#x25B6;", "next step (Right, Space, n)"),
-                               ("fwd10", "&#x25B6;&#x25B6;", "10 steps on (PageDown)"),
-                               ("last", "&#x25B6;|", "last step (End)")))
+                               ("forward10", "&#x25B6;&#x25B6;", "10 steps on (PageDown)"),
+                               ("last", "&#x25B6;|", "last step (End)"),
+                               ("help", "?", "the keys (?)")))
     return f"""<div id="{pid}" class="scantrace-player" tabindex="0" style="max-width:100%;outline:none;font-family:sans-serif;font-size:13px">
 <canvas width="{frame_size[0]}" height="{frame_size[1]}" style="max-width:100%;height:auto;border:1px solid #ccc;display:block"></canvas>
 <div class="st-fallback">scantrace trace player ({steps} steps): it draws with JavaScript, which this viewer does not run (in Jupyter: trust the notebook, or run the cell).</div>
 <div class="st-controls" style="display:none;gap:4px;align-items:center;margin-top:4px">{buttons}
 <input type="range" min="0" max="{steps - 1}" value="0" style="flex:1" aria-label="step">
+<select aria-label="play speed" title="play speed (+ -)"></select>
 <span class="st-count" style="min-width:6em;text-align:right">1 / {steps}</span></div>
+<div class="st-help" style="display:none;border:1px solid #ccc;padding:4px 8px;margin-top:4px"><div class="keys"></div></div>
+<style>#{pid} .st-help.shown {{ display: block !important; }} #{pid} .st-help td:first-child {{ padding-right: 12px; font-weight: bold; }}</style>
 <div class="st-label" style="margin-top:2px"></div>{note_html}
 <script type="application/json" class="st-deck">{data}</script>
 <script>(function () {{
 {_scantrace.frame_canvas_script()}
+{_scantrace.player_core_script()}
 {_player_script()}
 const root = document.getElementById("{pid}");
 scantracePlayer(root, JSON.parse(root.querySelector(".st-deck").textContent));
@@ -175,21 +158,14 @@ def _player_script():
     return _script
 
 
-def player(self, *, frame_size=PLAYER_FRAME_SIZE, mode="auto", max_bytes=None):
-    """The trace's replay as an inline HTML :class:`Player` (what a Trace shows in Jupyter).
-    frame_size: of the frames (the player scales to the notebook's width); max_bytes: the size
-    bound (default 1 MB for triangles, 2 MB for a scene), past which steps are batched."""
-    return Player(self, frame_size=frame_size, mode=mode, max_bytes=max_bytes)
+def player(trace, *, frame_size=PLAYER_FRAME_SIZE, mode="auto", max_bytes=None):
+    """Trace.player(): the trace's replay as an inline HTML :class:`Player`."""
+    return Player(trace, frame_size=frame_size, mode=mode, max_bytes=max_bytes)
 
 
-def _repr_html_(self):
+def _repr_html_(trace):
+    """Trace._repr_html_: the player, or why there is none."""
     try:
-        return Player(self)._repr_html_()
+        return Player(trace)._repr_html_()
     except (RuntimeError, ValueError) as e:  # a canvas too large to replay, say
-        return f"<p>{html.escape(repr(self))}: no inline player ({html.escape(str(e))})</p>"
-
-
-Trace.frames = frames
-Trace.frame = frame
-Trace.player = player
-Trace._repr_html_ = _repr_html_
+        return f"<p>{html.escape(repr(trace))}: no inline player ({html.escape(str(e))})</p>"

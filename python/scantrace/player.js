@@ -1,8 +1,10 @@
 // The inline trace player of the scantrace Python package (Trace._repr_html_, _player.py): a
 // <canvas> that draws one frame of a deck (python/src/player_deck.hpp) at a time through the
-// canvas backend's drawScantraceFrame (viz/frame_json.hpp, inserted before this script), with
-// buttons, a slider and the keys of the command's HTML player. Nothing is loaded from anywhere:
-// the deck is in the page.
+// canvas backend's drawScantraceFrame, on the player core every page shares (keys, buttons,
+// slider, play and its speed, g, the help: web/player/, with its Hershey layout). Both are
+// inserted before this script (_scantrace.frame_canvas_script(), player_core_script()). Nothing
+// is loaded from anywhere: the deck is in the page.
+/* global drawScantraceFrame, scantraceHersheyStrokes, createStepper, bindPlayer, playerKeys, SCANTRACE_KEYS */
 
 // The deck's op `i` as canvas JSON ops (frame_json.hpp's format): text gets its Hershey strokes,
 // a line group its lines, a patch of pixels the block it patches.
@@ -33,31 +35,6 @@ function scantraceExpandOp(deck, i, cache) {
   return out;
 }
 
-// viz::hershey_strokes (viz/hershey.cpp) in the same floating-point steps: the strokes of `text`
-// drawn from (x, y) on the baseline, as flat [x0, y0, x1, y1, ...] polylines.
-function scantraceHersheyStrokes(glyphs, text, scale, x0, y0) {
-  const s = Math.round(scale * 65536) / 65536;
-  const y = y0 - 9 * s;
-  let x = x0;
-  const strokes = [];
-  for (const ch of text) {  // a code point: printable ASCII is itself, anything else '?'
-    const g = glyphs[ch.length === 1 && ch >= ' ' && ch <= '~' ? ch : '?'];
-    x -= (g.charCodeAt(0) - 82) * s;
-    let stroke = [];
-    for (let p = 2; p + 1 < g.length; p += 2) {
-      if (g[p] === ' ' && g[p + 1] === 'R') {  // pen up
-        if (stroke.length > 2) strokes.push(stroke);
-        stroke = [];
-        continue;
-      }
-      stroke.push(x + (g.charCodeAt(p) - 82) * s, y + (g.charCodeAt(p + 1) - 82) * s);
-    }
-    if (stroke.length > 2) strokes.push(stroke);
-    x += (g.charCodeAt(1) - 82) * s;
-  }
-  return strokes;
-}
-
 // Frame `k` of the deck as a canvas JSON frame.
 function scantraceDeckFrame(deck, k, cache) {
   const ops = [];
@@ -71,13 +48,10 @@ function scantraceDeckFrame(deck, k, cache) {
 function scantracePlayer(root, deck) {
   const canvas = root.querySelector('canvas');
   const ctx = canvas.getContext('2d');
-  const slider = root.querySelector('input[type=range]');
-  const count = root.querySelector('.st-count');
   const label = root.querySelector('.st-label');
-  const playButton = root.querySelector('[data-act=play]');
   const n = deck.frames.length;
   const cache = new Map();
-  let current = 0, wanted = 0, drawing = false, timer = null;
+  let wanted = 0, drawing = false;
   root.querySelector('.st-fallback').style.display = 'none';
   root.querySelector('.st-controls').style.display = 'flex';
 
@@ -87,51 +61,27 @@ function scantracePlayer(root, deck) {
     drawing = true;
     const k = wanted;
     drawScantraceFrame(ctx, scantraceDeckFrame(deck, k, cache)).then(() => {
-      current = k;
       root.dataset.shown = String(k);  // for tests and for anyone reading the page
       drawing = false;
       if (wanted !== k) draw();
     }, (err) => { drawing = false; label.textContent = 'cannot draw step ' + (k + 1) + ': ' + err; });
   }
-  function show(k) {
-    wanted = Math.max(0, Math.min(n - 1, k));
-    slider.value = String(wanted);
-    count.textContent = (wanted + 1) + ' / ' + n;
-    label.textContent = deck.labels[wanted];
-    draw();
-  }
-  function play(on) {
-    if (timer !== null) clearInterval(timer);
-    timer = null;
-    if (on) {
-      if (wanted >= n - 1) show(0);
-      timer = setInterval(() => { if (wanted >= n - 1) play(false); else show(wanted + 1); }, 400);
-    }
-    playButton.textContent = timer === null ? '\u25B6 play' : '\u275A\u275A pause';
-  }
-  const actions = {
-    first: () => show(0), back10: () => show(wanted - 10), prev: () => show(wanted - 1),
-    next: () => show(wanted + 1), fwd10: () => show(wanted + 10), last: () => show(n - 1),
-    play: () => play(timer === null),
-  };
-  for (const b of root.querySelectorAll('button[data-act]'))
-    b.addEventListener('click', () => { actions[b.dataset.act](); root.focus(); });
-  slider.addEventListener('input', () => show(parseInt(slider.value, 10)));
+  const s = createStepper({
+    count: n, rows: deck.rows, speed: 2.5,
+    say: (text) => { label.textContent = text || deck.labels[wanted]; },
+    show: (k) => { wanted = k; label.textContent = deck.labels[k]; draw(); },
+  });
   // The keys act while the player has the focus (a click on it gives it), and only here: the
   // notebook's own shortcuts do not see them.
-  root.addEventListener('keydown', (e) => {
-    if (e.ctrlKey || e.altKey || e.metaKey) return;
-    const keys = {
-      ArrowRight: 'next', ' ': 'next', n: 'next', ArrowLeft: 'prev', p: 'prev',
-      PageDown: 'fwd10', PageUp: 'back10', Home: 'first', End: 'last', a: 'play',
-    };
-    if (!(e.key in keys)) return;
-    actions[keys[e.key]]();
-    e.preventDefault();
-    e.stopPropagation();
+  bindPlayer(s, {
+    scope: root, keys: playerKeys(SCANTRACE_KEYS, 'python'), first: 1,
+    slider: root.querySelector('input[type=range]'), counter: root.querySelector('.st-count'),
+    counterText: () => (s.index + 1) + ' / ' + n, playButton: root.querySelector('[data-act=play]'),
+    speed: root.querySelector('select'), help: root.querySelector('.st-help'),
   });
+  root.addEventListener('click', (e) => { if (e.target.tagName !== 'SELECT') root.focus(); });
   // For scripts of the page (and the tests): the deck, its frames as canvas JSON, the drawing.
-  root.scantrace = {deck: deck, show: show, deckFrame: (k) => scantraceDeckFrame(deck, k, cache),
+  root.scantrace = {deck: deck, show: s.go, deckFrame: (k) => scantraceDeckFrame(deck, k, cache),
                     drawFrame: drawScantraceFrame};
-  show(0);
+  s.go(0);
 }

@@ -14,9 +14,9 @@
 namespace scantrace::python {
 
 // A float64 pixel holding exactly the values of the C++ float canvas (Rgb32f), widened: a
-// colour is rounded to float first. Why: the course's arrays are float64, and the issue asks that
-// a Python render equal the C++ render value for value; full double precision would differ from
-// it in the 8th digit (and could round differently to 8 bits at .5 ties).
+// colour is rounded to float first. Why: the course's arrays are float64, and a Python render
+// must equal the C++ render value for value; full double precision would differ from it in the
+// 8th digit (and could round differently to 8 bits at .5 ties).
 struct Rgb64 {
   double r = 0, g = 0, b = 0;
   static Rgb64 from(Color c) {

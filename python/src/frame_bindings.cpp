@@ -15,6 +15,7 @@
 #include "viz/frame_sequence.hpp"
 #include "viz/step_label.hpp"
 #include "viz/svg_frame.hpp"
+#include "viz/web_player_files.hpp"
 
 namespace scantrace::python {
 namespace {
@@ -175,35 +176,89 @@ void bind_frames_class(py::module_& m) {
       });
 }
 
+// A trace's replay as Frames (steps as `scantrace replay` plans them).
+std::unique_ptr<PyFrames> trace_frames(py::object trace, py::handle frame_size,
+                                       const std::string& mode, int rows_per_step,
+                                       int max_scanline_steps, int max_scene_steps,
+                                       const std::string& source) {
+  viz::StepOptions options;
+  options.mode = mode_argument(mode);
+  options.rows_per_step = step_count_argument(rows_per_step, "rows_per_step", 0);
+  options.max_scanline_steps = step_count_argument(max_scanline_steps, "max_scanline_steps", 1);
+  options.max_scene_steps = step_count_argument(max_scene_steps, "max_scene_steps", 1);
+  const viz::Size size = frame_size_argument(frame_size);
+  const PyTrace& t = trace.cast<const PyTrace&>();
+  auto f = std::make_unique<PyFrames>();
+  f->owner = trace;
+  f->sequence = std::make_unique<viz::FrameSequence>(t.trace, options, size, source);
+  return f;
+}
+
+// Trace's replay methods, defined on the type with the rest of it: frames() and frame() here,
+// player() and _repr_html_ by the inline player's Python (scantrace/_player.py), imported when
+// first called.
+void bind_trace_replay(py::module_& m) {
+  auto trace = py::reinterpret_borrow<py::class_<PyTrace>>(m.attr("Trace"));
+  const auto in_python = [](const char* name) {
+    return [name](py::object self, py::kwargs options) {
+      return py::module_::import("scantrace._player").attr(name)(self, **options);
+    };
+  };
+  trace.def(
+      "frames",
+      [](py::object self, py::handle frame_size, const std::string& mode, int rows_per_step,
+         int max_scanline_steps, int max_scene_steps) {
+        return trace_frames(self, frame_size, mode, rows_per_step, max_scanline_steps,
+                            max_scene_steps, "the trace");
+      },
+      py::kw_only(), py::arg("frame_size") = py::make_tuple(1280, 720), py::arg("mode") = "auto",
+      py::arg("rows_per_step") = 0, py::arg("max_scanline_steps") = 40,
+      py::arg("max_scene_steps") = 100,
+      R"(The replay of this trace, one frame per step (the steps of ``scantrace replay``).
+
+mode: ``'auto'`` (one triangle step by step; several: the scene), ``'triangles'`` or
+``'scene'``. rows_per_step: scanlines per step (0: at most ``max_scanline_steps`` per
+triangle). max_scene_steps: the painter's batches of a scene. Returns :class:`Frames`::
+
+    f = t.frames()
+    len(f), f.steps[5]['label']     # 'scanline y = 24 (5 of 380)'
+    f[5].to_svg()                   # the frame as a self-contained SVG document
+    f[5].marks('scanline')          # [{'kind': 'scanline', 'what': 'y = 24', 'box': ...}])");
+  trace.def(
+      "frame",
+      [](py::object self, py::object step, py::kwargs options) {
+        // Held here: an item accessor keeps only a borrowed handle of what it indexes.
+        const py::object frames = self.attr("frames")(**options);
+        return py::object(frames[step]);
+      },
+      py::arg("step"),
+      "The :class:`Frame` of replay step ``step`` (from 0; negative from the end); the options "
+      "are those of :meth:`frames`. ``t.frame(10).to_svg()``.");
+  trace.def("player", in_python("player"),
+            "The trace's replay as an inline HTML :class:`Player` (what a Trace shows in "
+            "Jupyter): player(frame_size=(960, 540), mode='auto', max_bytes=None). frame_size: "
+            "of the frames (the player scales to the notebook's width); max_bytes: the size "
+            "bound (default 1 MB for triangles, 2 MB for a scene), past which steps are batched.");
+  trace.def("_repr_html_", in_python("_repr_html_"));
+}
+
 }  // namespace
 
 void bind_frames(py::module_& m) {
   bind_frame(m);
   bind_frames_class(m);
-  m.def(
-      "frames",
-      [](py::object trace, py::handle frame_size, const std::string& mode, int rows_per_step,
-         int max_scanline_steps, int max_scene_steps, const std::string& source) {
-        viz::StepOptions options;
-        options.mode = mode_argument(mode);
-        options.rows_per_step = step_count_argument(rows_per_step, "rows_per_step", 0);
-        options.max_scanline_steps =
-            step_count_argument(max_scanline_steps, "max_scanline_steps", 1);
-        options.max_scene_steps = step_count_argument(max_scene_steps, "max_scene_steps", 1);
-        const viz::Size size = frame_size_argument(frame_size);
-        const PyTrace& t = trace.cast<const PyTrace&>();
-        auto f = std::make_unique<PyFrames>();
-        f->owner = trace;
-        f->sequence = std::make_unique<viz::FrameSequence>(t.trace, options, size, source);
-        return f;
-      },
-      py::arg("trace"), py::kw_only(), py::arg("frame_size"), py::arg("mode"),
-      py::arg("rows_per_step"), py::arg("max_scanline_steps"), py::arg("max_scene_steps"),
-      py::arg("source"));
+  m.def("frames", trace_frames, py::arg("trace"), py::kw_only(), py::arg("frame_size"),
+        py::arg("mode"), py::arg("rows_per_step"), py::arg("max_scanline_steps"),
+        py::arg("max_scene_steps"), py::arg("source"));
   m.def(
       "frame_canvas_script", [] { return std::string(viz::frame_canvas_script()); },
       "The JavaScript of drawScantraceFrame(ctx, frame), which draws Frame.to_json() on a "
       "<canvas>.");
+  m.def(
+      "player_core_script", [] { return std::string(viz::web_player::player_core_js); },
+      "The JavaScript of the player core every page shares (web/player/: the key table, the "
+      "stepper, its controls, the Hershey layout), as one classic script.");
+  bind_trace_replay(m);
 }
 
 }  // namespace scantrace::python

@@ -101,7 +101,7 @@ class OpTable {
   std::size_t add(const viz::DrawOp& op) {
     if (const auto* t = std::get_if<viz::TextOp>(&op.body)) note_glyphs(t->text, glyphs_[t->font]);
     const auto* p = std::get_if<viz::PixelsOp>(&op.body);
-    if (!p || p->area.area() < 2) return intern(viz::to_json(op, viz::TextForm::glyphs));
+    if (!p || p->area.area() < 2) return intern(viz::to_json(op, viz::TextForm::text_with_font));
     // A block of pixels at the place of an earlier one (the same view, one step later) mostly
     // holds the same pixels: only the rectangle that changed is stored, over the earlier op.
     const auto key =
@@ -111,15 +111,15 @@ class OpTable {
     const auto earlier = blocks_.find(key);
     std::size_t id;
     if (earlier == blocks_.end()) {
-      id = intern(viz::to_json(op, viz::TextForm::glyphs));
+      id = intern(viz::to_json(op, viz::TextForm::text_with_font));
     } else {
       const viz::Rect changed = changed_rect(*earlier->second.second, *p);
       if (changed.area() * 2 > p->area.area()) {
-        id = intern(viz::to_json(op, viz::TextForm::glyphs));
+        id = intern(viz::to_json(op, viz::TextForm::text_with_font));
       } else {
         viz::DrawOp patch = op;
         patch.body = crop(*p, changed);
-        std::string json = viz::to_json(patch, viz::TextForm::glyphs);
+        std::string json = viz::to_json(patch, viz::TextForm::text_with_font);
         json.replace(0, 4, "[\"p\"");
         json.back() = ',';
         id = intern(json + std::to_string(earlier->second.first) + "]");
@@ -178,7 +178,7 @@ class OpTable {
 
 Deck write_deck(viz::FrameSequence& frames, std::size_t first, std::size_t last) {
   OpTable table;
-  std::ostringstream runs, labels;
+  std::ostringstream runs, labels, rows;
   viz::Size size;
   viz::Scalar background;
   for (std::size_t i = first; i <= last; ++i) {
@@ -203,6 +203,13 @@ Deck write_deck(viz::FrameSequence& frames, std::size_t first, std::size_t last)
     runs << "]";
     labels << (i == first ? "" : ",")
            << json_string(viz::step_label(frames.plan(), frames.steps()[i]));
+    // The scanlines a step shows, for the player's g (go to a row's step).
+    const viz::Step& s = frames.steps()[i];
+    rows << (i == first ? "" : ",");
+    if (s.kind == viz::StepKind::scanlines)
+      rows << "[" << s.first_row << "," << s.last_row << "]";
+    else
+      rows << "null";
   }
   std::ostringstream out;
   out << "{\"w\":" << size.width << ",\"h\":" << size.height << ",\"bg\":\""
@@ -211,7 +218,8 @@ Deck write_deck(viz::FrameSequence& frames, std::size_t first, std::size_t last)
   out << ",\n\"ops\":[";
   const auto& ops = table.ops();
   for (std::size_t k = 0; k < ops.size(); ++k) out << (k ? ",\n" : "") << *ops[k];
-  out << "],\n\"frames\":[" << runs.str() << "],\n\"labels\":[" << labels.str() << "]}";
+  out << "],\n\"frames\":[" << runs.str() << "],\n\"labels\":[" << labels.str() << "],\n\"rows\":["
+      << rows.str() << "]}";
   return {out.str(), last - first + 1, ops.size()};
 }
 

@@ -9,7 +9,8 @@
 //    "glyphs": {"0": {"A": "<Hershey glyph>", ...}, "2": {...}},   fonts by OpenCV number
 //    "ops": [OP, ...],               every distinct operation, in order of first use
 //    "frames": [[start, count, start, count, ...], ...],   a frame: runs of op indices
-//    "labels": ["scanline y = 80 (61 of 380)", ...]}        one line per step (viz/step_label)
+//    "labels": ["scanline y = 80 (61 of 380)", ...],        one line per step (viz/step_label)
+//    "rows": [null, [80, 80], ...]}                       the scanlines a step shows, or null
 //
 // An OP is the canvas JSON's (frame_json.hpp: [kind, clip, mark, ...]) except text, which is
 //   ["t", clip, mark, text, colour, thickness, font, scale, x, y]   (origin on the baseline)

@@ -342,8 +342,8 @@ void bind_events(py::module_& m) {
   bind_pixel_history(m);
 }
 
-// Trace.scanline(i, y) for a row the trace does not hold: why, in the fill's terms (issue 47:
-// the row of a triangle's bottom vertex was a bare IndexError).
+// Trace.scanline(i, y) for a row the trace does not hold: why, in the fill's terms, where a bare
+// IndexError would leave the reader guessing (the row of a triangle's bottom vertex, say).
 Scanline scanline_or_why_not(const PyTrace& t, int i, std::int64_t y) {
   if (const Scanline* s = t.trace.find_scanline(i, y)) return *s;
   const std::string row = "row " + std::to_string(y);

@@ -10,6 +10,7 @@ import pathlib
 import re
 import shutil
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -248,7 +249,7 @@ DRIVER = """<script>
   key('ArrowLeft'); await visit(deck.frames.length - 12);
   key('Home'); await visit(0);
   const s = root.querySelector('input[type=range]');
-  s.value = '8'; s.dispatchEvent(new Event('input')); await visit(8);
+  s.value = '9'; s.dispatchEvent(new Event('input')); await visit(8);  // the slider holds step numbers, from 1
   const pre = document.createElement('pre');
   pre.id = 'result';
   pre.textContent = JSON.stringify(out);
@@ -289,3 +290,21 @@ def test_in_chromium_the_player_steps_and_draws_the_canvas_backends_frames(trace
         if "v0" in v:  # vertex 0's marker is filled with its colour: red (vcolors = I)
             assert v["v0"] == [255, 0, 0], v
     assert out["ops"] > 2000 and out["strokes"] <= 0.0051 and out["lines"] <= 0.0051
+
+
+def test_the_replay_methods_are_the_trace_types_own():
+    """Trace.frames, frame, player and _repr_html_ are defined with the type by the extension
+    module, not set on it when _player.py is imported: the extension loaded alone, with
+    _player.py never imported, has them."""
+    code = f"""
+import importlib.util, sys
+spec = importlib.util.spec_from_file_location("_scantrace", {scantrace._scantrace.__file__!r})
+m = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(m)
+print(sorted(n for n in ("frames", "frame", "player", "_repr_html_") if n in vars(m.Trace)),
+      "scantrace._player" in sys.modules)
+"""
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert r.stdout.split() == ["['_repr_html_',", "'frame',", "'frames',", "'player']", "False"]
+    source = (pathlib.Path(scantrace.__file__).parent / "_player.py").read_text()
+    assert not re.search(r"^Trace\.\w+\s*=", source, re.M)

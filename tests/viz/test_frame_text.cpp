@@ -1,5 +1,5 @@
-// frame_text::number, the two-decimal numbers of the SVG and canvas JSON backends: its fast path
-// (integer rounding of v·100) prints what snprintf("%.2f") prints, trailing zeros dropped, for
+// frame_text::markup_number, the two-decimal numbers of the SVG and canvas JSON backends: its fast
+// path (integer rounding of v·100) prints what snprintf("%.2f") prints, trailing zeros dropped, for
 // every kind of value: random ones at every scale, exact hundredths and their neighbours, ties
 // (where %.2f rounds the exact binary value half to even: 0.125 is "0.12", 0.375 "0.38"), values
 // near zero of either sign, and values too large for the fast path.
@@ -12,16 +12,16 @@
 
 #include "viz/frame_text.hpp"
 
-using scantrace::viz::frame_text::number;
+using scantrace::viz::frame_text::markup_number;
 using scantrace::viz::frame_text::number_by_printf;
 
-TEST_CASE("frame_text::number prints what %.2f prints, zeros dropped", "[viz][frame_text]") {
+TEST_CASE("frame_text::markup_number prints what %.2f prints, zeros dropped", "[viz][frame_text]") {
   std::mt19937_64 rng(33);
   std::uniform_real_distribution<double> unit(-1, 1);
   int checked = 0;
   const auto same = [&](double v) {
     INFO("v = " << v);
-    REQUIRE(number(v) == number_by_printf(v));
+    REQUIRE(markup_number(v) == number_by_printf(v));
     ++checked;
   };
   for (int i = 0; i < 200000; ++i) same(unit(rng) * std::pow(10.0, (i % 14) - 4));
@@ -35,9 +35,9 @@ TEST_CASE("frame_text::number prints what %.2f prints, zeros dropped", "[viz][fr
   for (double v : {0.125, 0.375, -0.125, 2.675, 1.005, 0.005, -0.005, 0.0, -0.0, -0.004, 1e7 + 0.125,
                    123456789.125, 1e12 + 0.375, -3e15, 1e300})
     same(v);
-  CHECK(number(0.125) == "0.12");  // a tie, by hand: half to even
-  CHECK(number(-0.004) == "0");
-  CHECK(number(12.5) == "12.5");
+  CHECK(markup_number(0.125) == "0.12");  // a tie, by hand: half to even
+  CHECK(markup_number(-0.004) == "0");
+  CHECK(markup_number(12.5) == "12.5");
   CHECK(checked > 1000000);
 }
 
@@ -73,15 +73,16 @@ void around_ties(Check&& check) {
 
 }  // namespace
 
-TEST_CASE("frame_text::number at and around ties prints what %.2f prints", "[viz][frame_text]") {
+TEST_CASE("frame_text::markup_number at and around ties prints what %.2f prints",
+          "[viz][frame_text]") {
   int checked = 0;
   around_ties([&](double v) {
     INFO("v = " << v);
-    REQUIRE(number(v) == number_by_printf(v));
+    REQUIRE(markup_number(v) == number_by_printf(v));
     ++checked;
   });
-  CHECK(number(0.375) == "0.38");  // a tie, by hand: half to even
-  CHECK(number(-0.625) == "-0.62");
+  CHECK(markup_number(0.375) == "0.38");  // a tie, by hand: half to even
+  CHECK(markup_number(-0.625) == "-0.62");
   CHECK(checked > 500000);
 }
 

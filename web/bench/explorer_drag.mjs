@@ -57,8 +57,8 @@ const rasterHooks = `(() => {
   window.rasteredTimes = [];
   let t0 = 0;
   const shown = ['grid', 'frame', 'fill'].map((id) => document.getElementById(id)).filter((c) => c).map((c) => c.getContext('2d'));
-  // From the pointer move (before the page's handler: a pointermove on the grid since issue
-  // 48, a mousemove before) to the compatibility mouse move after it, which follows both.
+  // From the pointer move (before the page's handler: a pointermove on the grid in newer
+  // pages, a mousemove in older ones) to the compatibility mouse move after it, which follows both.
   window.addEventListener('pointermove', () => { t0 = performance.now(); }, true);
   window.addEventListener('mousemove', () => {
     for (const g of shown) g.getImageData(0, 0, 1, 1);
@@ -76,7 +76,7 @@ async function dragTimes(page, moves, rastered = false) {
     for (const d of ['Runtime', 'Page']) await b.page(`${d}.enable`);
     await b.page('Page.navigate', { url: `file://${path.resolve(page)}#step=12` });
     await until('the page to start', () => b.evaluate("!!document.body && document.body.dataset.ready === '1'"), 60000);
-    // Step 13 shown: #step=12 meant it before issue 48, #step=13 since (the step as shown).
+    // Step 13 shown: older pages read #step=12 as it, newer ones #step=13 (the step as shown).
     if ((await b.evaluate('explorer.state().step')) === 11) {
       await b.evaluate("location.hash = '#step=13'");
       await until('step 13', async () => (await b.evaluate('explorer.state().step')) === 12);

@@ -1,122 +1,156 @@
 // The trace page (docs/web.md): `replay`/`explain -o OUT.html` write the trace and this player,
 // which composes each step's frame in the page with its WebAssembly module (player_api.mjs: the
 // composer of the videos, and nothing the page does not call) and draws it with the canvas
-// backend, sharp at any size: kilobytes of trace instead of megabytes of pre-drawn frames. The frame is fitted to the window; the step list is beside it,
-// hidden until asked for. OUT.html#step=N opens at step N.
+// backend (frame_draw.js), sharp at any size: kilobytes of trace instead of megabytes of
+// pre-drawn frames. The frame is fitted to the window; the step list is beside it, hidden until
+// asked for. Keys, play and its speed, g and the help are the player core's (controller.mjs,
+// bind.mjs, keys.json). OUT.html#step=N opens at step N (from 1).
+/* global drawScantraceFrame, SCANTRACE_KEYS */
+import { bindPlayer } from './bind.mjs';
+import { createStepper } from './controller.mjs';
+import { playerKeys } from './keys.mjs';
 
 // pm: loadPlayer()'s module; cfg: {source, width, height, rows_per_step, mode, first, last, marked_pixel?}
 export async function startPlayer(pm, cfg, traceText) {
   const $ = (id) => document.getElementById(id);
-  const drawFrame = new Function(`${pm.canvasScript()}; return drawScantraceFrame;`)();
-  const base = { width: cfg.width, height: cfg.height, rows_per_step: cfg.rows_per_step, source: cfg.source };
-  if (cfg.mode) base.mode = cfg.mode;
-  if (cfg.marked_pixel) base.marked_pixel = cfg.marked_pixel;
-  const all = pm.open(traceText, base).steps;
-  const first = Math.min(cfg.first || 0, all.length - 1);
-  const last = Math.min(cfg.last ?? all.length - 1, all.length - 1);
-  const steps = all.slice(first, last + 1);
+  const plan = planner(pm, cfg, traceText);
   const events = traceText.split('\n').filter((l) => l).map((l) => JSON.parse(l));
-  const canvas = $('frame'), ctx = canvas.getContext('2d');
-  let k = 0, timer = null, drawing = Promise.resolve(), scale = 1;
-
-  const fromHash = () => {
-    const m = /step=(\d+)/.exec(location.hash);
-    return m ? Math.max(0, Math.min(steps.length - 1, Number(m[1]) - 1)) : 0;
+  const canvas = $('frame');
+  let steps = plan.steps(cfg.rows_per_step);
+  const say = (text) => { $('status').textContent = text; };
+  const drawer = canvasDrawer(pm, plan, cfg, canvas, () => s);
+  const s = createStepper({ count: steps.length, show: drawer.show, rows: rowsOf(steps), say, speed: 2.5 });
+  const relist = () => {
+    $('list').replaceChildren(...steps.map((st, i) => {
+      const el = document.createElement('div');
+      el.textContent = `${i + 1}. ${label(st)}`;
+      el.addEventListener('click', () => s.go(i));
+      return el;
+    }));
   };
-
-  // The frame drawn at the size it is shown, in device pixels: sharp at any zoom.
-  function fit() {
-    const stage = $('stage');
-    scale = Math.min(stage.clientWidth / cfg.width, stage.clientHeight / cfg.height);
-    canvas.style.width = `${Math.floor(cfg.width * scale)}px`;
-    canvas.style.height = `${Math.floor(cfg.height * scale)}px`;
+  // r: one row a step, ten, or the planned steps; the step kept where its rows still are.
+  const rowChoices = [cfg.rows_per_step || 0, 1, 10].filter((v, i, a) => a.indexOf(v) === i);
+  let rowChoice = 0;
+  function toggleRows() {
+    const row = steps[s.index].kind === 'scanlines' ? steps[s.index].first_row : null;
+    rowChoice = (rowChoice + 1) % rowChoices.length;
+    steps = plan.steps(rowChoices[rowChoice]);
+    drawer.forget();
+    s.rows = rowsOf(steps);
+    relist();
+    const at = row === null ? -1 : steps.findIndex((st) => st.kind === 'scanlines' && st.first_row <= row && row <= st.last_row);
+    s.resize(steps.length, at >= 0 ? at : Math.round(s.index * steps.length / s.count));
+    say(rowChoices[rowChoice] ? `${rowChoices[rowChoice]} scanline${rowChoices[rowChoice] > 1 ? 's' : ''} a step` : 'steps as planned');
   }
-
-  function show(i) {
-    k = Math.max(0, Math.min(steps.length - 1, i));
-    $('slider').value = String(k);
-    $('step-no').textContent = `step ${k + 1} / ${steps.length}: ${label(steps[k])}`;
-    for (const [j, el] of [...$('list').children].entries()) el.classList.toggle('on', j === k);
-    history.replaceState(null, '', `#step=${k + 1}`);
-    const wanted = k;
-    drawing = drawing.then(async () => {
-      if (wanted !== k) return;
-      const f = pm.frame(first + wanted);
-      const dpr = window.devicePixelRatio || 1;
-      canvas.width = Math.round(cfg.width * scale * dpr);
-      canvas.height = Math.round(cfg.height * scale * dpr);
-      ctx.setTransform(canvas.width / f.w, 0, 0, canvas.height / f.h, 0, 0);
-      await drawFrame(ctx, f);
-      canvas.dataset.step = String(wanted);
-    });
-  }
-
-  function label(s) {
-    return s.kind === 'scanlines' ? `rows ${s.first_row}..${s.last_row} of triangle ${s.triangle}`
-      : s.triangle >= 0 ? `${s.kind.replace(/_/g, ' ')}, triangle ${s.triangle}` : s.kind.replace(/_/g, ' ');
-  }
-
-  function play(on) {
-    clearInterval(timer);
-    timer = on ? setInterval(() => (k + 1 < steps.length ? show(k + 1) : play(false)), 400) : null;
-    $('play').textContent = timer ? 'pause' : 'play';
-  }
-
-  // A click on the canvas: the pixel under it and what the trace says of its row.
-  canvas.addEventListener('click', (e) => {
-    const s = steps[k];
-    if (!s.view) return;
-    const r = canvas.getBoundingClientRect();
-    const u = (e.clientX - r.left) / r.width * cfg.width, v = (e.clientY - r.top) / r.height * cfg.height;
-    const [vx, vy, vw, vh] = s.view;
-    if (u < vx || v < vy || u >= vx + vw || v >= vy + vh) return;
-    const x = Math.round((u - s.origin[0]) / s.cell), y = Math.round((v - s.origin[1]) / s.cell);
-    const rows = events.filter((ev) => ev.type === 'scanline' && ev.y === y);
-    const parts = rows.map((ev) => {
-      const spans = ev.spans || (ev.span ? [ev.span] : []);
-      const inside = spans.some((sp) => sp.x_begin <= x && x < sp.x_end);
-      return `triangle ${ev.triangle}: ${spans.map((sp) => `[${sp.x_begin}, ${sp.x_end})`).join(' ') || 'no span'} → ${inside ? 'filled' : 'not filled'}`;
-    });
-    $('info').textContent = `pixel (${x}, ${y}): ${parts.join('; ') || 'no traced row'}`;
-    $('info').dataset.pixel = `${x},${y}`;
+  relist();
+  bindPlayer(s, {
+    scope: document, keys: playerKeys(SCANTRACE_KEYS, 'trace'), first: 1, slider: $('slider'),
+    counter: $('step-no'), counterText: () => `step ${s.index + 1} / ${s.count}: ${label(steps[s.index])}`,
+    list: $('list'), playButton: $('play'), speed: $('speed'), help: $('help'), hash: true, say,
+    actions: { toggle_rows: toggleRows },
   });
-
-  $('slider').max = String(steps.length - 1);
-  $('slider').addEventListener('input', () => show(Number($('slider').value)));
-  $('prev').addEventListener('click', () => show(k - 1));
-  $('next').addEventListener('click', () => show(k + 1));
-  $('play').addEventListener('click', () => play(!timer));
+  canvas.addEventListener('click', (e) => {
+    $('info').textContent = pixelStory(e, canvas, cfg, steps[s.index], events, $('info')) || $('info').textContent;
+  });
   $('toggle-list').addEventListener('click', () => {
     $('list').hidden = !$('list').hidden;
-    fit();
-    show(k);
-  });
-  steps.forEach((s, i) => {
-    const el = document.createElement('div');
-    el.textContent = `${i + 1}. ${label(s)}`;
-    el.addEventListener('click', () => show(i));
-    $('list').appendChild(el);
-  });
-  window.addEventListener('keydown', (e) => {
-    const key = e.key;
-    if (key === 'ArrowRight' || key === 'n' || key === ' ') show(k + 1);
-    else if (key === 'ArrowLeft' || key === 'p') show(k - 1);
-    else if (key === 'PageDown') show(k + 10);
-    else if (key === 'PageUp') show(k - 10);
-    else if (key === 'Home') show(0);
-    else if (key === 'End') show(steps.length - 1);
-    else if (key === 'a') play(!timer);
-    else return;
-    e.preventDefault();
+    drawer.fit();
+    s.go(s.index);
   });
   window.addEventListener('resize', () => {
-    fit();
-    show(k);
+    drawer.fit();
+    s.go(s.index);
   });
-  window.addEventListener('hashchange', () => fromHash() !== k && show(fromHash()));
-  fit();
-  show(fromHash());
+  drawer.fit();
+  s.go(s.initialIndex);
   // Milliseconds from navigation to a working page (the test prints it; docs/performance.md).
   document.body.dataset.readyMs = performance.now().toFixed(0);
   document.body.dataset.ready = '1';
+}
+
+// The canvas's drawing: fit() sizes it to the stage, show(i) draws step i when it is still the
+// stepper's (`stepper()`), forget() drops the frame composed ahead (the steps planned again).
+// The frame is drawn at the size it is shown, in device pixels: sharp at any zoom.
+function canvasDrawer(pm, plan, cfg, canvas, stepper) {
+  const ctx = canvas.getContext('2d');
+  let drawing = Promise.resolve(), scale = 1;
+  // The next step's frame is composed ahead, once the shown one is drawn: stepping on, the
+  // common case, then only draws (composing a course triangle's frame is most of a step's time).
+  let ahead = null; // {index, frame}
+  const frameOf = (i) => (ahead && ahead.index === i ? ahead.frame : pm.frame(plan.first + i));
+  const composeAhead = (i) => setTimeout(() => {
+    const s = stepper();
+    if (s.index === i - 1 && i < s.count && !(ahead && ahead.index === i)) ahead = { index: i, frame: pm.frame(plan.first + i) };
+  }, 0);
+  return {
+    fit() {
+      const stage = document.getElementById('stage');
+      scale = Math.min(stage.clientWidth / cfg.width, stage.clientHeight / cfg.height);
+      canvas.style.width = `${Math.floor(cfg.width * scale)}px`;
+      canvas.style.height = `${Math.floor(cfg.height * scale)}px`;
+    },
+    forget: () => { ahead = null; },
+    show: (wanted) => {
+      drawing = drawing.then(async () => {
+        if (wanted !== stepper().index) return;
+        const t0 = performance.now();
+        const f = frameOf(wanted);
+        const t1 = performance.now();
+        const dpr = window.devicePixelRatio || 1;
+        canvas.width = Math.round(cfg.width * scale * dpr);
+        canvas.height = Math.round(cfg.height * scale * dpr);
+        ctx.setTransform(canvas.width / f.w, 0, 0, canvas.height / f.h, 0, 0);
+        await drawScantraceFrame(ctx, f);
+        canvas.dataset.step = String(wanted);
+        // For the tests and anyone timing the page: composing (0 when composed ahead), drawing.
+        canvas.dataset.composeMs = (t1 - t0).toFixed(1);
+        canvas.dataset.drawMs = (performance.now() - t1).toFixed(1);
+        composeAhead(wanted + 1);
+      });
+    },
+  };
+}
+
+// The trace opened with `rows_per_step` (0: as planned), its steps cfg.first..cfg.last when
+// planned as the page was written, all of them otherwise. `first`: the module's index of step 1.
+function planner(pm, cfg, traceText) {
+  const base = { width: cfg.width, height: cfg.height, source: cfg.source };
+  if (cfg.mode) base.mode = cfg.mode;
+  if (cfg.marked_pixel) base.marked_pixel = cfg.marked_pixel;
+  const p = {
+    first: 0,
+    steps(rowsPerStep) {
+      const all = pm.open(traceText, { ...base, rows_per_step: rowsPerStep || 0 }).steps;
+      const planned = (rowsPerStep || 0) === (cfg.rows_per_step || 0);
+      p.first = planned ? Math.min(cfg.first || 0, all.length - 1) : 0;
+      const last = planned ? Math.min(cfg.last ?? all.length - 1, all.length - 1) : all.length - 1;
+      return all.slice(p.first, last + 1);
+    },
+  };
+  return p;
+}
+
+const rowsOf = (steps) => steps.map((st) => (st.kind === 'scanlines' ? [st.first_row, st.last_row] : null));
+
+function label(s) {
+  return s.kind === 'scanlines' ? `rows ${s.first_row}..${s.last_row} of triangle ${s.triangle}`
+    : s.triangle >= 0 ? `${s.kind.replace(/_/g, ' ')}, triangle ${s.triangle}` : s.kind.replace(/_/g, ' ');
+}
+
+// A click on the canvas: the pixel under it and what the trace says of its row (null: outside
+// the step's grid). The pixel is kept on `info` for tests.
+function pixelStory(e, canvas, cfg, step, events, info) {
+  if (!step.view) return null;
+  const r = canvas.getBoundingClientRect();
+  const u = (e.clientX - r.left) / r.width * cfg.width, v = (e.clientY - r.top) / r.height * cfg.height;
+  const [vx, vy, vw, vh] = step.view;
+  if (u < vx || v < vy || u >= vx + vw || v >= vy + vh) return null;
+  const x = Math.round((u - step.origin[0]) / step.cell), y = Math.round((v - step.origin[1]) / step.cell);
+  const parts = events.filter((ev) => ev.type === 'scanline' && ev.y === y).map((ev) => {
+    const spans = ev.spans || (ev.span ? [ev.span] : []);
+    const inside = spans.some((sp) => sp.x_begin <= x && x < sp.x_end);
+    return `triangle ${ev.triangle}: ${spans.map((sp) => `[${sp.x_begin}, ${sp.x_end})`).join(' ') || 'no span'} → ${inside ? 'filled' : 'not filled'}`;
+  });
+  info.dataset.pixel = `${x},${y}`;
+  return `pixel (${x}, ${y}): ${parts.join('; ') || 'no traced row'}`;
 }

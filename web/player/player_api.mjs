@@ -4,7 +4,7 @@
 //
 //   const pm = await loadPlayer(wasmBytes);
 //   const { steps } = pm.open(traceText, { width: 1280, height: 720 });
-//   drawScantraceFrame(ctx, pm.frame(0));
+//   drawScantraceFrame(ctx, pm.frame(0));   // web/player/frame_draw.js, inlined by the page
 import createScantracePlayer from './scantrace_player.mjs';
 
 export async function loadPlayer(wasmBinary) {
@@ -38,7 +38,5 @@ export async function loadPlayer(wasmBinary) {
       result(withString(traceText, (t) => withString(JSON.stringify(options), (o) => m._st_page_open(t, o)))),
     // Step `index`'s frame (0-based, of all the steps open() listed), for drawScantraceFrame.
     frame: (index) => result(m._st_page_frame(index)),
-    // drawScantraceFrame's JavaScript source.
-    canvasScript: () => m.UTF8ToString(m._st_page_canvas_script()),
   };
 }

@@ -100,7 +100,4 @@ EMSCRIPTEN_KEEPALIVE int st_page_frame(int index) {
   });
 }
 
-// drawScantraceFrame's source (viz/frame_json.hpp), for the page to compile once.
-EMSCRIPTEN_KEEPALIVE const char* st_page_canvas_script() { return viz::frame_canvas_script(); }
-
 }  // extern "C"

@@ -13,7 +13,7 @@ CONFIDENCE = 0.9
 
 
 def _load_catalogue():
-    """The one mistake catalogue (issue 50), mistakes.json beside this file: read here, embedded
+    """The one mistake catalogue, mistakes.json beside this file: read here, embedded
     into the C++ `diff` at build time (grade/CMakeLists.txt) and named by the tests' wrong
     renderers. Returns (the document, {id: (sentence, fix)})."""
     path = pathlib.Path(__file__).resolve().with_name("mistakes.json")

@@ -1,0 +1,31 @@
+// The players' key table (keys.json) as the pages use it: a key event's action and the help
+// overlay's rows. One table for every player, the `scantrace step` window included
+// (cli/player_keys.cpp reads the same file), so a key means the same thing everywhere.
+//
+//   const keys = playerKeys(SCANTRACE_KEYS, 'trace');
+//   keys.action(event)   // 'next', 'go_to_row', ... or null
+//   keys.help()          // [[label, help], ...] for this player
+
+// `table`: keys.json's object; `player`: 'trace', 'step' or 'python' (the actions it has).
+export function playerKeys(table, player) {
+  const actions = table.actions.filter((a) => a.in.includes(player));
+  const byKey = new Map();
+  for (const a of actions) for (const k of a.keys) if (!byKey.has(k)) byKey.set(k, a.action);
+  return {
+    // The action of a keydown event, or null: keys with Ctrl, Alt or Meta are the browser's.
+    action: (e) => (e.ctrlKey || e.altKey || e.metaKey ? null : byKey.get(e.key) || null),
+    help: () => actions.filter((a) => a.action !== 'close').map((a) => [a.label, a.help]),
+    has: (action) => actions.some((a) => a.action === action),
+  };
+}
+
+// The help overlay's table: one row per action of this player, built from the key table.
+export function helpTable(doc, keys) {
+  const table = doc.createElement('table');
+  for (const [label, help] of keys.help()) {
+    const row = table.insertRow();
+    row.insertCell().textContent = label;
+    row.insertCell().textContent = help;
+  }
+  return table;
+}

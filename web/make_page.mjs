@@ -19,7 +19,7 @@ const read = (p) => fs.readFileSync(p, 'utf8');
 // The modules become one script: their imports of each other dropped, their exports plain.
 const unmodule = (text) =>
   text
-    .replace(/^import [^;]*from '\.\/[\w.]+';$/gm, '')
+    .replace(/^import [^;]*from '\.\.?\/[\w./]+';$/gm, '')
     .replace(/^export default \w+;$/gm, '')
     .replace(/^export (class|async function|function|const) /gm, '$1 ');
 
@@ -52,6 +52,8 @@ function showFatal(e) {
 const explorerModules = ['state.js', 'answers.js', 'controls.js', 'view.js', 'controller.js', 'explorer.js'];
 // The player core's modules, each after those it imports.
 const playerCore = ['keys.mjs', 'controller.mjs', 'bind.mjs'];
+// The players' key table (player/keys.json) as the script's SCANTRACE_KEYS, without its note.
+const keyTable = `const SCANTRACE_KEYS = ${JSON.stringify(JSON.parse(read(path.join(here, 'player', 'keys.json'))), (k, v) => (k === 'about' ? undefined : v))};`;
 let script;
 if (kind === 'explorer') {
   // The full module (scantrace_wasm) and the JavaScript API.
@@ -59,7 +61,10 @@ if (kind === 'explorer') {
     unmodule(read(path.join(dir, 'scantrace_wasm.mjs'))),
     unmodule(read(path.join(here, 'scantrace.mjs'))),
     helpers,
-    // The explorer's modules, each after those it imports.
+    // The key table and its reader (player/keys.mjs), shared with every player, then the
+    // explorer's modules, each after those it imports.
+    keyTable,
+    unmodule(read(path.join(here, 'player', 'keys.mjs'))),
     ...explorerModules.map((m) => unmodule(read(path.join(here, 'explorer', m)))),
     `openMark('script');
 gunzipBase64('${inlined('scantrace_wasm.wasm')}')
@@ -77,7 +82,7 @@ gunzipBase64('${inlined('scantrace_wasm.wasm')}')
     // The canvas drawer and the player core (keys.json, keys.mjs, controller.mjs, bind.mjs) the
     // step page embeds too (cmake/web_player.cmake), then the trace page's own script.
     uncommented(read(path.join(here, 'player', 'frame_draw.js'))),
-    `const SCANTRACE_KEYS = ${JSON.stringify(JSON.parse(read(path.join(here, 'player', 'keys.json'))), (k, v) => (k === 'about' ? undefined : v))};`,
+    keyTable,
     ...[...playerCore, 'player.js'].map((m) => uncommented(unmodule(read(path.join(here, 'player', m))))),
     'const page = /*SCANTRACE_PAGE_DATA*/null;',
     `Promise.all([gunzipBase64('${inlined('scantrace_player.wasm')}'), gunzipBase64(page.trace)])

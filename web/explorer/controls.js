@@ -3,6 +3,8 @@
 // keys step wherever the focus is: a dropdown used is left (blurred), and the arrow keys on one
 // never change its value. Names are unique across the explorer's modules (one scope in the page).
 
+import { controlsKey, helpTable, playerKeys } from '../player/keys.mjs';
+
 const byId = (id) => document.getElementById(id);
 
 // A step's title in the list and the live region: what the frame explains. The edge table's
@@ -83,6 +85,8 @@ export function bindPlayer(p) {
     byId('toggle-list').setAttribute('aria-expanded', String(!byId('step-list').hidden));
   });
   byId('help-button').addEventListener('click', () => (byId('help').hidden = !byId('help').hidden));
+  // The keys' help from the key table, as every player shows it.
+  byId('help').querySelector('.keys').replaceChildren(helpTable(document, explorerKeys));
   byId('copy-link').addEventListener('click', () => copyLink(p.link()));
   bindGoto(p);
   // A dropdown used is left: the keys step again (a focused <select> takes the arrow keys).
@@ -122,32 +126,38 @@ function bindGoto(p) {
   });
 }
 
-// One key: true when it was the player's. Text fields keep their keys; a dropdown or the slider
-// hands its arrow keys over (their default would change the value: ↓ switched Gouraud to flat).
+// The explorer's actions of the players' key table (web/player/keys.json, embedded by
+// make_page.mjs): the same keys as `scantrace step` and the trace page.
+const explorerKeys = playerKeys(SCANTRACE_KEYS, 'explorer');
+
+// One key: true when it was the player's. The focused control keeps its own keys (keys.mjs's
+// controlsKey: text fields, a button's Space and Enter); a dropdown hands its arrows over.
 function playerKey(e, p, play, playing) {
-  const t = e.target, k = e.key;
-  if (t instanceof HTMLInputElement && ['text', 'number', 'search'].includes(t.type)) return false;
-  if (e.ctrlKey || e.metaKey || e.altKey) return false;
-  const arrow = k.startsWith('Arrow');
-  if (t instanceof HTMLSelectElement) {
-    if (!arrow) return false;
-    t.blur();
-    if (k === 'ArrowUp' || k === 'ArrowDown') return true;
+  if (controlsKey(e)) return false;
+  const action = explorerKeys.action(e);
+  const at = p.step();
+  switch (action) {
+    case 'next': p.setStep(at + 1); break;
+    case 'previous': p.setStep(at - 1); break;
+    case 'forward10': p.setStep(at + 10); break;
+    case 'back10': p.setStep(at - 10); break;
+    case 'first': p.setStep(0); break;
+    case 'last': p.setStep(p.plan().length - 1); break;
+    case 'play': play(!playing()); break;
+    case 'go_to_row':
+      byId('goto').hidden = false;
+      byId('goto-row').focus();
+      byId('goto-row').select();
+      break;
+    case 'copy_link': copyLink(p.link()); break;
+    case 'help': byId('help').hidden = !byId('help').hidden; break;
+    case 'present': p.present(true); break;
+    case 'close':
+      byId('help').hidden = true;
+      p.present(false);
+      break;
+    default:
+      return false;
   }
-  if ((t instanceof HTMLButtonElement || t.tagName === 'SUMMARY') && (k === ' ' || k === 'Enter')) return false;
-  const n = p.plan().length, at = p.step();
-  const to = { ArrowRight: at + 1, n: at + 1, ' ': at + 1, ArrowLeft: at - 1, p: at - 1, PageDown: at + 10, PageUp: at - 10, Home: 0, End: n - 1 }[k];
-  if (to !== undefined) p.setStep(to);
-  else if (k === 'a') play(!playing());
-  else if (k === 'g') {
-    byId('goto').hidden = false;
-    byId('goto-row').focus();
-    byId('goto-row').select();
-  } else if (k === '?') byId('help').hidden = !byId('help').hidden;
-  else if (k === 'f') p.present(true);
-  else if (k === 'Escape') {
-    byId('help').hidden = true;
-    p.present(false);
-  } else return false;
   return true;
 }

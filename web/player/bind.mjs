@@ -3,7 +3,7 @@
 // help overlay and the address (#step=N). Keys are taken in the capture phase at `scope`, before
 // a focused slider, list or button sees them: after a control is used, the keys still step.
 import { PLAY_SPEEDS } from './controller.mjs';
-import { helpTable } from './keys.mjs';
+import { controlsKey, helpTable } from './keys.mjs';
 
 // o: {scope, keys (playerKeys), first (the number of step index 0, from 1), slider?, counter?
 // (element) and counterText?(s), list? (element of one child per step), playButton?, speed?
@@ -55,20 +55,6 @@ export function bindPlayer(s, o) {
   }
   s.onChange(() => update(s, o, first, doc));
   return s;
-}
-
-// Whether a key is the focused control's own: a text field's keys, Space and Enter on a button
-// (a keyboard's click). A list's arrows are the player's, and ↑ ↓ nobody's: their default would
-// change its value unseen (the list is left, so the next keys step).
-function controlsKey(e) {
-  const t = e.target, k = e.key;
-  if (t.tagName === 'INPUT' && ['text', 'number', 'search'].includes(t.type)) return true;
-  if ((t.tagName === 'BUTTON' || t.tagName === 'SUMMARY') && (k === ' ' || k === 'Enter')) return true;
-  if (t.tagName === 'SELECT' && k.startsWith('Arrow')) {
-    t.blur();
-    if (k === 'ArrowUp' || k === 'ArrowDown') e.preventDefault();
-  }
-  return false;
 }
 
 // The speed list's options (steps a second) and its choice.

@@ -6,7 +6,7 @@
 //   keys.action(event)   // 'next', 'go_to_row', ... or null
 //   keys.help()          // [[label, help], ...] for this player
 
-// `table`: keys.json's object; `player`: 'trace', 'step' or 'python' (the actions it has).
+// `table`: keys.json's object; `player`: 'trace', 'step', 'python' or 'explorer' (the actions it has).
 export function playerKeys(table, player) {
   const actions = table.actions.filter((a) => a.in.includes(player));
   const byKey = new Map();
@@ -28,4 +28,18 @@ export function helpTable(doc, keys) {
     row.insertCell().textContent = help;
   }
   return table;
+}
+
+// Whether a key is the focused control's own: a text field's keys, Space and Enter on a button
+// (a keyboard's click). A list's arrows are the player's, and ↑ ↓ nobody's: their default would
+// change its value unseen (the list is left, so the next keys step).
+export function controlsKey(e) {
+  const t = e.target, k = e.key;
+  if (t.tagName === 'INPUT' && ['text', 'number', 'search'].includes(t.type)) return true;
+  if ((t.tagName === 'BUTTON' || t.tagName === 'SUMMARY') && (k === ' ' || k === 'Enter')) return true;
+  if (t.tagName === 'SELECT' && k.startsWith('Arrow')) {
+    t.blur();
+    if (k === 'ArrowUp' || k === 'ArrowDown') e.preventDefault();
+  }
+  return false;
 }

@@ -240,6 +240,66 @@ try {
     await key('PageUp', 'PageUp');
   });
 
+  await check("every key of the key table's explorer actions does its action, and ? lists exactly those actions", async () => {
+    // The explorer's actions, written out here, so an action dropped from keys.json fails.
+    const expected = ['next', 'previous', 'forward10', 'back10', 'first', 'last', 'go_to_row', 'play', 'copy_link', 'present', 'help', 'close'];
+    const table = JSON.parse(fs.readFileSync(new URL('../player/keys.json', import.meta.url), 'utf8'));
+    const actions = table.actions.filter((a) => a.in.includes('explorer'));
+    assert.deepStrictEqual(actions.map((a) => a.action).sort(), [...expected].sort());
+    // The help: one row per action but Esc's close (the help line of ? and f say it), in the
+    // table's order, with its label and help line.
+    await click('#help-button');
+    const rows = await b.evaluate("[...document.querySelectorAll('#help tr')].map((tr) => [...tr.cells].map((td) => td.textContent))");
+    await click('#help-button');
+    assert.deepStrictEqual(rows, actions.filter((a) => a.action !== 'close').map((a) => [a.label, a.help]));
+    const n = Number((await text('step-no')).match(/\/ (\d+)/)[1]);
+    const clamp = (k) => Math.max(0, Math.min(n - 1, k));
+    // Each step action's step from step 12 (index 11), and each other action's effect seen.
+    const moves = { next: (k) => k + 1, previous: (k) => k - 1, forward10: (k) => k + 10, back10: (k) => k - 10, first: () => 0, last: () => n - 1 };
+    const state = () => b.evaluate(`(() => { const $ = (id) => document.getElementById(id); return { play: $('play').textContent, help: !$('help').hidden, goto: !$('goto').hidden && document.activeElement.id === 'goto-row', presenting: document.body.classList.contains('presenting'), link: $('link-status').textContent }; })()`);
+    const press = async (k) => {
+      await b.evaluate('document.activeElement && document.activeElement.blur()');
+      if (k.length === 1 || k === 'Escape') await typeKey(k);
+      else await key(k, k);
+    };
+    const done = [];
+    for (const a of actions)
+      for (const k of a.keys) {
+        const what = `${a.action} by ${JSON.stringify(k)}`;
+        if (moves[a.action]) {
+          await click('#step-list li:nth-child(12)');
+          await press(k);
+          assert.equal(await stepShown(), clamp(moves[a.action](11)), what);
+        } else if (a.action === 'play') {
+          await press(k);
+          assert.equal((await state()).play, 'pause', what);
+          await press(k);
+          assert.equal((await state()).play, 'play', what);
+        } else if (a.action === 'go_to_row') {
+          await press(k);
+          assert.equal((await state()).goto, true, what);
+          await typeKey('Escape');
+          assert.equal((await state()).goto, false, what);
+        } else if (a.action === 'copy_link') {
+          await b.evaluate("document.getElementById('link-status').textContent = ''");
+          await press(k);
+          await until(what, async () => (await state()).link.includes('file://'));
+        } else if (a.action === 'help' || a.action === 'present') {
+          const on = a.action === 'help' ? 'help' : 'presenting';
+          await press(k);
+          await until(what, async () => (await state())[on]);
+          // Esc (the close action, checked here) closes the keys and leaves the presentation.
+          await press('Escape');
+          await until(`${what}, then Esc`, async () => !(await state())[on]);
+        } else if (a.action !== 'close') assert.fail(`no check of ${what}`);
+        done.push(a.action);
+      }
+    assert.deepStrictEqual([...new Set(done)].sort(), [...expected].sort());
+    // The step the next checks expect (as the keys' check left it).
+    await key('End', 'End');
+    await key('PageUp', 'PageUp');
+  });
+
   await check('presentation (f) at 1366x768: the frame alone, as large as the screen, composed at that size; the keys step; Esc leaves', async () => {
     // The height of the smallest text of the frame shown, in its pixels: of each text op the
     // tallest glyph (its strokes' extent), the least of those.

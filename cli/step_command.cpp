@@ -160,16 +160,17 @@ void run(const StepArgs& args) {
 
 Command add_step_command(CLI::App& app) {
   auto args = std::make_shared<StepArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "step",
+  // The keys as the window's `?` shows them: the players' key table (web/player/keys.json).
+  std::string about =
       "Steps through the replay of a trace in a window, at your own pace: the frames\n"
       "of 'replay', rendered as you go. Takes a trace file (.jsonl) or the inputs of\n"
-      "'trace'. Keys: Right/space/n next, Left/p previous, PgDn/PgUp 10 steps, Home/End,\n"
-      "g ROW Enter the step of scanline ROW, a play/pause, r one step per scanline or\n"
-      "grouped, s save the frame as PNG, ? keys, q/Esc quit. A click on a pixel cell\n"
-      "selects that pixel: it stays marked, and the side panel shows its history so\n"
-      "far (which triangle, row and span wrote it, with which colour). Needs a display;\n"
-      "without one, 'explain -o OUT.html' writes a page to step through in a browser.");
+      "'trace'. Keys (every player's, web/player/keys.json; ? shows them):\n";
+  for (const std::string& line : key_help_lines()) about += "  " + line + "\n";
+  about +=
+      "A selected pixel stays marked, and the side panel shows its history so far\n"
+      "(which triangle, row and span wrote it, with which colour). Needs a display;\n"
+      "without one, 'explain -o OUT.html' writes a page to step through in a browser.";
+  CLI::App* cmd = app.add_subcommand("step", about);
   add_trace_flags(*cmd, args->what);
   cmd->get_option("SCENE")->description(
       "trace file (.jsonl, from 'scantrace trace'), or a scene file\n"

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <map>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <spdlog/fmt/fmt.h>
@@ -74,10 +75,17 @@ std::string key_name(int code) {
   return std::string(1, static_cast<char>(c));
 }
 
-// The window's keys: keys.json's actions of the "window" player (web/player/keys.json, shared
-// with every page's player), each key's action as a PlayerKey.
-const std::map<std::string, PlayerKey>& window_keys() {
-  static const std::map<std::string, PlayerKey> keys = [] {
+// One action of the players' key table (web/player/keys.json, shared with every page's player)
+// that the window has: its keys, and its label and help line for the help and the hint.
+struct WindowAction {
+  PlayerKey key;
+  std::vector<std::string> keys;
+  std::string label, help;
+};
+
+// The window's actions of keys.json, in the table's order.
+const std::vector<WindowAction>& window_actions() {
+  static const std::vector<WindowAction> out = [] {
     const std::map<std::string, PlayerKey> actions = {{"next", PlayerKey::next},
                                                       {"previous", PlayerKey::previous},
                                                       {"forward10", PlayerKey::forward10},
@@ -90,7 +98,7 @@ const std::map<std::string, PlayerKey>& window_keys() {
                                                       {"save", PlayerKey::save},
                                                       {"help", PlayerKey::help},
                                                       {"quit", PlayerKey::quit}};
-    std::map<std::string, PlayerKey> out;
+    std::vector<WindowAction> v;
     const nlohmann::json table = nlohmann::json::parse(viz::web_player::keys_json);
     for (const nlohmann::json& a : table["actions"]) {
       const auto& in = a["in"];
@@ -98,14 +106,51 @@ const std::map<std::string, PlayerKey>& window_keys() {
       const auto action = actions.find(a["action"].get<std::string>());
       if (action == actions.end())
         throw std::logic_error("keys.json: the window has no action " + a["action"].dump());
-      for (const auto& k : a["keys"]) out.emplace(k.get<std::string>(), action->second);
+      v.push_back({action->second, a["keys"].get<std::vector<std::string>>(),
+                   a["label"].get<std::string>(), a["help"].get<std::string>()});
     }
+    return v;
+  }();
+  return out;
+}
+
+// Each key's action in the window.
+const std::map<std::string, PlayerKey>& window_keys() {
+  static const std::map<std::string, PlayerKey> keys = [] {
+    std::map<std::string, PlayerKey> out;
+    for (const WindowAction& a : window_actions())
+      for (const std::string& k : a.keys) out.emplace(k, a.key);
     return out;
   }();
   return keys;
 }
 
+// A window action's label and help line (the key hint of the status strip).
+std::string key_hint(PlayerKey key) {
+  for (const WindowAction& a : window_actions())
+    if (a.key == key) return a.label + " " + a.help;
+  throw std::logic_error("keys.json: the window has no key for its hint");
+}
+
 }  // namespace
+
+std::vector<std::string> key_help_lines() {
+  std::vector<std::pair<std::string, std::string>> rows;
+  for (const WindowAction& a : window_actions()) rows.emplace_back(a.label, a.help);
+  // The mouse's one action: no key, so not in the key table.
+  rows.emplace_back("click a pixel", "select it: marked, with its history");
+  // Characters, not bytes: the labels' arrows are three bytes of UTF-8.
+  const auto chars = [](const std::string& s) {
+    return static_cast<std::size_t>(
+        std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xc0) != 0x80; }));
+  };
+  std::size_t wide = 0;
+  for (const auto& [label, help] : rows) wide = std::max(wide, chars(label));
+  std::vector<std::string> lines;
+  for (const auto& [label, help] : rows)
+    lines.push_back(label + std::string(wide - chars(label) + 2, ' ') + help);
+  return lines;
+}
 
 PlayerKey decode_key(int code) {
   if (code < 0) return PlayerKey::none;
@@ -300,7 +345,7 @@ cv::Mat StepPlayer::image() {
     viz::draw_history_box(f, layout.panel, type,
                           viz::pixel_history_lines(trace_, replayer_->plan(), index_, *selected_));
   }
-  if (help_) viz::draw_key_help(f, type);
+  if (help_) viz::draw_key_help(f, type, key_help_lines());
   std::string left =
       fmt::format("step {} / {}{}", index_ + 1, steps(), playing_ ? "   playing" : "");
   if (row_entry_)
@@ -309,9 +354,7 @@ cv::Mat StepPlayer::image() {
     left += "   " + message_;
   const cv::Mat strip = viz::status_strip(
       f.cols, strip_height_, type, left,
-      fmt::format("<- -> step   PgUp PgDn 10   Home End   g row Enter   a play   r {}   "
-                  "click pixel   s save   ? keys   q quit",
-                  per_row_ ? "grouped" : "per scanline"));
+      fmt::format("click a pixel   {}   {}", key_hint(PlayerKey::help), key_hint(PlayerKey::quit)));
   cv::Mat out;
   cv::vconcat(f, strip, out);
   return out;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -40,6 +41,10 @@ enum class PlayerKey {
 // A key code from cv::waitKeyEx, whichever HighGUI backend produced it (Qt key codes, GTK/X11
 // keysyms, or the Windows virtual keys shifted by 16 bits).
 PlayerKey decode_key(int code);
+
+// The window's keys for its `?` overlay: a line per action of the players' key table
+// (web/player/keys.json) the window has, its label and help line, then the mouse's click.
+std::vector<std::string> key_help_lines();
 
 class StepPlayer {
  public:

@@ -110,22 +110,7 @@ void draw_history_box(FrameView& frame, const Rect& area, const Typography& type
   }
 }
 
-std::vector<std::string> key_help_lines() {
-  return {"Right / space / n    next step",
-          "Left / p             previous step",
-          "PgDn / PgUp          10 steps on / back",
-          "Home / End           first / last step",
-          "g, a row, Enter      the step of that scanline",
-          "a                    play / pause",
-          "r                    one step per scanline / grouped steps",
-          "click a pixel cell   select it: marked, with its history",
-          "s                    save what is shown as PNG",
-          "?                    show / hide these keys",
-          "q / Esc              quit (Esc first closes these keys)"};
-}
-
-void draw_key_help(FrameView& frame, const Typography& type) {
-  const std::vector<std::string> lines = key_help_lines();
+void draw_key_help(FrameView& frame, const Typography& type, const std::vector<std::string>& lines) {
   const int line = type.line_height(TextStyle::body), pad = type.px(14);
   int w = 0;
   for (const std::string& s : lines) w = std::max(w, type.width(s, TextStyle::body));

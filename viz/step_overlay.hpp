@@ -33,9 +33,9 @@ std::vector<std::string> pixel_history_lines(const trace::Trace& trace, const St
 void draw_history_box(FrameView& frame, const Rect& area, const Typography& type,
                       const std::vector<std::string>& lines);
 
-// The keys of the player, boxed in the middle of the frame.
-void draw_key_help(FrameView& frame, const Typography& type);
-std::vector<std::string> key_help_lines();
+// `lines` (the player's keys, from the players' key table web/player/keys.json), boxed in the
+// middle of the frame.
+void draw_key_help(FrameView& frame, const Typography& type, const std::vector<std::string>& lines);
 
 // A strip `height` high: `left` (the step counter, a prompt) and `right` (the key hint).
 Frame compose_status_strip(int width, int height, const Typography& type, const std::string& left,

@@ -25,8 +25,8 @@ void draw_history_box(cv::Mat& frame, const Rect& area, const Typography& type,
   over(frame, [&](FrameView& v) { draw_history_box(v, area, type, lines); });
 }
 
-void draw_key_help(cv::Mat& frame, const Typography& type) {
-  over(frame, [&](FrameView& v) { draw_key_help(v, type); });
+void draw_key_help(cv::Mat& frame, const Typography& type, const std::vector<std::string>& lines) {
+  over(frame, [&](FrameView& v) { draw_key_help(v, type, lines); });
 }
 
 cv::Mat status_strip(int width, int height, const Typography& type, const std::string& left,

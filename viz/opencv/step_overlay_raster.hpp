@@ -13,7 +13,7 @@ namespace scantrace::viz {
 void mark_pixel(cv::Mat& frame, const ViewGeometry& g, CanvasPixel pixel);
 void draw_history_box(cv::Mat& frame, const Rect& area, const Typography& type,
                       const std::vector<std::string>& lines);
-void draw_key_help(cv::Mat& frame, const Typography& type);
+void draw_key_help(cv::Mat& frame, const Typography& type, const std::vector<std::string>& lines);
 cv::Mat status_strip(int width, int height, const Typography& type, const std::string& left,
                      const std::string& right);
 

@@ -122,7 +122,7 @@ function bindGoto(p) {
     else byId('link-status').textContent = `no step of row ${input.value}`;
   });
   input.addEventListener('keydown', (e) => {
-    if (e.key === 'Escape') close();
+    if (explorerKeys.action(e) === 'close') close();
   });
 }
 

@@ -13,7 +13,7 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 
 import { createStepper, PLAY_SPEEDS } from '../player/controller.mjs';
-import { playerKeys } from '../player/keys.mjs';
+import { controlsKey, playerKeys } from '../player/keys.mjs';
 import { check, summary } from './check.mjs';
 
 const table = JSON.parse(fs.readFileSync(new URL('../player/keys.json', import.meta.url), 'utf8'));
@@ -45,6 +45,25 @@ check("every action of a page's keys is done by the core or by the page", () => 
   for (const [player, own] of Object.entries(pages))
     for (const a of table.actions.filter((x) => x.in.includes(player)))
       assert.ok(own.includes(a.action) || stepper.act(a.action), `${player}: ${a.action}`);
+});
+
+check("the focus rules: a text field's keys and a button's Space and Enter are the control's; a list's arrows are not", () => {
+  const event = (tagName, k, type) => {
+    const e = { key: k, target: { tagName, type, blurred: false, blur() { this.blurred = true; } }, prevented: false };
+    e.preventDefault = () => { e.prevented = true; };
+    return e;
+  };
+  for (const type of ['text', 'number', 'search']) assert.strictEqual(controlsKey(event('INPUT', 'n', type)), true, type);
+  assert.strictEqual(controlsKey(event('INPUT', 'ArrowRight', 'range')), false);
+  for (const tag of ['BUTTON', 'SUMMARY']) {
+    assert.strictEqual(controlsKey(event(tag, ' ')), true, tag);
+    assert.strictEqual(controlsKey(event(tag, 'Enter')), true, tag);
+    assert.strictEqual(controlsKey(event(tag, 'n')), false, tag);
+  }
+  // A list: left, its ↑ ↓ kept from changing its value, its ← → the player's.
+  const down = event('SELECT', 'ArrowDown'), right = event('SELECT', 'ArrowRight');
+  assert.deepStrictEqual([controlsKey(down), down.target.blurred, down.prevented], [false, true, true]);
+  assert.deepStrictEqual([controlsKey(right), right.target.blurred, right.prevented], [false, true, false]);
 });
 
 // 12 steps: a title, set-up, then rows 5..9, 10..14, ... two rows a step up to 24, then the end.

@@ -5,6 +5,7 @@
 //   const keys = playerKeys(SCANTRACE_KEYS, 'trace');
 //   keys.action(event)   // 'next', 'go_to_row', ... or null
 //   keys.help()          // [[label, help], ...] for this player
+//   keys.hint(['next', 'help'])   // '→ / space / n next step · ? these keys (Esc closes)'
 
 // `table`: keys.json's object; `player`: 'trace', 'step', 'python' or 'explorer' (the actions it has).
 export function playerKeys(table, player) {
@@ -16,6 +17,8 @@ export function playerKeys(table, player) {
     action: (e) => (e.ctrlKey || e.altKey || e.metaKey ? null : byKey.get(e.key) || null),
     help: () => actions.filter((a) => a.action !== 'close').map((a) => [a.label, a.help]),
     has: (action) => actions.some((a) => a.action === action),
+    // A one-line hint: the named actions this player has, each as its label and help line.
+    hint: (names) => actions.filter((a) => names.includes(a.action)).map((a) => `${a.label} ${a.help}`).join(' \u00b7 '),
   };
 }
 

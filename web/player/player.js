@@ -43,8 +43,11 @@ export async function startPlayer(pm, cfg, traceText) {
     say(rowChoices[rowChoice] ? `${rowChoices[rowChoice]} scanline${rowChoices[rowChoice] > 1 ? 's' : ''} a step` : 'steps as planned');
   }
   relist();
+  const keys = playerKeys(SCANTRACE_KEYS, 'trace');
+  // The hint under the frame: a few of the key table's rows (? shows them all).
+  $('info').textContent = `${keys.hint(['next', 'previous', 'go_to_row', 'play', 'help'])} \u00b7 click a pixel of the canvas for its row in the trace`;
   bindPlayer(s, {
-    scope: document, keys: playerKeys(SCANTRACE_KEYS, 'trace'), first: 1, slider: $('slider'),
+    scope: document, keys, first: 1, slider: $('slider'),
     counter: $('step-no'), counterText: () => `step ${s.index + 1} / ${s.count}: ${label(steps[s.index])}`,
     list: $('list'), playButton: $('play'), speed: $('speed'), help: $('help'), hash: true, say,
     actions: { toggle_rows: toggleRows },

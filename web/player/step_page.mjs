@@ -32,8 +32,11 @@ export function startStepPage() {
     li.addEventListener('click', () => s.go(i));
     list.appendChild(li);
   });
+  const keys = playerKeys(SCANTRACE_KEYS, 'step');
+  // The hint under the frame: a few of the key table's rows (? shows them all).
+  $('hint').textContent = keys.hint(['next', 'previous', 'go_to_row', 'play', 'save', 'help']);
   bindPlayer(s, {
-    scope: document, keys: playerKeys(SCANTRACE_KEYS, 'step'), first: base, slider: $('slider'),
+    scope: document, keys, first: base, slider: $('slider'),
     counter: $('counter'), counterText: () => `step ${base + s.index} / ${DATA.total}`, list,
     playButton: $('play'), speed: $('speed'), help: $('help'), hash: true, say,
     actions: { save: () => save(frameUrl, base + s.index, s.index, say) },

@@ -36,6 +36,9 @@ check('the key table: the trace page has the keys of scantrace step, and its own
   assert.ok(help.some(([label, text]) => label === '?' && /keys/.test(text)), JSON.stringify(help));
   assert.ok(help.some(([label]) => label.startsWith('g')));
   assert.ok(!help.some(([label]) => label === 'Esc'));
+  // The pages' one-line hint: the named actions the player has, in the table's order, as written
+  // here from the trace page's keys (s is the step page's, not the trace page's).
+  assert.strictEqual(keys.hint(['help', 'save', 'next']), '\u2192 / space / n next step \u00b7 ? these keys (Esc closes)');
 });
 
 check("every action of a page's keys is done by the core or by the page", () => {

@@ -29,9 +29,8 @@ _ids = itertools.count(1)
 
 class Player:
     """A trace's replay as one self-contained HTML player (``trace.player()``; a Trace in a cell's
-    last line shows this). Buttons, a slider and keys step it (click it first: Right/Space/n next,
-    Left/p previous, PageDown/PageUp ten, Home/End, g and a row, a play, + and - its speed,
-    ? every key: web/player/keys.json).
+    last line shows this). Buttons, a slider and keys step it (click it first: the actions of the
+    players' key table web/player/keys.json marked ``python``; ? shows them).
 
     ``html`` is the player (an HTML fragment, what Jupyter shows), ``save(path)`` writes it as a
     page. ``steps`` is how many steps it holds, ``full_steps`` how many the replay has with the
@@ -117,16 +116,13 @@ def player_html(deck_json, steps, note, frame_size):
     data = deck_json.replace("</", "<\\/")
     note_html = f'<div class="st-note" style="color:#555">{html.escape(note)}</div>' if note else ""
     buttons = "".join(
-        f'<button data-act="{act}" title="{html.escape(tip)}">{text}</button>'
-        # Geometric shapes every font has (the media symbols U+23E9.. are missing from many).
-        for act, text, tip in (("first", "|&#x25C0;", "first step (Home)"),
-                               ("back10", "&#x25C0;&#x25C0;", "10 steps back (PageUp)"),
-                               ("previous", "&#x25C0;", "previous step (Left, p)"),
-                               ("play", "&#x25B6; play", "play / pause (a)"),
-                               ("next", "&#x25B6;", "next step (Right, Space, n)"),
-                               ("forward10", "&#x25B6;&#x25B6;", "10 steps on (PageDown)"),
-                               ("last", "&#x25B6;|", "last step (End)"),
-                               ("help", "?", "the keys (?)")))
+        f'<button data-act="{act}">{text}</button>'
+        # Geometric shapes every font has (the media symbols U+23E9.. are missing from many);
+        # the titles come from the key table (bind.mjs).
+        for act, text in (("first", "|&#x25C0;"), ("back10", "&#x25C0;&#x25C0;"),
+                          ("previous", "&#x25C0;"), ("play", "&#x25B6; play"),
+                          ("next", "&#x25B6;"), ("forward10", "&#x25B6;&#x25B6;"),
+                          ("last", "&#x25B6;|"), ("help", "?")))
     return f"""<div id="{pid}" class="scantrace-player" tabindex="0" style="max-width:100%;outline:none;font-family:sans-serif;font-size:13px">
 <canvas width="{frame_size[0]}" height="{frame_size[1]}" style="max-width:100%;height:auto;border:1px solid #ccc;display:block"></canvas>
 <div class="st-fallback">scantrace trace player ({steps} steps): it draws with JavaScript, which this viewer does not run (in Jupyter: trust the notebook, or run the cell).</div>

@@ -85,8 +85,10 @@ export function bindPlayer(p) {
     byId('toggle-list').setAttribute('aria-expanded', String(!byId('step-list').hidden));
   });
   byId('help-button').addEventListener('click', () => (byId('help').hidden = !byId('help').hidden));
-  // The keys' help from the key table, as every player shows it.
+  // The keys' help from the key table, as every player shows it, and the buttons' titles.
   byId('help').querySelector('.keys').replaceChildren(helpTable(document, explorerKeys));
+  const buttons = { prev: 'previous', play: 'play', next: 'next', 'copy-link': 'copy_link', present: 'present', 'help-button': 'help' };
+  for (const [id, action] of Object.entries(buttons)) byId(id).title = explorerKeys.tip(action);
   byId('copy-link').addEventListener('click', () => copyLink(p.link()));
   bindGoto(p);
   // A dropdown used is left: the keys step again (a focused <select> takes the arrow keys).

@@ -35,8 +35,11 @@ export function bindPlayer(s, o) {
     e.preventDefault();
     e.stopPropagation();
   }, true);
-  for (const b of o.scope.querySelectorAll('[data-act]'))
+  for (const b of o.scope.querySelectorAll('[data-act]')) {
+    // Its title from the key table, so a button names the keys that do the same.
+    if (o.keys.tip(b.dataset.act)) b.title = o.keys.tip(b.dataset.act);
     b.addEventListener('click', () => { act(b.dataset.act); b.blur(); });
+  }
   if (o.slider) {
     o.slider.min = String(first);
     o.slider.max = String(first + s.count - 1);

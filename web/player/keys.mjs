@@ -17,6 +17,8 @@ export function playerKeys(table, player) {
     action: (e) => (e.ctrlKey || e.altKey || e.metaKey ? null : byKey.get(e.key) || null),
     help: () => actions.filter((a) => a.action !== 'close').map((a) => [a.label, a.help]),
     has: (action) => actions.some((a) => a.action === action),
+    // A button's title: its action's help line and keys ('' when this player has no such action).
+    tip: (name) => actions.filter((a) => a.action === name).map((a) => `${a.help} (${a.label})`).join(''),
     // A one-line hint: the named actions this player has, each as its label and help line.
     hint: (names) => actions.filter((a) => names.includes(a.action)).map((a) => `${a.label} ${a.help}`).join(' \u00b7 '),
   };

@@ -252,6 +252,11 @@ try {
     const rows = await b.evaluate("[...document.querySelectorAll('#help tr')].map((tr) => [...tr.cells].map((td) => td.textContent))");
     await click('#help-button');
     assert.deepStrictEqual(rows, actions.filter((a) => a.action !== 'close').map((a) => [a.label, a.help]));
+    // The player's buttons name their keys, from the table too.
+    const byName = Object.fromEntries(actions.map((a) => [a.action, a]));
+    const buttons = [['prev', 'previous'], ['play', 'play'], ['next', 'next'], ['copy-link', 'copy_link'], ['present', 'present'], ['help-button', 'help']];
+    const titles = await b.evaluate(`${JSON.stringify(buttons.map((x) => x[0]))}.map((id) => document.getElementById(id).title)`);
+    assert.deepStrictEqual(titles, buttons.map(([, a]) => `${byName[a].help} (${byName[a].label})`));
     const n = Number((await text('step-no')).match(/\/ (\d+)/)[1]);
     const clamp = (k) => Math.max(0, Math.min(n - 1, k));
     // Each step action's step from step 12 (index 11), and each other action's effect seen.

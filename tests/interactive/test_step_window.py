@@ -5,6 +5,7 @@ frame, q quits with status 0. Also: no display is one line and exit status 1; a 
 a trace cut short (--partial) and a scene trace open and step. Conditions are polled, never
 waited for with fixed sleeps. Usage: test_step_window.py SCANTRACE WORKDIR. Exit 77: skipped."""
 import ctypes
+import json
 import os
 import re
 import signal
@@ -262,6 +263,20 @@ def main():
     os.makedirs(work, exist_ok=True)
     run(scantrace, "-q", "trace", "--triangle", "2.3,1.2 29,9.5 8,27.6", "--size", "32x30",
         "-o", "t.jsonl", cwd=work)
+
+    # The window's keys are the players' key table's (web/player/keys.json): `step --help` lists
+    # the same lines as its ? overlay, one per action the table gives the window, each action
+    # written out here too, so one dropped from the table fails.
+    table = json.load(open(os.path.join(os.path.dirname(__file__), "..", "..", "web", "player",
+                                        "keys.json"), encoding="utf-8"))
+    window = [a for a in table["actions"] if "window" in a["in"]]
+    assert sorted(a["action"] for a in window) == sorted(
+        ["next", "previous", "forward10", "back10", "first", "last", "go_to_row", "play",
+         "toggle_rows", "save", "help", "quit"]), [a["action"] for a in window]
+    listed = [re.split(r"\s{2,}", line.strip(), maxsplit=1) for line in
+              run(scantrace, "step", "--help", cwd=work).stdout.split("\n")
+              if line.startswith("  ") and not line.startswith("   ")][:len(window)]
+    assert listed == [[a["label"], a["help"]] for a in window], listed
 
     # Without a display: one line, exit status 1, and the way out.
     no_display = dict(os.environ)

@@ -29,6 +29,16 @@ add_custom_target(scantrace_web ALL
   USES_TERMINAL)
 
 if(SCANTRACE_BUILD_TESTS)
+  # The web build's configuration alone, in a folder of its own: it fails when a library folder's
+  # .cpp is in none of that folder's targets there and needs no capability that is off there
+  # (scantrace_check_library_sources, cmake/scantrace_capabilities.cmake).
+  add_test(NAME "web: every library source is built for the web or refused by a named option"
+           COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} -S ${PROJECT_SOURCE_DIR}
+                   -B ${CMAKE_BINARY_DIR}/web-tests/configure
+                   -DCMAKE_TOOLCHAIN_FILE=${SCANTRACE_EMSCRIPTEN_TOOLCHAIN}
+                   -DCMAKE_BUILD_TYPE=Release -G "Unix Makefiles" --log-level=WARNING)
+  set_tests_properties("web: every library source is built for the web or refused by a named option"
+                       PROPERTIES LABELS "web" TIMEOUT 300)
   # A Node test of the module against the native command (its binary, a work folder and the demo
   # scene as arguments).
   function(add_node_command_test name script timeout)

@@ -34,11 +34,11 @@ Vec3 parse_vec3(const std::string& text, const std::string& what) {
 
 FillOptions ModelFlags::apply(FillOptions o, bool model) const {
   // A model is culled and z-buffered; a scene keeps the course's render (the tables' defaults).
-  o.cull = cull.empty() ? (model ? Cull::back : option_table<Cull>().default_value)
-                        : chosen<Cull>(cull);
-  o.visibility = depth.empty() ? (model ? Visibility::zbuffer
-                                        : option_table<Visibility>().default_value)
-                               : chosen<Visibility>(depth);
+  o.cull =
+      cull.empty() ? (model ? Cull::back : option_table<Cull>().default_value) : chosen<Cull>(cull);
+  o.visibility = depth.empty()
+                     ? (model ? Visibility::zbuffer : option_table<Visibility>().default_value)
+                     : chosen<Visibility>(depth);
   return o;
 }
 

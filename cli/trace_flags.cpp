@@ -225,7 +225,9 @@ void add_trace_flags(CLI::App& command, TraceFlags& flags) {
           ->capture_default_str();
   add_canvas_size_option(command, flags.size);
   colors->excludes(scene);
-  add_choice<WindingRule>(command, "--winding", flags.winding)->needs(polygon)->capture_default_str();
+  add_choice<WindingRule>(command, "--winding", flags.winding)
+      ->needs(polygon)
+      ->capture_default_str();
   add_choice<TraceLevel>(command, "--level", flags.level)->capture_default_str();
   command
       .add_option("--triangles", flags.triangles,

@@ -108,13 +108,27 @@ const OptionTable<TraceLevel>& option_table<TraceLevel>() {
   return t;
 }
 
-const char* to_string(Shading s) { return option_name(s); }
-const char* to_string(FillRule r) { return option_name(r); }
-const char* to_string(Method m) { return option_name(m); }
-const char* to_string(Cull c) { return option_name(c); }
-const char* to_string(Visibility v) { return option_name(v); }
-const char* to_string(Occlusion o) { return option_name(o); }
-const char* to_string(WindingRule w) { return option_name(w); }
+const char* to_string(Shading s) {
+  return option_name(s);
+}
+const char* to_string(FillRule r) {
+  return option_name(r);
+}
+const char* to_string(Method m) {
+  return option_name(m);
+}
+const char* to_string(Cull c) {
+  return option_name(c);
+}
+const char* to_string(Visibility v) {
+  return option_name(v);
+}
+const char* to_string(Occlusion o) {
+  return option_name(o);
+}
+const char* to_string(WindingRule w) {
+  return option_name(w);
+}
 
 bool parse_method(const char* name, Method& out) {
   const std::optional<Method> m = parse_option<Method>(name);

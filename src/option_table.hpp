@@ -48,9 +48,10 @@ struct OptionTable {
   // "a, b or c" (`last` = " or ") — for messages that list the choices.
   std::string listed(const char* last = " or ", const char* quote = "") const {
     std::string out;
-    for (std::size_t i = 0; i < names_.size(); ++i)
-      out += std::string(i == 0 ? "" : i + 1 == names_.size() ? last : ", ") + quote +
-             names_[i].name + quote;
+    for (std::size_t i = 0; i < names_.size(); ++i) {
+      if (i > 0) out += i + 1 == names_.size() ? last : ", ";
+      out += std::string(quote) + names_[i].name + quote;
+    }
     return out;
   }
 };

@@ -183,7 +183,9 @@ void draw_title_card(FrameView& frame, const Typography& type, const trace::Trac
                 TextStyle::body, palette::kMutedText);
   w.gap(12);
   trace_warnings(w, trace);
-  footer(frame, type, fmt::format("trace: {}   ({}, level {})", info.source, h.generator, trace::to_string(h.level)));
+  footer(frame, type,
+         fmt::format("trace: {}   ({}, level {})", info.source, h.generator,
+                     trace::to_string(h.level)));
 }
 
 void draw_end_card(FrameView& frame, const Typography& type, const trace::Trace& trace,

@@ -299,11 +299,10 @@ FillRule fill_rule_argument(const std::string& s) {
 void bind_options(py::module_& m) {
   m.def(
       "option_names", [] { return option_entries("names"); },
-      "Each option's names by key ('shading': ['flat', 'gouraud'], ...), as the C++ tables list "
-      "them.");
+      "Each option's names by key (shading, fill_rule, method, ...), as the C++ tables list them.");
   m.def(
       "option_defaults", [] { return option_entries("default"); },
-      "Each option's default name by key ('shading': 'gouraud', ...).");
+      "Each option's default name by key.");
 }
 
 FillOptions fill_options(const std::string& shading, const std::string& fill_rule) {

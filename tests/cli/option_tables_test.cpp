@@ -65,9 +65,9 @@ void header_reads(const Field& field) {
     const trace::Trace tr = read_header(t.key, n);
     CHECK(option_name(E(field(tr.header()))) == n);
   }
-  CHECK_THROWS_WITH(read_header(t.key, "bogus"),
-                    Catch::Contains(std::string(t.key) + " \"bogus\" is not one of " +
-                                    t.listed(", ")));
+  CHECK_THROWS_WITH(
+      read_header(t.key, "bogus"),
+      Catch::Contains(std::string(t.key) + " \"bogus\" is not one of " + t.listed(", ")));
 }
 
 // `args` with `flag NAME` accepted for each of the table's names, and a usage error listing

@@ -65,15 +65,17 @@ std::string skip_reason(const json& v) {
                               " is not one of " + list);
 }
 
-// A header option's value by its name in the option's table (src/option_table.hpp).
+// A header option's value by its name in the option's table (src/option_table.hpp). The name
+// is quoted as it is: the message's printer escapes what a terminal would obey.
 template <class E>
 E named(const json& v) {
   const OptionTable<E>& table = option_table<E>();
   const std::string name = v.get<std::string>();
   if (const std::optional<E> e = table.parse(name)) return *e;
-  throw std::invalid_argument(std::string("header: ") + table.key + " " +
-                              v.dump(-1, ' ', true, json::error_handler_t::replace) +
-                              " is not one of " + table.listed(", "));
+  const std::vector<std::string> names = table.names();
+  throw std::invalid_argument(std::string("header: ") + table.key + " \"" + name + "\" is " +
+                              (names.size() == 2 ? "neither " + table.listed(" nor ")
+                                                 : "not " + table.listed()));
 }
 
 std::vector<int> integers(const json& v) {

@@ -65,9 +65,11 @@ void header_reads(const Field& field) {
     const trace::Trace tr = read_header(t.key, n);
     CHECK(option_name(E(field(tr.header()))) == n);
   }
-  CHECK_THROWS_WITH(
-      read_header(t.key, "bogus"),
-      Catch::Contains(std::string(t.key) + " \"bogus\" is not one of " + t.listed(", ")));
+  const Names n = t.names();
+  CHECK_THROWS_WITH(read_header(t.key, "bogus"),
+                    Catch::Contains(std::string(t.key) + " \"bogus\" is " +
+                                    (n.size() == 2 ? "neither " + n[0] + " nor " + n[1]
+                                                   : "not " + n[0] + ", " + n[1] + " or " + n[2])));
 }
 
 // `args` with `flag NAME` accepted for each of the table's names, and a usage error listing

@@ -72,10 +72,11 @@ E named(const json& v) {
   const OptionTable<E>& table = option_table<E>();
   const std::string name = v.get<std::string>();
   if (const std::optional<E> e = table.parse(name)) return *e;
-  const std::vector<std::string> names = table.names();
-  throw std::invalid_argument(std::string("header: ") + table.key + " \"" + name + "\" is " +
-                              (names.size() == 2 ? "neither " + table.listed(" nor ")
-                                                 : "not " + table.listed()));
+  const bool two = table.names().size() == 2;
+  std::string message = std::string("header: ") + table.key + " \"" + name + "\" is ";
+  message += two ? "neither " : "not ";
+  message += table.listed(two ? " nor " : " or ");
+  throw std::invalid_argument(message);
 }
 
 std::vector<int> integers(const json& v) {

@@ -285,7 +285,7 @@ Shading shading_argument(const std::string& given) {
   if (const std::optional<Shading> s = course_name<Shading>(given)) return *s;
   std::string letters;
   for (const OptionName<Shading>& n : option_table<Shading>().names_)
-    letters += "'" + std::string(1, n.name[0]) + "', ";
+    letters += {'\'', n.name[0], '\'', ',', ' '};
   throw_value_error("shading: expected " + letters + option_table<Shading>().listed(" or ", "'") +
                     " (in any case), got '" + given + "'");
 }

@@ -55,6 +55,10 @@ if(SCANTRACE_BUILD_TESTS)
   # image against the scene's canvas (web/tests/node_arguments.mjs).
   add_node_command_test("web: node API checks its arguments as the command does" node_arguments
                         300 arguments)
+  # The API's option names: scantrace.d.ts's are the command's, and the module takes exactly them
+  # (web/tests/node_options.mjs).
+  add_node_command_test("web: node API takes exactly the option tables' names" node_options 120
+                        options)
   # The trace page's module against the full one: its exports, its steps and frames
   # (web/tests/node_player.mjs).
   add_test(NAME "web: node player module composes the full module's frames"

@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "io/atomic_write.hpp"
+#include "src/fill_options.hpp"
 
 namespace scantrace::bench {
 namespace {
@@ -87,7 +88,8 @@ void write_plot(const std::vector<Measurement>& rows, const std::filesystem::pat
     int slot = 0;
     for (const Measurement& m : rows) {
       const std::optional<double> err = p == 0 ? m.wrong_per_million : m.colour_max;
-      if (!err || m.triangles == 0 || (p == 1 && m.shading != "gouraud")) continue;
+      if (!err || m.triangles == 0 || (p == 1 && m.shading != to_string(Shading::gouraud)))
+        continue;
       const double lx = std::log10(1e9 * m.seconds / m.triangles);
       const int x = x0 + static_cast<int>((lx - lx0) / (lx1 - lx0) * panel_w);
       int y;
@@ -98,7 +100,7 @@ void write_plot(const std::vector<Measurement>& rows, const std::filesystem::pat
         y = y1 - static_cast<int>((ly - ly0) / (ly1 - ly0) * plot_h);
       }
       const auto c = colour.count(m.variant) ? colour.at(m.variant) : cv::Scalar(128, 128, 128);
-      if (m.shading == "gouraud")
+      if (m.shading == to_string(Shading::gouraud))
         cv::circle(img, {x, y}, 5, c, cv::FILLED, cv::LINE_AA);
       else
         cv::rectangle(img, {x - 4, y - 4}, {x + 4, y + 4}, c, cv::FILLED);

@@ -285,15 +285,17 @@ void compare_methods(BenchRun& run) {
   targets.push_back({main_scene + ", flat: time / OpenCV time",
                      ratio(main_scene, "exact", "flat", main_scene, "opencv", "flat"), "≤ 0.35",
                      false});
-  targets.push_back({main_scene + ", Gouraud: time / OpenCV flat time",
-                     ratio(main_scene, "exact", "gouraud", main_scene, "opencv", "flat"), "≤ 0.5",
-                     false});
+  targets.push_back(
+      {main_scene + ", Gouraud: time / OpenCV flat time",
+       ratio(main_scene, "exact", to_string(Shading::gouraud), main_scene, "opencv", "flat"),
+       "≤ 0.5", false});
   // The same with the default render, which draws the course scene near to far (it chooses so).
   targets.push_back({main_scene + ", flat, the default render: time / OpenCV time",
                      ratio(main_scene, "default (exact)", "flat", main_scene, "opencv", "flat"),
                      "≤ 0.35", false});
   targets.push_back({main_scene + ", Gouraud, the default render: time / OpenCV flat time",
-                     ratio(main_scene, "default (exact)", "gouraud", main_scene, "opencv", "flat"),
+                     ratio(main_scene, "default (exact)", to_string(Shading::gouraud), main_scene,
+                           "opencv", "flat"),
                      "≤ 0.5", false});
   for (const char* w : {"small triangles (10 px²)", "small triangles (70 px²)"})
     targets.push_back({std::string(w) + ": triangles/s / OpenCV's",
@@ -368,9 +370,9 @@ void float_canvas(BenchRun& run) {
   std::printf("\n## The float canvas (the course's [0,1] RGB floats), %s\n\n", w.name.c_str());
   std::printf("| shading | 8-bit ms | float ms | float / 8-bit |\n|---|---:|---:|---:|\n");
   for (int i = 0; i < 2; ++i) {
-    std::printf("| %s | %.3f | %.3f | %.2f |\n", i ? "gouraud" : "flat", t[2 * i] * 1e3,
+    std::printf("| %s | %.3f | %.3f | %.2f |\n", to_string(Shading(i)), t[2 * i] * 1e3,
                 t[2 * i + 1] * 1e3, t[2 * i + 1] / t[2 * i]);
-    Measurement m = measurement(w.name, "exact", i ? "gouraud" : "flat", "float");
+    Measurement m = measurement(w.name, "exact", to_string(Shading(i)), "float");
     m.seconds = t[2 * i + 1];
     m.triangles = static_cast<long long>(w.scene.faces.size());
     run.bench.add(m);

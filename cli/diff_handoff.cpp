@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "cli/handoff.hpp"
 #include "io/input_error.hpp"
 
 namespace scantrace::cli {
@@ -24,17 +25,17 @@ void keep_diff_command_line(int, char** argv) {
 // codecs, ~0.1-0.3 s) is paid by JPEG and BMP images only.
 void hand_image_to_scantrace_tools(std::string_view, grade::SubmittedImage& out) {
   std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::filesystem::path tools = self.parent_path() / "scantrace-tools";
+  const std::filesystem::path tools =
+      beside_this_executable("scantrace-tools", kept_argv ? kept_argv[0] : "");
   std::string why = "cannot be found";
-  if (!ec && kept_argv != nullptr && std::filesystem::exists(tools, ec)) {
+  if (kept_argv != nullptr && std::filesystem::exists(tools, ec)) {
     std::fflush(nullptr);
     execv(tools.c_str(), kept_argv);
     why = std::string("cannot be run (") + std::strerror(errno) + ")";
   }
   throw InputError(out.name, "",
                    "a " + out.format + " image is decoded by scantrace-tools (OpenCV), which " +
-                       why + " beside " + self.string() + "; PNG and .npy images need none");
+                       why + " beside " + tools.parent_path().string() + "; PNG and .npy images need none");
 }
 
 }  // namespace scantrace::cli

@@ -7,9 +7,12 @@
 // (cli/diff_handoff.hpp). `scantrace-tools diff` is the same command.
 #include "cli/app.hpp"
 #include "cli/diff_handoff.hpp"
+#include "cli/scene_input.hpp"
+#include "io/mat_scene.hpp"
 
 int main(int argc, char** argv) {
   using namespace scantrace::cli;
+  read_mat_scenes_with(scantrace::load_mat_scene);
   keep_diff_command_line(argc, argv);
   constexpr AddCommand commands[]{
       [](CLI::App& app) { return add_diff_command(app, hand_image_to_scantrace_tools); }};

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "src/fill_options.hpp"
+#include "src/option_table.hpp"
 
 namespace CLI {
 class App;
@@ -12,10 +13,11 @@ class App;
 namespace scantrace::cli {
 
 struct FillFlags {
-  std::string shading = "gouraud";
-  std::string fill_rule = "top-left";
+  // Names from the option tables (src/option_table.hpp), checked by the options' choices.
+  std::string shading = option_table<Shading>().default_name();
+  std::string fill_rule = option_table<FillRule>().default_name();
   int subpixel_bits = kDefaultSubpixelBits;
-  std::string method = "exact";
+  std::string method = option_table<Method>().default_name();
   bool clamp_colors = false;  // for the SCENE these commands read (cli/scene_input.hpp)
 
   FillOptions options() const;

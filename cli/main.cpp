@@ -2,10 +2,13 @@
 // executable runs `render` itself and hands every other command line to this one
 // (cli/main_render.cpp).
 #include "cli/app.hpp"
+#include "cli/scene_input.hpp"
 #include "grade/opencv_decode.hpp"
+#include "io/mat_scene.hpp"
 
 int main(int argc, char** argv) {
   using namespace scantrace::cli;
+  read_mat_scenes_with(scantrace::load_mat_scene);
   // kToolsOnlyCommands (cli/commands.hpp) names the commands after demo and render: keep the two
   // in step (a cli test compares it with this executable's --help).
   constexpr AddCommand commands[]{

@@ -1,6 +1,7 @@
 // `scantrace`: the command users run. It renders itself (`scantrace render`, `--version`) and
-// hands every other command line, unchanged, to `scantrace-tools` beside it (cli/main.cpp),
-// which has every subcommand. Where there is no scantrace-tools (the demo's build,
+// hands every other command line, unchanged, to the one program that runs it (cli/handoff.hpp):
+// `scantrace-tools` beside it (cli/main.cpp), which has every subcommand, `scantrace-diff` or the
+// grader. Where there is no scantrace-tools (the demo's build,
 // scripts/build.sh --demo, which installs no OpenCV), it runs `demo` too (cli/demo_explain.hpp),
 // and says of the other subcommands that the full build has them.
 //
@@ -18,7 +19,11 @@
 #include <filesystem>
 #include <string_view>
 
+#include <string>
+#include <vector>
+
 #include "cli/app.hpp"
+#include "cli/handoff.hpp"
 #include "io/mat_scene.hpp"
 
 namespace {
@@ -54,19 +59,21 @@ int main(int argc, char** argv) {
     return run_app(argc, argv, render);
   }
   std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::filesystem::path dir =
-      ec ? std::filesystem::path(argv[0]).parent_path() : self.parent_path();
-  const std::filesystem::path tools = dir / "scantrace-tools";
+  const std::filesystem::path tools = beside_this_executable("scantrace-tools", argv[0]);
   if (!std::filesystem::exists(tools, ec)) {
     constexpr AddCommand here[]{
         [](CLI::App& app) { return add_demo_command(app, explain_demo_with_svg); },
         add_render_command};
     return run_app(argc, argv, here, kToolsOnlyCommands);
   }
-  // `diff` runs in scantrace-diff, which loads no video or window library (cli/diff_main.cpp).
-  if (const std::filesystem::path diff = dir / "scantrace-diff";
-      word < argc && std::string_view(argv[word]) == "diff" && std::filesystem::exists(diff, ec))
+  const std::string_view command = word < argc ? argv[word] : "";
+  // The grader is Python: scantrace-tools would only start it (cli/grade_command.cpp).
+  if (command == "grade") run_grader(std::vector<std::string>(argv + word + 1, argv + argc));
+  // `diff` runs in scantrace-diff, which loads no video or window library (cli/diff_main.cpp),
+  // unless its image is a JPEG or BMP, which only scantrace-tools' OpenCV decodes.
+  if (const std::filesystem::path diff = beside_this_executable("scantrace-diff", argv[0]);
+      command == "diff" && !names_jpeg_or_bmp_file(argc, argv, word + 1) &&
+      std::filesystem::exists(diff, ec))
     execv(diff.c_str(), argv);
   execv(tools.c_str(), argv);
   std::fprintf(stderr, "scantrace: error: cannot run %s: %s\n", tools.c_str(),

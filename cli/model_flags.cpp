@@ -11,6 +11,7 @@
 
 #include "cli/canvas_size.hpp"
 #include "cli/deprecated_option.hpp"
+#include "cli/option_choice.hpp"
 #include "cli/trace_flags.hpp"
 #include "cli/validators.hpp"
 #include "io/obj_loader.hpp"
@@ -32,10 +33,12 @@ Vec3 parse_vec3(const std::string& text, const std::string& what) {
 }
 
 FillOptions ModelFlags::apply(FillOptions o, bool model) const {
-  const std::string c = cull.empty() ? (model ? "back" : "none") : cull;
-  o.cull = c == "back" ? Cull::back : c == "front" ? Cull::front : Cull::none;
-  const std::string d = depth.empty() ? (model ? "zbuffer" : "painter") : depth;
-  o.visibility = d == "zbuffer" ? Visibility::zbuffer : Visibility::painter;
+  // A model is culled and z-buffered; a scene keeps the course's render (the tables' defaults).
+  o.cull =
+      cull.empty() ? (model ? Cull::back : option_table<Cull>().default_value) : chosen<Cull>(cull);
+  o.visibility = depth.empty()
+                     ? (model ? Visibility::zbuffer : option_table<Visibility>().default_value)
+                     : chosen<Visibility>(depth);
   return o;
 }
 
@@ -154,17 +157,8 @@ void add_model_flags(CLI::App& cmd, ModelFlags& f, bool beside_triangle_flags) {
       }))
       ->capture_default_str()
       ->group(g);
-  cmd.add_option("--cull", f.cull,
-                 "skip faces turned away (back) or towards the viewer\n"
-                 "(front); default: back for a model, none for a scene")
-      ->check(CLI::IsMember({"none", "back", "front"}))
-      ->group(g);
-  cmd.add_option("--depth", f.depth,
-                 "painter: farthest mean depth first (the course's);\n"
-                 "zbuffer: per-pixel depth test; default: zbuffer for a\n"
-                 "model, painter for a scene")
-      ->check(CLI::IsMember({"painter", "zbuffer"}))
-      ->group(g);
+  add_choice<Cull>(cmd, "--cull", f.cull)->group(g);
+  add_choice<Visibility>(cmd, "--depth", f.depth)->group(g);
 }
 
 }  // namespace scantrace::cli

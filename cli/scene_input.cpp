@@ -15,16 +15,14 @@ namespace {
 // Float RGB canvas (12 bytes), 8-bit BGR image (3) and PNG encoding buffers (about 3), rounded up.
 constexpr std::uint64_t kBytesPerPixel = 20;
 
-// A .mat file is the 2021 course's MATLAB scene (io/mat_scene.hpp), anything else JSON. Only
-// scantrace-tools reads .mat (SCANTRACE_READS_MAT): matio and the HDF5, curl and TLS libraries it
-// brings took 6 of the 9 ms `scantrace` needs to start, and `scantrace` hands such a scene on.
+MatSceneReader mat_reader = nullptr;
+
+// A .mat file is the 2021 course's MATLAB scene (io/mat_scene.hpp), anything else JSON.
 Scene load_any(const std::string& file, ColorClamping* clamping) {
   if (is_mat_file(file)) {
-#if SCANTRACE_READS_MAT
-    return load_mat_scene(file, clamping);
-#else
-    throw InputError(file, "", "MATLAB .mat scenes are read by scantrace-tools, not found here");
-#endif
+    if (mat_reader == nullptr)
+      throw InputError(file, "", "MATLAB .mat scenes are read by scantrace-tools, not found here");
+    return mat_reader(file, clamping);
   }
   return load_scene(file, clamping);
 }
@@ -48,6 +46,8 @@ Scene load(const std::string& file, bool clamp_colors) {
 }
 
 }  // namespace
+
+void read_mat_scenes_with(MatSceneReader reader) { mat_reader = reader; }
 
 void check_canvas_memory(int width, int height, const std::string& file,
                          const std::string& element) {

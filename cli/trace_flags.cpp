@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/canvas_size.hpp"
+#include "cli/option_choice.hpp"
 #include "cli/scene_input.hpp"
 #include "cli/validators.hpp"
 
@@ -121,21 +122,20 @@ std::pair<int, int> parse_size(const std::string& text) {
 }
 
 WindingRule TraceFlags::winding_rule() const {
-  WindingRule w = WindingRule::even_odd;
-  parse_winding_rule(winding.c_str(), w);  // validated by the option's check
-  return w;
+  return chosen<WindingRule>(winding);
 }
 
 void TraceFlags::check(const std::string& fill_rule, const std::string& method) const {
   if (scene.empty() && triangle.empty() && polygon.empty())
     throw CLI::RequiredError("a SCENE file, --triangle or --polygon");
   if (!polygon.empty()) {
-    if (fill_rule == "closed")
+    if (chosen<FillRule>(fill_rule) == FillRule::closed)
       throw CLI::ValidationError("--fill-rule",
                                  "closed is not defined for general polygons (where edges cross "
-                                 "or contours touch); use top-left");
+                                 "or contours touch); use " +
+                                     std::string(option_name(FillRule::top_left)));
     // A usage error like the one above, before the fill refuses it as bad input.
-    if (method == "halfspace")
+    if (chosen<Method>(method) == Method::halfspace)
       throw CLI::ValidationError("--method",
                                  "halfspace tests convex half-planes, which a general polygon "
                                  "is not; use exact, double or float");
@@ -178,7 +178,7 @@ std::variant<Scene, trace::TriangleInput, trace::GeneralPolygonInput> TraceFlags
 
 trace::TraceFilter TraceFlags::filter() const {
   trace::TraceFilter f;
-  f.level = trace::parse_level(level);
+  f.level = chosen<TraceLevel>(level);
   if (!triangles.empty()) f.triangles = trace::IndexSet::parse(triangles);
   if (!rows.empty()) f.rows = trace::RowRange::parse(rows);
   if (max_events) f.max_events = *max_events;
@@ -225,21 +225,10 @@ void add_trace_flags(CLI::App& command, TraceFlags& flags) {
           ->capture_default_str();
   add_canvas_size_option(command, flags.size);
   colors->excludes(scene);
-  command
-      .add_option("--winding", flags.winding,
-                  "which pixels of --polygon are inside: even-odd (an odd\n"
-                  "number of edges to the left) or non-zero (edges going\n"
-                  "down minus edges going up is not zero)")
-      ->check(CLI::IsMember({"even-odd", "non-zero"}))
+  add_choice<WindingRule>(command, "--winding", flags.winding)
       ->needs(polygon)
       ->capture_default_str();
-  command
-      .add_option("--level", flags.level,
-                  "triangle: setup, edge table and result per triangle\n"
-                  "scanline: also every row's active edges, points, span\n"
-                  "pixel: also every pixel written, with its colour")
-      ->check(CLI::IsMember({"triangle", "scanline", "pixel"}))
-      ->capture_default_str();
+  add_choice<TraceLevel>(command, "--level", flags.level)->capture_default_str();
   command
       .add_option("--triangles", flags.triangles,
                   "trace only these faces, e.g. 3,17,40-45 (default: all)")

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "src/option_table.hpp"
 #include "src/scene.hpp"
 #include "trace/record.hpp"
 #include "trace/trace_filter.hpp"
@@ -23,10 +24,10 @@ struct TraceFlags {
   std::string scene;
   std::string triangle;
   std::string polygon;
-  std::string winding = "even-odd";
+  std::string winding = option_table<WindingRule>().default_name();
   std::string colors = "1,0,0 0,1,0 0,0,1";
   std::string size;  // --size, the canvas (cli/canvas_size.hpp); empty: by input
-  std::string level = "scanline";
+  std::string level = option_table<TraceLevel>().default_name();
   std::string triangles;
   std::string rows;
   std::optional<long long> max_events;

@@ -254,7 +254,7 @@ std::string PixelStory::to_text() const {
   std::string out = fmt::format("pixel ({}, {}) of the {}x{} canvas ({}, {} rule, {}):\n", x, y,
                                 width, height, shading, fill_rule, visibility);
   if (faces.empty()) out += "  no face's bounding box holds its centre\n";
-  const bool gouraud = shading == "gouraud";
+  const bool gouraud = shading == to_string(Shading::gouraud);
   for (std::size_t i = 0; i < faces.size(); ++i)
     out += fmt::format("  {}. {}\n", i + 1, face_sentence(faces[i], x, y, gouraud));
   for (const auto& n : notes) out += "  note: " + n + "\n";
@@ -274,7 +274,7 @@ std::string PixelStory::summary(const std::vector<int>& also) const {
   for (const auto& f : faces)
     if (f.outcome == Outcome::written || f.outcome == Outcome::depth_rejected ||
         std::find(also.begin(), also.end(), f.face) != also.end())
-      out += face_sentence(f, x, y, shading == "gouraud") + ". ";
+      out += face_sentence(f, x, y, shading == to_string(Shading::gouraud)) + ". ";
   out += fmt::format("{} face(s) around it. ", n);
   // One paragraph: the first two boundary notes at most.
   for (std::size_t i = 0; i < notes.size() && i < 2; ++i) out += notes[i] + ". ";

@@ -189,10 +189,13 @@ class SceneReader {
 
 namespace {
 
+// Constant-initialized, so that a registration during static initialization is never undone.
+constinit FastSceneReader fast_reader = nullptr;
+
 // `padding`: bytes after the text that may be read (read_scene_fast).
 Scene parse(std::string_view text, std::size_t padding, const std::string& name_for_errors,
             ColorClamping* clamping) {
-  if (std::optional<Scene> s = read_scene_fast(text, padding)) {
+  if (std::optional<Scene> s = fast_reader ? fast_reader(text, padding) : std::nullopt) {
     finish_scene(*s, name_for_errors, clamping);
     return std::move(*s);
   }
@@ -200,6 +203,8 @@ Scene parse(std::string_view text, std::size_t padding, const std::string& name_
 }
 
 }  // namespace
+
+void register_fast_scene_reader(FastSceneReader reader) { fast_reader = reader; }
 
 Scene parse_scene_text(std::string_view text, const std::string& name_for_errors,
                        ColorClamping* clamping) {

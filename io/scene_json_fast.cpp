@@ -277,6 +277,13 @@ std::optional<Scene> read_scene_fast(std::string_view text, std::size_t padding)
   return read_dom(padded);
 }
 
+// Linked whenever scantrace_io is (the linker is told to take this symbol: io/CMakeLists.txt), so
+// no program has to remember to register the fast reader.
+extern "C" {
+extern bool scantrace_fast_scene_reader_registration;
+bool scantrace_fast_scene_reader_registration = (register_fast_scene_reader(read_scene_fast), true);
+}
+
 namespace detail {
 std::optional<Scene> read_scene_on_demand(std::string_view text) {
   return read_on_demand(simdjson::padded_string(text));

@@ -15,6 +15,15 @@
 
 namespace scantrace {
 
+// A fast reader parse_scene_text tries before the nlohmann reader: the scene, or nullopt to
+// decline (then the nlohmann reader reads the text). `padding` as for read_scene_fast.
+using FastSceneReader = std::optional<Scene> (*)(std::string_view text, std::size_t padding);
+
+// Makes `reader` the fast reader of every later parse_scene_text and load_scene; nullptr: none.
+// scene_json_fast.cpp registers read_scene_fast when it is linked (every native link of
+// scantrace_io: io/CMakeLists.txt); the WebAssembly build, without simdjson, registers none.
+void register_fast_scene_reader(FastSceneReader reader);
+
 // The scene's values as the file gives them (colours not yet clamped, the scene not validated),
 // or nullopt when the text is not a scene of exactly the expected shape, or when simdjson's
 // buffers (about 15 bytes per byte of text) would not fit in the memory available

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "src/option_table.hpp"
+
 namespace scantrace {
 
 void to_json(nlohmann::ordered_json& j, const Vec2& p) {
@@ -63,6 +65,20 @@ std::string skip_reason(const json& v) {
                               " is not one of " + list);
 }
 
+// A header option's value by its name in the option's table (src/option_table.hpp). The name
+// is quoted as it is: the message's printer escapes what a terminal would obey.
+template <class E>
+E named(const json& v) {
+  const OptionTable<E>& table = option_table<E>();
+  const std::string name = v.get<std::string>();
+  if (const std::optional<E> e = table.parse(name)) return *e;
+  const bool two = table.names().size() == 2;
+  std::string message = std::string("header: ") + table.key + " \"" + name + "\" is ";
+  message += two ? "neither " : "not ";
+  message += table.listed(two ? " nor " : " or ");
+  throw std::invalid_argument(message);
+}
+
 std::vector<int> integers(const json& v) {
   if (!v.is_array()) throw std::invalid_argument("expected an array of integers");
   std::vector<int> out;
@@ -82,14 +98,14 @@ ojson encode(const Header& h) {
              {"format", h.format},
              {"version", h.version},
              {"canvas", {{"width", h.canvas.width}, {"height", h.canvas.height}}},
-             {"shading", h.shading},
-             {"fill_rule", h.fill_rule},
+             {"shading", option_name(h.shading)},
+             {"fill_rule", option_name(h.fill_rule)},
              {"subpixel_bits", h.subpixel_bits},
-             {"level", h.level},
+             {"level", option_name(h.level)},
              {"generator", h.generator}};
-  if (h.winding_rule) j["winding_rule"] = *h.winding_rule;
-  if (h.visibility != "painter") j["visibility"] = h.visibility;
-  if (h.cull != "none") j["cull"] = h.cull;
+  if (h.winding_rule) j["winding_rule"] = option_name(*h.winding_rule);
+  if (h.visibility != Visibility::painter) j["visibility"] = option_name(h.visibility);
+  if (h.cull != Cull::none) j["cull"] = option_name(h.cull);
   if (!(h.background == Color{1, 1, 1})) j["background"] = h.background;
   return j;
 }
@@ -190,14 +206,14 @@ Header decode_header(const json& j) {
   h.format = j.at("format").get<std::string>();
   h.version = integer<int>(j.at("version"));
   h.canvas = {integer<int>(j.at("canvas").at("width")), integer<int>(j.at("canvas").at("height"))};
-  h.shading = j.at("shading").get<std::string>();
-  h.fill_rule = j.at("fill_rule").get<std::string>();
+  h.shading = named<Shading>(j.at("shading"));
+  h.fill_rule = named<FillRule>(j.at("fill_rule"));
   h.subpixel_bits = integer<int>(j.at("subpixel_bits"));
-  h.level = j.at("level").get<std::string>();
+  h.level = named<TraceLevel>(j.at("level"));
   h.generator = j.at("generator").get<std::string>();
-  if (j.contains("winding_rule")) h.winding_rule = j["winding_rule"].get<std::string>();
-  h.visibility = j.value("visibility", "painter");
-  h.cull = j.value("cull", "none");
+  if (j.contains("winding_rule")) h.winding_rule = named<WindingRule>(j["winding_rule"]);
+  if (j.contains("visibility")) h.visibility = named<Visibility>(j["visibility"]);
+  if (j.contains("cull")) h.cull = named<Cull>(j["cull"]);
   if (j.contains("background")) h.background = j["background"].get<Color>();
   return h;
 }

@@ -5,13 +5,13 @@ namespace scantrace::trace {
 Header make_header(int width, int height, const FillOptions& options, TraceLevel level) {
   Header h;
   h.canvas = {width, height};
-  h.shading = to_string(options.shading);
-  h.fill_rule = to_string(options.fill_rule);
+  h.shading = options.shading;
+  h.fill_rule = options.fill_rule;
   h.subpixel_bits = options.subpixel_bits;
-  h.level = to_string(level);
+  h.level = level;
   h.generator = std::string("scantrace ") + SCANTRACE_VERSION;
-  h.visibility = to_string(options.visibility);
-  h.cull = to_string(options.cull);
+  h.visibility = options.visibility;
+  h.cull = options.cull;
   return h;
 }
 

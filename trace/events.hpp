@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "src/color.hpp"
+#include "src/fill_options.hpp"
+#include "src/tracer.hpp"
 #include "src/vec2.hpp"
 
 namespace scantrace::trace {
@@ -26,17 +28,18 @@ struct Header {
   std::string format = kFormatName;
   int version = kFormatVersion;
   CanvasSize canvas;
-  std::string shading;    // "flat" | "gouraud"
-  std::string fill_rule;  // "top-left" | "closed"
+  // The options by value; their names (src/option_table.hpp) are what the JSON holds.
+  Shading shading = Shading::gouraud;
+  FillRule fill_rule = FillRule::top_left;
   int subpixel_bits = 8;
-  std::string level;      // "triangle" | "scanline" | "pixel"
+  TraceLevel level = TraceLevel::scanline;
   std::string generator;  // "scantrace X.Y.Z"
-  // "even-odd" | "non-zero": present in traces of general polygons (docs/polygons.md).
-  std::optional<std::string> winding_rule = std::nullopt;
+  // Present in traces of general polygons (docs/polygons.md).
+  std::optional<WindingRule> winding_rule = std::nullopt;
   // Written only when they differ from the course's render (painter's order, no culling), so
   // that traces of course scenes keep their bytes.
-  std::string visibility = "painter";  // "painter" | "zbuffer"
-  std::string cull = "none";           // "none" | "back" | "front"
+  Visibility visibility = Visibility::painter;
+  Cull cull = Cull::none;
   // The canvas colour the fill started from; written only when it is not white (the course's),
   // so that a replay can show the finished image as it was rendered.
   Color background{1, 1, 1};

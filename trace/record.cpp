@@ -46,7 +46,7 @@ void fill_traced(Tracer& tracer, const Scene& scene, const FillOptions& options,
 Header header_of(int width, int height, const FillOptions& options, TraceLevel level,
                  bool polygon) {
   Header h = make_header(width, height, options, level);
-  if (polygon) h.winding_rule = to_string(options.winding_rule);
+  if (polygon) h.winding_rule = options.winding_rule;
   return h;
 }
 

@@ -159,7 +159,9 @@ Trace Trace::parse(std::istream& in, const std::string& name, bool drop_unfinish
     try {
       events.push_back(event_from_json(j));
     } catch (const std::exception& e) {
-      throw TraceError(where + "malformed event: " + e.what());
+      // A header option's unknown name says "header: …" itself (trace/event_json.cpp).
+      const std::string what = e.what();
+      throw TraceError(where + (what.rfind("header: ", 0) == 0 ? "" : "malformed event: ") + what);
     }
   }
   if (events.empty()) throw TraceError(name + ": empty file, not a trace");

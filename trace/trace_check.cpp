@@ -143,22 +143,11 @@ class Checker {
 
   void check_header(const Header& h) {
     width_ = h.canvas.width, height_ = h.canvas.height;
-    if (h.shading != "flat" && h.shading != "gouraud")
-      fail("header: shading \"" + h.shading + "\" is neither flat nor gouraud");
-    if (h.fill_rule != "top-left" && h.fill_rule != "closed")
-      fail("header: fill_rule \"" + h.fill_rule + "\" is neither top-left nor closed");
-    if (h.level == "triangle")
-      level_ = 1;
-    else if (h.level == "scanline")
-      level_ = 2;
-    else if (h.level == "pixel")
-      level_ = 3;
-    else
-      fail("header: level \"" + h.level + "\" is not triangle, scanline or pixel");
+    level_ = h.level;  // the reader takes only a known shading, fill rule and level
     if (h.subpixel_bits < 0 || h.subpixel_bits > kMaxSubpixelBits)
       fail("header: subpixel_bits " + std::to_string(h.subpixel_bits) + " is not in 0…" +
            std::to_string(kMaxSubpixelBits));
-    closed_ = h.fill_rule == "closed";
+    closed_ = h.fill_rule == FillRule::closed;
     bits_ = h.subpixel_bits;
     scale_ = i64{1} << bits_;
   }
@@ -365,12 +354,28 @@ class Checker {
     return r.span ? r.span->size() : 0;
   }
 
+  // A scanline: in order, its edge sets and points as the edge table says, its span inside the
+  // canvas, and (pixel level) the pixel events before it; then it counts toward its triangle.
   void check(const Scanline& r) {
-    if (level_ < 2) fail("a scanline event in a trace of level triangle");
+    if (level_ < TraceLevel::scanline) fail("a scanline event in a trace of level triangle");
     TriangleState& s = open(r.triangle, "scanline");
     const auto row = [&] {
       return "triangle " + std::to_string(r.triangle) + ", row " + std::to_string(r.y);
     };
+    check_row_order(s, r, row);
+    check_edge_sets(s, r, row);
+    check_active_points(r, row);
+    check_span(r, row);
+    const i64 n = covered(r);
+    if (level_ == TraceLevel::pixel) check_row_pixels(s, r, n, row);
+    if (thorough_) check_exact(s, r, row());
+    ++s.scanlines;
+    s.span_pixels += n;
+    ++summary_.scanlines;
+  }
+
+  template <class Row>
+  void check_row_order(TriangleState& s, const Scanline& r, const Row& row) {
     if (!s.has_table) fail(row() + ": scanline before the triangle's edge table");
     if (s.last_y && r.y <= *s.last_y)
       fail(row() + ": rows of a triangle must increase, but row " + std::to_string(*s.last_y) +
@@ -379,10 +384,13 @@ class Checker {
       fail(row() + ": outside the rows " + std::to_string(s.y_first) + "…" +
            std::to_string(s.y_last) + " its edge table gives (clipped to the canvas)");
     s.last_y = r.y;
-    // The active set is what the edge table says for this row; entered/retired are its changes.
-    // Compared sorted, in vectors kept for the next row: allocating and copying them for every
-    // row was a tenth of recording a triangle's trace in the explorer's module (on every mouse
-    // move of a drag; docs/performance.md, "Ninth round").
+  }
+
+  // The active set is what the edge table says for this row; entered/retired are its changes.
+  // Compared sorted, in vectors kept for the next row: allocating them for every row is a large
+  // part of recording a triangle's trace, which the explorer does on every mouse move.
+  template <class Row>
+  void check_edge_sets(const TriangleState& s, const Scanline& r, const Row& row) {
     RowSets& sets = row_sets_;
     for (std::vector<int>* v : {&sets.active, &sets.want_active, &sets.want_entered,
                                 &sets.want_retired, &sets.entered, &sets.retired})
@@ -404,9 +412,8 @@ class Checker {
     for (std::vector<int>* v : {&sets.active, &sets.want_active, &sets.want_entered,
                                 &sets.want_retired, &sets.entered, &sets.retired})
       std::sort(v->begin(), v->end());
-    const std::vector<int>& active = sets.active;
-    if (active != sets.want_active)
-      fail(row() + ": active edges " + ids(active) + ", but the edge table makes " +
+    if (sets.active != sets.want_active)
+      fail(row() + ": active edges " + ids(sets.active) + ", but the edge table makes " +
            ids(sets.want_active) + " active on this row");
     if (sets.entered != sets.want_entered)
       fail(row() + ": entered " + ids(sets.entered) + " disagrees with the active set (edges " +
@@ -414,6 +421,12 @@ class Checker {
     if (sets.retired != sets.want_retired)
       fail(row() + ": retired " + ids(sets.retired) + " disagrees with the active set (edges " +
            ids(sets.want_retired) + " leave it on this row)");
+  }
+
+  // Each active point on an active edge (row_sets_.active, sorted by check_edge_sets), by x.
+  template <class Row>
+  void check_active_points(const Scanline& r, const Row& row) const {
+    const std::vector<int>& active = row_sets_.active;
     if (r.active_points.size() != r.active_edges.size())
       fail(row() + ": " + std::to_string(r.active_points.size()) + " active points for " +
            std::to_string(r.active_edges.size()) + " active edges");
@@ -428,6 +441,10 @@ class Checker {
         fail(row() + ": active points are not sorted by x (" + str(r.active_points[k - 1].x) +
              " before " + str(p.x) + ")");
     }
+  }
+
+  template <class Row>
+  void check_span(const Scanline& r, const Row& row) const {
     if (r.span) {
       if (r.span->x_begin > r.span->x_end)
         fail(row() + ": span " + std::to_string(r.span->x_begin) + "…" +
@@ -443,54 +460,54 @@ class Checker {
       color(r.span_colors->begin, [&] { return row() + ": span colour begin"; });
       color(r.span_colors->end, [&] { return row() + ": span colour end"; });
     }
-    if (r.intervals) {
-      i64 prev_end = 0;
-      for (std::size_t k = 0; k < r.intervals->size(); ++k) {
-        const Interval& iv = (*r.intervals)[k];
-        const auto in = [&] { return row() + ": interval " + std::to_string(k); };
-        finite(iv.x_left, [&] { return in() + " x_left"; });
-        finite(iv.x_right, [&] { return in() + " x_right"; });
-        if (iv.pixels.x_begin > iv.pixels.x_end || iv.pixels.x_begin < prev_end ||
-            iv.pixels.x_end > width_)
-          fail(in() + ": pixels [" + std::to_string(iv.pixels.x_begin) + ", " +
-               std::to_string(iv.pixels.x_end) +
-               ") are backwards, overlap the interval before or "
-               "leave the canvas");
-        prev_end = iv.pixels.x_end;
-        if (iv.colors)
-          color(iv.colors->begin, [&] { return in() + ": colour"; }),
-              color(iv.colors->end, [&] { return in() + ": colour"; });
-      }
+    if (r.intervals) check_intervals(*r.intervals, row);
+  }
+
+  template <class Row>
+  void check_intervals(const std::vector<Interval>& intervals, const Row& row) const {
+    i64 prev_end = 0;
+    for (std::size_t k = 0; k < intervals.size(); ++k) {
+      const Interval& iv = intervals[k];
+      const auto in = [&] { return row() + ": interval " + std::to_string(k); };
+      finite(iv.x_left, [&] { return in() + " x_left"; });
+      finite(iv.x_right, [&] { return in() + " x_right"; });
+      if (iv.pixels.x_begin > iv.pixels.x_end || iv.pixels.x_begin < prev_end ||
+          iv.pixels.x_end > width_)
+        fail(in() + ": pixels [" + std::to_string(iv.pixels.x_begin) + ", " +
+             std::to_string(iv.pixels.x_end) +
+             ") are backwards, overlap the interval before or "
+             "leave the canvas");
+      prev_end = iv.pixels.x_end;
+      if (iv.colors)
+        color(iv.colors->begin, [&] { return in() + ": colour"; }),
+            color(iv.colors->end, [&] { return in() + ": colour"; });
     }
-    const i64 n = covered(r);
-    // Pixel level: this row's pixels came just before, and are exactly the span's (in the
-    // recorded columns, when only some were).
-    if (level_ == 3) {
-      const i64 got = s.pending_y ? static_cast<i64>(s.pending_x.size()) : 0;
-      const i64 expected = columns_ ? covered_in(r, *columns_) : n;
-      if (s.pending_y && *s.pending_y != r.y)
-        fail(row() + ": the pixel events before it are of row " + std::to_string(*s.pending_y));
-      if (got != expected)
-        fail(row() + ": " + std::to_string(got) + " pixel events for a span of " +
-             std::to_string(expected) + " pixels" + (columns_ ? " in the recorded columns" : ""));
-      for (i64 x : s.pending_x) {
-        bool in = false;
-        if (r.intervals) {
-          for (const Interval& iv : *r.intervals) in = in || iv.pixels.contains(x);
-        } else {
-          in = r.span && r.span->contains(x);
-        }
-        if (!in)
-          fail(row() + ": pixel (" + std::to_string(x) + ", " + std::to_string(r.y) +
-               ") is outside the span");
+  }
+
+  // Pixel level: this row's pixels came just before, and are exactly the span's `n` (in the
+  // recorded columns, when only some were).
+  template <class Row>
+  void check_row_pixels(TriangleState& s, const Scanline& r, i64 n, const Row& row) {
+    const i64 got = s.pending_y ? static_cast<i64>(s.pending_x.size()) : 0;
+    const i64 expected = columns_ ? covered_in(r, *columns_) : n;
+    if (s.pending_y && *s.pending_y != r.y)
+      fail(row() + ": the pixel events before it are of row " + std::to_string(*s.pending_y));
+    if (got != expected)
+      fail(row() + ": " + std::to_string(got) + " pixel events for a span of " +
+           std::to_string(expected) + " pixels" + (columns_ ? " in the recorded columns" : ""));
+    for (i64 x : s.pending_x) {
+      bool in = false;
+      if (r.intervals) {
+        for (const Interval& iv : *r.intervals) in = in || iv.pixels.contains(x);
+      } else {
+        in = r.span && r.span->contains(x);
       }
-      s.pending_y.reset();
-      s.pending_x.clear();
+      if (!in)
+        fail(row() + ": pixel (" + std::to_string(x) + ", " + std::to_string(r.y) +
+             ") is outside the span");
     }
-    if (thorough_) check_exact(s, r, row());
-    ++s.scanlines;
-    s.span_pixels += n;
-    ++summary_.scanlines;
+    s.pending_y.reset();
+    s.pending_x.clear();
   }
 
   // Thorough: every x and every span from the exact crossings.
@@ -541,7 +558,7 @@ class Checker {
   }
 
   void check(const Pixel& p) {
-    if (level_ < 3) fail("a pixel event in a trace that is not of level pixel");
+    if (level_ < TraceLevel::pixel) fail("a pixel event in a trace that is not of level pixel");
     TriangleState& s = open(p.triangle, "pixel");
     const std::string px = "pixel (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
                            ") of triangle " + std::to_string(p.triangle);
@@ -578,10 +595,10 @@ class Checker {
         fail(tri + ": rows " + std::to_string(e.rows) + ", but its edge table covers " +
              std::to_string(rows) + " rows of the canvas");
       // Every row narrated (no --rows filter cut it): the pixel count is the spans' sum.
-      if (level_ >= 2 && s.scanlines == rows && e.pixels != s.span_pixels)
+      if (level_ >= TraceLevel::scanline && s.scanlines == rows && e.pixels != s.span_pixels)
         fail(tri + ": pixels " + std::to_string(e.pixels) + ", but its spans hold " +
              std::to_string(s.span_pixels));
-      if (level_ >= 2 && e.pixels < s.span_pixels)
+      if (level_ >= TraceLevel::scanline && e.pixels < s.span_pixels)
         fail(tri + ": pixels " + std::to_string(e.pixels) + ", fewer than its spans hold (" +
              std::to_string(s.span_pixels) + ")");
     }
@@ -615,7 +632,8 @@ class Checker {
   const bool thorough_;
   const std::optional<RowRange> columns_;
   std::size_t line_ = 1;
-  int width_ = 0, height_ = 0, level_ = 1, bits_ = 8;
+  int width_ = 0, height_ = 0, bits_ = 8;
+  TraceLevel level_ = TraceLevel::triangle;
   bool closed_ = false;
   i64 scale_ = 256;
   std::unordered_map<int, TriangleState> state_;

@@ -79,25 +79,13 @@ RowRange RowRange::parse(const std::string& text) {
 }
 
 const char* to_string(TraceLevel level) {
-  switch (level) {
-    case TraceLevel::none:
-      return "none";
-    case TraceLevel::triangle:
-      return "triangle";
-    case TraceLevel::scanline:
-      return "scanline";
-    case TraceLevel::pixel:
-      return "pixel";
-  }
-  return "none";
+  return level == TraceLevel::none ? "none" : option_name(level);
 }
 
 TraceLevel parse_level(const std::string& text) {
-  if (text == "triangle") return TraceLevel::triangle;
-  if (text == "scanline") return TraceLevel::scanline;
-  if (text == "pixel") return TraceLevel::pixel;
-  throw std::invalid_argument("unknown trace level \"" + text +
-                              "\" (expected triangle, scanline or pixel)");
+  if (const std::optional<TraceLevel> level = parse_option<TraceLevel>(text)) return *level;
+  throw std::invalid_argument("unknown trace level \"" + text + "\" (expected " +
+                              option_table<TraceLevel>().listed() + ")");
 }
 
 }  // namespace scantrace::trace

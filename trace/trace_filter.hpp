@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "src/option_table.hpp"
 #include "src/tracer.hpp"
 
 namespace scantrace::trace {
@@ -34,7 +35,7 @@ struct RowRange {
 };
 
 struct TraceFilter {
-  TraceLevel level = TraceLevel::scanline;
+  TraceLevel level = option_table<TraceLevel>().default_value;
   std::optional<IndexSet> triangles{};       // none: every triangle
   std::optional<RowRange> rows{};            // none: every row (scanline and pixel events only)
   // Columns of the pixel events kept (none: every column). `why` keeps one: a face's row there

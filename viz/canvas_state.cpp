@@ -51,7 +51,7 @@ CanvasState::CanvasState(Rect window, bool depth_test)
 }
 
 CanvasState::CanvasState(Rect window, const trace::Trace& trace)
-    : CanvasState(window, trace.header().visibility == "zbuffer") {}
+    : CanvasState(window, trace.header().visibility == Visibility::zbuffer) {}
 
 bool CanvasState::inside(std::int64_t x, std::int64_t y) const {
   return x >= window_.x && y >= window_.y && x < window_.x + window_.width &&
@@ -182,15 +182,14 @@ void CanvasState::refill(const trace::Trace& trace, int triangle) {
   if (!b) return;
   const trace::Header& h = trace.header();
   FillOptions o;
-  o.shading = h.shading == "flat" ? Shading::flat : Shading::gouraud;
-  o.fill_rule = h.fill_rule == "closed" ? FillRule::closed : FillRule::top_left;
+  o.shading = h.shading;
+  o.fill_rule = h.fill_rule;
   o.subpixel_bits = h.subpixel_bits;
   // The triangle has a set-up in the trace, so it was not culled: no culling here.
   StateCanvas canvas{*this, h.canvas.width, h.canvas.height};
   canvas.tested = depth_test_ && plane_of(trace, triangle, canvas.plane);
   if (!b->contours.empty()) {
-    o.winding_rule = h.winding_rule && *h.winding_rule == "non-zero" ? WindingRule::non_zero
-                                                                     : WindingRule::even_odd;
+    o.winding_rule = h.winding_rule.value_or(WindingRule::even_odd);
     std::vector<std::vector<Vec2>> contours;
     for (const std::vector<int>& c : b->contours) {
       std::vector<Vec2>& out = contours.emplace_back();
@@ -202,7 +201,7 @@ void CanvasState::refill(const trace::Trace& trace, int triangle) {
     return;
   }
   if (h.winding_rule) {
-    o.winding_rule = *h.winding_rule == "non-zero" ? WindingRule::non_zero : WindingRule::even_odd;
+    o.winding_rule = *h.winding_rule;
     const std::vector<std::vector<Vec2>> contours{b->vertices};
     WindingScratch scratch;
     fill_polygon_contours(canvas, std::span<const std::vector<Vec2>>(contours),
@@ -214,7 +213,7 @@ void CanvasState::refill(const trace::Trace& trace, int triangle) {
 }
 
 void CanvasState::paint_triangle(const trace::Trace& trace, int triangle) {
-  if (trace.header().level == "triangle")
+  if (trace.header().level == TraceLevel::triangle)
     refill(trace, triangle);
   else
     paint_rows(trace, triangle, INT64_MIN, INT64_MAX);

@@ -20,10 +20,8 @@ Rect column(const FrameView& frame, const Typography& type) {
 
 std::string shading_text(const trace::Header& h) {
   return fmt::format("{} shading, {} fill rule, {} x {} canvas, {}",
-                     h.shading == "flat"      ? "Flat"
-                     : h.shading == "gouraud" ? "Gouraud"
-                                              : h.shading,
-                     h.fill_rule, h.canvas.width, h.canvas.height, visibility_rule(h));
+                     h.shading == Shading::flat ? "Flat" : "Gouraud", to_string(h.fill_rule),
+                     h.canvas.width, h.canvas.height, visibility_rule(h));
 }
 
 std::string triangle_text(const trace::Trace& t, int triangle) {
@@ -33,7 +31,7 @@ std::string triangle_text(const trace::Trace& t, int triangle) {
     return fmt::format("Polygon {}: {} vertices, {} {}, {}", triangle, b ? b->vertices.size() : 0,
                        b ? std::max<std::size_t>(1, b->contours.size()) : 1,
                        b && b->contours.size() > 1 ? "contours" : "contour",
-                       *t.header().winding_rule);
+                       to_string(*t.header().winding_rule));
   std::string s = fmt::format("Triangle {}", triangle);
   if (!b) return s;
   s += ":";
@@ -63,7 +61,7 @@ void trace_warnings(PanelWriter& w, const trace::Trace& t) {
 }  // namespace
 
 bool uses_zbuffer(const trace::Header& header) {
-  return header.visibility == "zbuffer";
+  return header.visibility == Visibility::zbuffer;
 }
 
 std::string visibility_rule(const trace::Header& header) {
@@ -185,7 +183,9 @@ void draw_title_card(FrameView& frame, const Typography& type, const trace::Trac
                 TextStyle::body, palette::kMutedText);
   w.gap(12);
   trace_warnings(w, trace);
-  footer(frame, type, fmt::format("trace: {}   ({}, level {})", info.source, h.generator, h.level));
+  footer(frame, type,
+         fmt::format("trace: {}   ({}, level {})", info.source, h.generator,
+                     trace::to_string(h.level)));
 }
 
 void draw_end_card(FrameView& frame, const Typography& type, const trace::Trace& trace,

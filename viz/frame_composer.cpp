@@ -115,12 +115,13 @@ void FrameComposer::title_bar(FrameView& frame, const Step& step, std::size_t in
       plan_.mode == ReplayMode::scene
           ? fmt::format("{}, {} triangles   |   {} shading, {} rule",
                         uses_zbuffer(h) ? "z-buffer" : "painter's algorithm",
-                        integer(static_cast<std::int64_t>(plan_.order.size())), h.shading,
-                        h.fill_rule)
-      : h.winding_rule ? fmt::format("polygon {}   |   {} shading, {} rule, {} winding",
-                                     step.triangle, h.shading, h.fill_rule, *h.winding_rule)
-                       : fmt::format("triangle {}   |   {} shading, {} rule", step.triangle,
-                                     h.shading, h.fill_rule);
+                        integer(static_cast<std::int64_t>(plan_.order.size())),
+                        to_string(h.shading), to_string(h.fill_rule))
+      : h.winding_rule
+          ? fmt::format("polygon {}   |   {} shading, {} rule, {} winding", step.triangle,
+                        to_string(h.shading), to_string(h.fill_rule), to_string(*h.winding_rule))
+          : fmt::format("triangle {}   |   {} shading, {} rule", step.triangle,
+                        to_string(h.shading), to_string(h.fill_rule));
   type_.draw(frame, context, {x + type_.px(18), top + type_.px(2)}, TextStyle::body,
              palette::kTitleText);
   const std::string right = counter(step, index, plan_.steps.size());

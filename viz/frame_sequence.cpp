@@ -68,7 +68,8 @@ void FrameSequence::apply(const Step& step) {
     case StepKind::triangle_done:
       // A triangle-level trace has no scanline steps: the finished triangle is its first
       // picture (filled again from the trace, CanvasState).
-      if (trace_.header().level == "triangle") state_.paint_triangle(trace_, step.triangle);
+      if (trace_.header().level == TraceLevel::triangle)
+        state_.paint_triangle(trace_, step.triangle);
       break;
     case StepKind::scanlines:
       state_.paint_rows(trace_, step.triangle, step.first_row, step.last_row);

@@ -223,7 +223,7 @@ void draw_scene_panel(FrameView& frame, const Rect& area, const Typography& type
   scene_panel_method(w, type, scene, step, zbuffer);
   w.gap(8);
   if (step.kind == StepKind::painter_batch) scene_panel_batch(w, trace, plan, scene, step);
-  if (trace.header().level == "triangle")
+  if (trace.header().level == TraceLevel::triangle)
     w.paragraph(
         "This trace holds no scanlines (level triangle): the pixels shown are filled again "
         "from each triangle's recorded vertices and colours by the same fill.",

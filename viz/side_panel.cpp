@@ -22,7 +22,7 @@ using trace::Scanline;
 using trace::TriangleBegin;
 
 bool top_left_rule(const trace::Trace& t) {
-  return t.header().fill_rule != "closed";
+  return t.header().fill_rule != FillRule::closed;
 }
 
 std::string rows_text(const EdgeEntry& e) {
@@ -100,9 +100,9 @@ void setup_panel(PanelWriter& w, const trace::Trace& t, const TriangleBegin& b) 
         "Winding rule {}: on each row every active edge counts +1 (going down) or -1 (going "
         "up); a pixel centre is inside when the edges at or left of it {}. Contours after the "
         "first are holes or more pieces, as the rule decides.",
-        *t.header().winding_rule,
-        *t.header().winding_rule == "non-zero" ? "sum to a non-zero winding number"
-                                               : "are odd in number"));
+        to_string(*t.header().winding_rule),
+        *t.header().winding_rule == WindingRule::non_zero ? "sum to a non-zero winding number"
+                                                          : "are odd in number"));
   else if (top_left_rule(t))
     w.paragraph(
         "Fill rule top-left: a pixel is filled when its centre lies inside the triangle, or on "
@@ -197,8 +197,8 @@ std::string narrative(const trace::Trace& t, const Step& step, const Scanline& r
 void polygon_scanline_panel(PanelWriter& w, const trace::Trace& t, const Step& step,
                             const TriangleBegin* b, const EdgeTableEvent* table,
                             const Scanline& row) {
-  const std::string rule = t.header().winding_rule.value_or("even-odd");
-  const bool even_odd = rule != "non-zero";
+  const std::string rule = to_string(t.header().winding_rule.value_or(WindingRule::even_odd));
+  const bool even_odd = t.header().winding_rule != WindingRule::non_zero;
   w.heading(step.first_row == step.last_row
                 ? fmt::format("3  Scanline y = {}", row.y)
                 : fmt::format("3  Scanlines y = {} .. {}", step.first_row, step.last_row));

@@ -77,7 +77,7 @@ std::vector<std::string> pixel_history_lines(const trace::Trace& trace, const St
     lines.push_back(
         fmt::format("written {} time{} so far:", writes.size() / 2, writes.size() == 2 ? "" : "s"));
     lines.insert(lines.end(), writes.begin(), writes.end());
-  } else if (h.empty() && trace.header().level == "triangle") {
+  } else if (h.empty() && trace.header().level == TraceLevel::triangle) {
     lines.push_back("no history: a triangle-level trace has no");
     lines.push_back("scanlines (trace with --level scanline)");
   } else {

@@ -15,6 +15,7 @@
 #include "io/obj_loader.hpp"
 #include "io/scene_json.hpp"
 #include "src/image.hpp"
+#include "src/option_table.hpp"
 #include "src/painter.hpp"
 #include "src/shade_mesh.hpp"
 #include "web/call_status.hpp"
@@ -132,37 +133,36 @@ std::string text_option(const nlohmann::json& o, const char* key, const char* fa
   throw std::invalid_argument(std::string("options.") + key + ": unknown value \"" + value + "\"");
 }
 
+// options[key]: a name of E's table (src/option_table.hpp), or `fallback` when absent.
+template <class E>
+E named_option(const nlohmann::json& o, const char* key, E fallback) {
+  const std::string name = text_option(o, key, option_name(fallback));
+  const std::optional<E> e = parse_option<E>(name);
+  if (!e) unknown(key, name);
+  return *e;
+}
+
+int subpixel_bits_option(const nlohmann::json& o) {
+  if (!o.contains("subpixel_bits")) return FillOptions{}.subpixel_bits;
+  if (!o["subpixel_bits"].is_number_integer() || o["subpixel_bits"].get<int>() < 0 ||
+      o["subpixel_bits"].get<int>() > kMaxSubpixelBits)
+    throw std::invalid_argument("options.subpixel_bits: an integer 0 to " +
+                                std::to_string(kMaxSubpixelBits));
+  return o["subpixel_bits"].get<int>();
+}
+
 }  // namespace
 
 FillOptions fill_options(const nlohmann::json& o, bool model) {
   FillOptions f;
-  const std::string shading = text_option(o, "shading", "gouraud");
-  if (shading != "flat" && shading != "gouraud") unknown("shading", shading);
-  f.shading = shading == "flat" ? Shading::flat : Shading::gouraud;
-  const std::string rule = text_option(o, "fill_rule", "top-left");
-  if (rule != "top-left" && rule != "closed") unknown("fill_rule", rule);
-  f.fill_rule = rule == "closed" ? FillRule::closed : FillRule::top_left;
-  if (o.contains("subpixel_bits")) {
-    if (!o["subpixel_bits"].is_number_integer() || o["subpixel_bits"].get<int>() < 0 ||
-        o["subpixel_bits"].get<int>() > kMaxSubpixelBits)
-      throw std::invalid_argument("options.subpixel_bits: an integer 0 to " +
-                                  std::to_string(kMaxSubpixelBits));
-    f.subpixel_bits = o["subpixel_bits"].get<int>();
-  }
-  const std::string method = text_option(o, "method", "exact");
-  if (!parse_method(method.c_str(), f.method)) unknown("method", method);
-  const std::string winding = text_option(o, "winding", "even-odd");
-  if (!parse_winding_rule(winding.c_str(), f.winding_rule)) unknown("winding", winding);
+  f.shading = named_option(o, "shading", f.shading);
+  f.fill_rule = named_option(o, "fill_rule", f.fill_rule);
+  f.subpixel_bits = subpixel_bits_option(o);
+  f.method = named_option(o, "method", f.method);
+  f.winding_rule = named_option(o, "winding", f.winding_rule);
   // A model is culled back faces by default and a scene not, as `render` does (cli/model_flags).
-  const std::string cull = text_option(o, "cull", model ? "back" : "none");
-  if (cull == "none") f.cull = Cull::none;
-  else if (cull == "back") f.cull = Cull::back;
-  else if (cull == "front") f.cull = Cull::front;
-  else unknown("cull", cull);
-  const std::string depth = text_option(o, "depth", "painter");
-  if (depth == "painter") f.visibility = Visibility::painter;
-  else if (depth == "zbuffer") f.visibility = Visibility::zbuffer;
-  else unknown("depth", depth);
+  f.cull = named_option(o, "cull", model ? Cull::back : f.cull);
+  f.visibility = named_option(o, "depth", f.visibility);
   return f;
 }
 

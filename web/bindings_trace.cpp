@@ -57,7 +57,7 @@ std::vector<Color> colours(const nlohmann::json& in, std::size_t n) {
 
 trace::TraceFilter filter_of(const nlohmann::json& o) {
   trace::TraceFilter f;
-  f.level = trace::parse_level(o.value("level", std::string("scanline")));
+  if (o.contains("level")) f.level = trace::parse_level(o["level"].get<std::string>());
   if (o.contains("triangles")) f.triangles = trace::IndexSet::of(o["triangles"].get<std::vector<int>>());
   if (o.contains("max_events")) f.max_events = o["max_events"].get<std::int64_t>();
   return f;
@@ -72,8 +72,8 @@ trace::TriangleInput triangle_input(const nlohmann::json& in) {
     t.vertices[i] = point(in["triangle"][i], "input.triangle");
     t.colors[i] = c[i];
   }
-  t.width = in.value("width", 512);
-  t.height = in.value("height", 512);
+  t.width = in.value("width", kDefaultCanvasSize);
+  t.height = in.value("height", kDefaultCanvasSize);
   return t;
 }
 
@@ -86,8 +86,8 @@ trace::GeneralPolygonInput polygon_input(const nlohmann::json& in) {
     n += p.contours.back().size();
   }
   p.colors = colours(in, n);
-  p.width = in.value("width", 512);
-  p.height = in.value("height", 512);
+  p.width = in.value("width", kDefaultCanvasSize);
+  p.height = in.value("height", kDefaultCanvasSize);
   return p;
 }
 

@@ -29,6 +29,16 @@ add_custom_target(scantrace_web ALL
   USES_TERMINAL)
 
 if(SCANTRACE_BUILD_TESTS)
+  # The web build's configuration alone, in a folder of its own: it fails when a library folder's
+  # .cpp is in none of that folder's targets there and needs no capability that is off there
+  # (scantrace_check_library_sources, cmake/scantrace_capabilities.cmake).
+  add_test(NAME "web: every library source is built for the web or refused by a named option"
+           COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} -S ${PROJECT_SOURCE_DIR}
+                   -B ${CMAKE_BINARY_DIR}/web-tests/configure
+                   -DCMAKE_TOOLCHAIN_FILE=${SCANTRACE_EMSCRIPTEN_TOOLCHAIN}
+                   -DCMAKE_BUILD_TYPE=Release -G "Unix Makefiles" --log-level=WARNING)
+  set_tests_properties("web: every library source is built for the web or refused by a named option"
+                       PROPERTIES LABELS "web" TIMEOUT 300)
   # A Node test of the module against the native command (its binary, a work folder and the demo
   # scene as arguments).
   function(add_node_command_test name script timeout)
@@ -45,6 +55,10 @@ if(SCANTRACE_BUILD_TESTS)
   # image against the scene's canvas (web/tests/node_arguments.mjs).
   add_node_command_test("web: node API checks its arguments as the command does" node_arguments
                         300 arguments)
+  # The API's option names: scantrace.d.ts's are the command's, and the module takes exactly them
+  # (web/tests/node_options.mjs).
+  add_node_command_test("web: node API takes exactly the option tables' names" node_options 120
+                        options)
   # The trace page's module against the full one: its exports, its steps and frames
   # (web/tests/node_player.mjs).
   add_test(NAME "web: node player module composes the full module's frames"

@@ -3,7 +3,8 @@
 /** JSON text of a scene file, a parsed scene object, or a named file (".obj": a model). */
 export type SceneInput = string | object | { name: string; data: string | Uint8Array };
 
-/** The CLI's fill flags, same names and values (missing: the CLI's defaults). */
+/** The CLI's fill flags, same names and values (missing: the CLI's defaults). The names are the
+ * option tables' (src/option_table.hpp); web/tests/node_options.mjs holds these lists to them. */
 export interface FillOptions {
   shading?: 'flat' | 'gouraud';
   fill_rule?: 'top-left' | 'closed';

@@ -7,6 +7,11 @@
 #include <cstring>
 #include <sstream>
 
+#include <pybind11/stl.h>
+
+#include "src/option_table.hpp"
+#include "src/tracer.hpp"
+
 namespace scantrace::python {
 
 void throw_value_error(const std::string& message) {
@@ -238,20 +243,66 @@ std::optional<py::int_> integer_value(py::handle value) {
   return std::nullopt;
 }
 
-Shading shading_argument(const std::string& given) {
-  std::string s = given;
+namespace {
+
+std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (s == "f" || s == "flat") return Shading::flat;
-  if (s == "g" || s == "gouraud") return Shading::gouraud;
-  const std::string& s_given = given;
-  throw_value_error("shading: expected 'f', 'g', 'flat' or 'gouraud' (in any case), got '" +
-                    s_given + "'");
+  return s;
+}
+
+// The course's spelling: a name of the table or its first letter, in any case.
+template <class E>
+std::optional<E> course_name(const std::string& given) {
+  const std::string s = lower(given);
+  for (const OptionName<E>& n : option_table<E>().names_)
+    if (s == n.name || (s.size() == 1 && s[0] == n.name[0])) return n.value;
+  return std::nullopt;
+}
+
+template <class E>
+py::dict option_dict(py::dict d, const char* part) {
+  const OptionTable<E>& t = option_table<E>();
+  if (std::strcmp(part, "default") == 0)
+    d[t.key] = t.default_name();
+  else
+    d[t.key] = t.names();
+  return d;
+}
+
+// Every option's names (or defaults) by key, from the tables of src/option_table.hpp.
+py::dict option_entries(const char* part) {
+  py::dict d;
+  for (auto add : {option_dict<Shading>, option_dict<FillRule>, option_dict<Method>,
+                   option_dict<WindingRule>, option_dict<Cull>, option_dict<Visibility>,
+                   option_dict<Occlusion>, option_dict<TraceLevel>})
+    add(d, part);
+  return d;
+}
+
+}  // namespace
+
+Shading shading_argument(const std::string& given) {
+  if (const std::optional<Shading> s = course_name<Shading>(given)) return *s;
+  std::string letters;
+  for (const OptionName<Shading>& n : option_table<Shading>().names_)
+    letters += {'\'', n.name[0], '\'', ',', ' '};
+  throw_value_error("shading: expected " + letters + option_table<Shading>().listed(" or ", "'") +
+                    " (in any case), got '" + given + "'");
 }
 
 FillRule fill_rule_argument(const std::string& s) {
-  if (s == "top-left") return FillRule::top_left;
-  if (s == "closed") return FillRule::closed;
-  throw_value_error("fill_rule: expected 'top-left' or 'closed', got '" + s + "'");
+  if (const std::optional<FillRule> r = parse_option<FillRule>(s)) return *r;
+  throw_value_error("fill_rule: expected " + option_table<FillRule>().listed(" or ", "'") +
+                    ", got '" + s + "'");
+}
+
+void bind_options(py::module_& m) {
+  m.def(
+      "option_names", [] { return option_entries("names"); },
+      "Each option's names by key (shading, fill_rule, method, ...), as the C++ tables list them.");
+  m.def(
+      "option_defaults", [] { return option_entries("default"); },
+      "Each option's default name by key.");
 }
 
 FillOptions fill_options(const std::string& shading, const std::string& fill_rule) {

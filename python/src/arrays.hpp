@@ -50,9 +50,11 @@ Color color_argument(py::handle value, const char* name);
 // (width, height), both positive.
 std::pair<int, int> size_argument(py::handle value, const char* name = "size");
 
-// 'f', 'g', 'flat', 'gouraud', in any case ('F', 'Flat', 'GOURAUD').
+// A shading's name or its first letter, in any case ('F', 'Flat', 'g'); src/option_table.hpp.
 Shading shading_argument(const std::string& value);
-FillRule fill_rule_argument(const std::string& value);  // 'top-left', 'closed'
+FillRule fill_rule_argument(const std::string& value);  // a fill rule's name
+// _scantrace.option_names() and option_defaults(): the tables of src/option_table.hpp.
+void bind_options(py::module_& m);
 FillOptions fill_options(const std::string& shading, const std::string& fill_rule);
 
 // A scene from the course's arrays, validated like a scene file (scene.hpp's validate()).

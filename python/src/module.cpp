@@ -8,6 +8,7 @@
 #include "io/input_error.hpp"
 
 namespace scantrace::python {
+void bind_options(pybind11::module_& m);
 void bind_course(pybind11::module_& m);
 void bind_trace(pybind11::module_& m);
 void bind_grade(pybind11::module_& m);
@@ -32,6 +33,7 @@ PYBIND11_MODULE(_scantrace, m) {
       Py_XDECREF(message);
     }
   });
+  scantrace::python::bind_options(m);
   scantrace::python::bind_course(m);
   scantrace::python::bind_trace(m);
   scantrace::python::bind_grade(m);

@@ -16,6 +16,7 @@
 #include "arrays.hpp"
 #include "casters.hpp"
 #include "py_trace.hpp"
+#include "src/option_table.hpp"
 #include "trace/record.hpp"
 
 namespace scantrace::python {
@@ -48,11 +49,9 @@ std::string rep(const T& value) {
 }
 
 TraceLevel level_argument(const std::string& s) {
-  try {
-    return parse_level(s);
-  } catch (const std::invalid_argument&) {
-    throw_value_error("level: expected 'triangle', 'scanline' or 'pixel', got '" + s + "'");
-  }
+  if (const std::optional<TraceLevel> level = parse_option<TraceLevel>(s)) return *level;
+  throw_value_error("level: expected " + option_table<TraceLevel>().listed(" or ", "'") +
+                    ", got '" + s + "'");
 }
 
 // A count from Python: an int (not a bool, not a float) in 0 .. 2^63 - 1.
@@ -150,8 +149,9 @@ std::string trace_repr(const PyTrace& t) {
   if (tri.size() > 8) faces += ", ...";
   return "<Trace: " + std::to_string(tri.size()) + " triangle" + (tri.size() == 1 ? "" : "s") +
          " [" + faces + "], " + std::to_string(t.trace.events().size()) + " events, level " +
-         rep(h.level) + ", " + std::to_string(h.canvas.width) + "x" +
-         std::to_string(h.canvas.height) + " " + h.shading + " " + h.fill_rule +
+         rep(option_name(h.level)) + ", " + std::to_string(h.canvas.width) + "x" +
+         std::to_string(h.canvas.height) + " " + option_name(h.shading) + " " +
+         option_name(h.fill_rule) +
          (t.trace.complete() ? std::string(t.trace.truncated() ? ", truncated" : "")
                              : ", incomplete (no footer)") +
          (t.image ? ", with its image" : "") + ">";
@@ -167,17 +167,19 @@ void bind_header_and_triangle(py::module_& m) {
       .def_readonly("version", &Header::version)
       .def_property_readonly(
           "canvas", [](const Header& h) { return py::make_tuple(h.canvas.width, h.canvas.height); })
-      .def_readonly("shading", &Header::shading)
-      .def_readonly("fill_rule", &Header::fill_rule)
+      .def_property_readonly("shading", [](const Header& h) { return option_name(h.shading); })
+      .def_property_readonly("fill_rule", [](const Header& h) { return option_name(h.fill_rule); })
       .def_readonly("subpixel_bits", &Header::subpixel_bits)
-      .def_readonly("level", &Header::level)
+      .def_property_readonly("level", [](const Header& h) { return option_name(h.level); })
       .def_readonly("generator", &Header::generator)
-      .def_readonly("visibility", &Header::visibility)
+      .def_property_readonly("visibility",
+                             [](const Header& h) { return option_name(h.visibility); })
       .def("__repr__", [](const Header& h) {
         return "Header(canvas=(" + std::to_string(h.canvas.width) + ", " +
-               std::to_string(h.canvas.height) + "), shading=" + rep(h.shading) +
-               ", fill_rule=" + rep(h.fill_rule) + ", level=" + rep(h.level) +
-               ", visibility=" + rep(h.visibility) +
+               std::to_string(h.canvas.height) + "), shading=" + rep(option_name(h.shading)) +
+               ", fill_rule=" + rep(option_name(h.fill_rule)) +
+               ", level=" + rep(option_name(h.level)) +
+               ", visibility=" + rep(option_name(h.visibility)) +
                ", subpixel_bits=" + std::to_string(h.subpixel_bits) +
                ", generator=" + rep(h.generator) + ")";
       });
@@ -366,7 +368,7 @@ Scanline scanline_or_why_not(const PyTrace& t, int i, std::int64_t y) {
   const std::string rows = "triangle " + std::to_string(i) + "'s rows are " +
                            std::to_string(first) + ".." + std::to_string(last) +
                            " (ceil(y_min) .. ceil(y_max) − 1";
-  if (t.trace.header().level == "triangle")
+  if (t.trace.header().level == TraceLevel::triangle)
     throw py::index_error(row + " is not in the trace: it was recorded at level 'triangle', "
                           "without rows (trace at level='scanline'); " + rows + ")");
   if (y >= first && y <= last)

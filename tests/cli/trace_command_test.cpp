@@ -33,8 +33,8 @@ TEST_CASE("trace --triangle writes the recorded narration of that triangle", "[c
   for (std::size_t i = 0; i < written.events().size(); ++i)
     CHECK(trace::event_to_json(written.events()[i]).dump() ==
           trace::event_to_json(recorded.events()[i]).dump());
-  CHECK(written.header().shading == "flat");
-  CHECK(written.header().level == "pixel");
+  CHECK(written.header().shading == Shading::flat);
+  CHECK(written.header().level == TraceLevel::pixel);
 }
 
 TEST_CASE("trace of a scene file honours the filters and reports a cap", "[command][trace]") {
@@ -92,7 +92,7 @@ TEST_CASE("trace --polygon writes the narration of a polygon with a hole under a
   INFO("stderr: " << r.err);
   REQUIRE(r.exit_code == 0);
   const trace::Trace t = trace::Trace::load(dir / "p.jsonl");
-  CHECK(t.header().winding_rule == std::optional<std::string>("non-zero"));
+  CHECK(t.header().winding_rule == WindingRule::non_zero);
   // The hole runs the same way round as the square: winding 2 inside it, filled under non-zero.
   CHECK(t.triangle_end(0)->pixels == 18 * 18);
   const trace::Scanline& row = t.scanline(0, 10);
@@ -108,7 +108,7 @@ TEST_CASE("trace --polygon writes the narration of a polygon with a hole under a
                                  "--size", "24x24", "-o", "e.jsonl"});
   REQUIRE(eo.exit_code == 0);
   const trace::Trace e = trace::Trace::load(dir / "e.jsonl");
-  CHECK(e.header().winding_rule == std::optional<std::string>("even-odd"));
+  CHECK(e.header().winding_rule == WindingRule::even_odd);
   CHECK(e.triangle_end(0)->pixels == 18 * 18 - 6 * 6);
   CHECK(e.scanline(0, 10).intervals->size() == 2);
 }

@@ -98,7 +98,7 @@ TEST_CASE("levels add events: triangle < scanline < pixel", "[trace][filter]") {
   i64 pixels = 0;
   for (int t : pix.triangles()) pixels += pix.triangle_end(t)->pixels;
   CHECK(count_type(pix, "pixel") == static_cast<std::size_t>(pixels));
-  CHECK(pix.header().level == "pixel");
+  CHECK(pix.header().level == TraceLevel::pixel);
 }
 
 TEST_CASE("the event cap truncates the trace and says so", "[trace][filter]") {

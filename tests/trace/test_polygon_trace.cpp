@@ -123,7 +123,7 @@ TEST_CASE("a polygon with a hole: the trace shows all active edges, windings and
     REQUIRE(parse_winding_rule(rule, options.winding_rule));
     RgbImage image;
     const Trace t = record_polygon(square_with_hole(), options, {}, &image);
-    CHECK(t.header().winding_rule == std::optional<std::string>(rule));
+    CHECK(t.header().winding_rule == options.winding_rule);
     const TriangleBegin& b = t.triangle_begin(0);
     CHECK(b.vertices.size() == 8);
     CHECK(b.contours == std::vector<std::vector<int>>{{0, 1, 2, 3}, {4, 5, 6, 7}});
@@ -153,7 +153,7 @@ TEST_CASE("a polygon trace survives the file: intervals and windings are read ba
   write_polygon_trace(path, square_with_hole(), options);
   const Trace t = Trace::load(path);
   std::filesystem::remove(path);
-  CHECK(t.header().winding_rule == std::optional<std::string>("non-zero"));
+  CHECK(t.header().winding_rule == WindingRule::non_zero);
   check_row_10(t);
 }
 

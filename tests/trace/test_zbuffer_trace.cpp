@@ -91,8 +91,8 @@ TEST_CASE("culled faces are traced as triangle_skipped with reason culled", "[tr
     }
   CHECK(culled == 1);
   // The header says how the render was made; the course's defaults are left out.
-  CHECK(t.header().cull == "back");
-  CHECK(t.header().visibility == "painter");
+  CHECK(t.header().cull == Cull::back);
+  CHECK(t.header().visibility == Visibility::painter);
   const std::string line = event_to_json(Event{t.header()}).dump();
   CHECK(line.find("\"cull\":\"back\"") != std::string::npos);
   CHECK(line.find("visibility") == std::string::npos);

@@ -289,7 +289,9 @@ def test_in_chromium_the_player_steps_and_draws_the_canvas_backends_frames(trace
         assert v["big"] <= 10 and v["mean"] < 0.05, v
         if "v0" in v:  # vertex 0's marker is filled with its colour: red (vcolors = I)
             assert v["v0"] == [255, 0, 0], v
-    assert out["ops"] > 2000 and out["strokes"] <= 0.0051 and out["lines"] <= 0.0051
+    # The nine visits hold about 1,770 ops (a span that fits in one zoom inset gets one inset):
+    # a comparison that reached only a few of them would prove nothing.
+    assert out["ops"] > 1500 and out["strokes"] <= 0.0051 and out["lines"] <= 0.0051
 
 
 def test_the_replay_methods_are_the_trace_types_own():

@@ -10,7 +10,7 @@ import os
 import numpy as np
 
 from . import _scantrace
-from ._common import cv_module, load_scene_file
+from ._common import FILL_RULE, SHADING, cv_module, load_scene_file
 from ._scantrace import InputError, Trace
 
 _WHITE = (1.0, 1.0, 1.0)
@@ -76,11 +76,11 @@ def render_img(faces, vertices, vcolors, depth, shading):
     """
     return _scantrace.render(
         vertices, faces, vcolors, depth,
-        shading=_course_shading(shading), fill_rule="top-left", size=_COURSE_SIZE,
+        shading=_course_shading(shading), fill_rule=FILL_RULE, size=_COURSE_SIZE,
         background=_WHITE, dtype=np.float64)
 
 
-def render(vertices, faces, vcolors, depth, *, shading="gouraud", fill_rule="top-left",
+def render(vertices, faces, vcolors, depth, *, shading=SHADING, fill_rule=FILL_RULE,
            size=_COURSE_SIZE, background=_WHITE, dtype=np.float64):
     """Renders a scene in painter's order and returns the image.
 
@@ -98,7 +98,7 @@ def render(vertices, faces, vcolors, depth, *, shading="gouraud", fill_rule="top
                              fill_rule=fill_rule, size=size, background=background, dtype=dtype)
 
 
-def load_scene(path, *, shading="gouraud"):
+def load_scene(path, *, shading=SHADING):
     """Reads a scene into a dict of numpy arrays: a scene file (the course's JSON keys), the
     course's own ``hw1.npy`` (a pickled dict of four arrays, read by a restricted reader that
     constructs nothing but those arrays: never Python's unpickler), a MATLAB ``.mat`` scene of
@@ -132,7 +132,7 @@ def write_png(img, path):
     _scantrace.write_png(img, os.fspath(path))
 
 
-def trace_triangle(vertices, vcolors, *, shading="gouraud", fill_rule="top-left",
+def trace_triangle(vertices, vcolors, *, shading=SHADING, fill_rule=FILL_RULE,
                    level="scanline", size=_COURSE_SIZE, background=_WHITE, face=0):
     """Fills one triangle with the real fill and returns its :class:`Trace`, recorded in memory.
 
@@ -155,7 +155,7 @@ def trace_triangle(vertices, vcolors, *, shading="gouraud", fill_rule="top-left"
                                      level=level, size=size, background=background, face=face)
 
 
-def trace_scene(vertices, faces, vcolors, depth, *, shading="gouraud", fill_rule="top-left",
+def trace_scene(vertices, faces, vcolors, depth, *, shading=SHADING, fill_rule=FILL_RULE,
                 level="scanline", triangles=None, rows=None, max_events=None,
                 size=_COURSE_SIZE, background=_WHITE):
     """Renders a scene in painter's order with the real fill and returns its :class:`Trace`.
@@ -170,8 +170,8 @@ def trace_scene(vertices, faces, vcolors, depth, *, shading="gouraud", fill_rule
                                   background=background)
 
 
-def explain(trace_or_vertices, vcolors=None, *, out="triangle.mp4", shading="gouraud",
-            fill_rule="top-left", frame_size=(1280, 720), fps=5.0, hold=0.8):
+def explain(trace_or_vertices, vcolors=None, *, out="triangle.mp4", shading=SHADING,
+            fill_rule=FILL_RULE, frame_size=(1280, 720), fps=5.0, hold=0.8):
     """Writes the explanatory video of a fill (``scantrace explain``): H.264 MP4, or a directory
     of PNG frames when ``out`` ends with ``/`` or has no extension.
 

@@ -6,6 +6,11 @@ import os
 
 from . import _scantrace
 
+# The fill options' defaults, from the C++ option tables (src/option_table.hpp): the names the
+# command line, the trace header and the JavaScript API also read there, spelled in one place.
+DEFAULT = _scantrace.option_defaults()
+SHADING, FILL_RULE = DEFAULT["shading"], DEFAULT["fill_rule"]
+
 
 def load_scene_file(path, shading):
     """A scene file as load_scene() returns it (_api.load_scene documents the formats)."""

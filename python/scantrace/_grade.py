@@ -12,7 +12,7 @@ import os
 import numpy as np
 
 from . import _jupyter, _scantrace
-from ._common import cv_module, load_scene_file
+from ._common import FILL_RULE, SHADING, cv_module, load_scene_file
 from ._scantrace import Trace
 
 _COURSE_SIZE = (512, 512)
@@ -184,7 +184,7 @@ class CheckResult:
         return f"<CheckResult: {self}>"
 
 
-def why(scene, x, y, *, shading="gouraud", fill_rule="top-left"):
+def why(scene, x, y, *, shading=SHADING, fill_rule=FILL_RULE):
     """Why pixel (x, y) has its colour: ``scantrace why SCENE X Y`` as a :class:`PixelStory`.
 
     Every face whose bounding box holds the pixel centre, in drawing order, and what the fill did
@@ -217,7 +217,7 @@ def _image_argument(image, canvas):
     return image, "npy", None
 
 
-def diff(scene, image, *, shading="gouraud", fill_rule="top-left", tolerance=1 / 255,
+def diff(scene, image, *, shading=SHADING, fill_rule=FILL_RULE, tolerance=1 / 255,
          undo=True):
     """Compares ``image`` with the reference render of ``scene``: ``scantrace diff`` as a
     :class:`DiffReport`.

@@ -16,6 +16,18 @@ if(SCANTRACE_TOOLS AND scantrace_host_libraries)
 else()
   set(scantrace_tools_libraries OFF)
 endif()
+# The three the tools need follow SCANTRACE_TOOLS: a build directory configured first for the demo
+# (SCANTRACE_TOOLS=OFF, scripts/build.sh --demo) and then for everything keeps its cache, where
+# option() would leave them OFF. When SCANTRACE_TOOLS changes, they take its new default again.
+if(DEFINED CACHE{SCANTRACE_CAPABILITIES_FOR_TOOLS}
+   AND NOT SCANTRACE_CAPABILITIES_FOR_TOOLS STREQUAL scantrace_tools_libraries)
+  foreach(o SCANTRACE_WITH_OPENCV SCANTRACE_WITH_MATIO SCANTRACE_WITH_IMAGE_CODECS)
+    get_property(help CACHE ${o} PROPERTY HELPSTRING)
+    set(${o} ${scantrace_tools_libraries} CACHE BOOL "${help}" FORCE)
+  endforeach()
+endif()
+set(SCANTRACE_CAPABILITIES_FOR_TOOLS ${scantrace_tools_libraries} CACHE INTERNAL
+    "the SCANTRACE_TOOLS default the tools' capability options were given")
 option(SCANTRACE_WITH_OPENCV
        "OpenCV: raster frames, videos, windows, JPEG and BMP images (scantrace_viz, scantrace_grade)"
        ${scantrace_tools_libraries})

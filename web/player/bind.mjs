@@ -7,7 +7,8 @@ import { controlsKey, helpTable } from './keys.mjs';
 
 // o: {scope, keys (playerKeys), first (the number of step index 0, from 1), slider?, counter?
 // (element) and counterText?(s), list? (element of one child per step), playButton?, speed?
-// (<select>), help? (overlay element: the key table goes into its .keys element), hash? (the address follows), say?(text), actions?
+// (<select>), help? (overlay element: the key table goes into its .keys element), hash? (the address follows), say?(text),
+// announce? (a live region: each step's sentence, the counter's text, said by a screen reader), actions?
 // ({name: () => ...}: the page's own, e.g. save, toggle_rows)}.
 export function bindPlayer(s, o) {
   const first = o.first ?? 1, say = o.say || (() => {});
@@ -82,12 +83,22 @@ function update(s, o, first, doc) {
     o.slider.max = String(first + s.count - 1);
     o.slider.value = String(n);
   }
-  if (o.counter) o.counter.textContent = o.counterText ? o.counterText(s) : `step ${n} / ${first + s.count - 1}`;
+  const sentence = o.counterText ? o.counterText(s) : `step ${n} / ${first + s.count - 1}`;
+  if (o.counter) o.counter.textContent = sentence;
+  // Said once a step (play and speed changes leave it).
+  if (o.announce && o.announce.dataset.step !== String(n)) {
+    o.announce.dataset.step = String(n);
+    o.announce.textContent = sentence;
+  }
   if (o.list) {
-    for (const el of o.list.querySelectorAll('.current')) el.classList.remove('current');
+    for (const el of o.list.querySelectorAll('.current')) {
+      el.classList.remove('current');
+      el.removeAttribute('aria-current');
+    }
     const li = o.list.children[s.index];
     if (li) {
       li.classList.add('current');
+      li.setAttribute('aria-current', 'step');
       li.scrollIntoView({ block: 'nearest' });
     }
   }

@@ -8,7 +8,8 @@ import { controlsKey, helpTable } from './keys.mjs';
 // o: {scope, keys (playerKeys), first (the number of step index 0, from 1), slider?, counter?
 // (element) and counterText?(s), list? (element of one child per step), playButton?, speed?
 // (<select>), help? (overlay element: the key table goes into its .keys element), hash? (the address follows), say?(text),
-// announce? (a live region: each step's sentence, the counter's text, said by a screen reader), actions?
+// announce? (a live region: each step's sentence, sentence?(s) or the counter's text, said by a
+// screen reader), actions?
 // ({name: () => ...}: the page's own, e.g. save, toggle_rows)}.
 export function bindPlayer(s, o) {
   const first = o.first ?? 1, say = o.say || (() => {});
@@ -88,7 +89,7 @@ function update(s, o, first, doc) {
   // Said once a step (play and speed changes leave it).
   if (o.announce && o.announce.dataset.step !== String(n)) {
     o.announce.dataset.step = String(n);
-    o.announce.textContent = sentence;
+    o.announce.textContent = o.sentence ? o.sentence(s) : sentence;
   }
   if (o.list) {
     for (const el of o.list.querySelectorAll('.current')) {

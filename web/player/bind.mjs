@@ -38,8 +38,12 @@ export function bindPlayer(s, o) {
     e.stopPropagation();
   }, true);
   for (const b of o.scope.querySelectorAll('[data-act]')) {
-    // Its title from the key table, so a button names the keys that do the same.
-    if (o.keys.tip(b.dataset.act)) b.title = o.keys.tip(b.dataset.act);
+    // Its title and name from the key table: a button names what it does and the keys that do
+    // the same (its text is an arrow).
+    if (o.keys.tip(b.dataset.act)) {
+      b.title = o.keys.tip(b.dataset.act);
+      b.setAttribute('aria-label', b.title);
+    }
     b.addEventListener('click', () => { act(b.dataset.act); b.blur(); });
   }
   if (o.slider) {

@@ -71,7 +71,9 @@ export async function startPlayer(pm, cfg, traceText) {
   document.body.dataset.ready = '1';
 }
 
-// A phone's width (player.html's one-column layout): the frame is not shrunk to the screen.
+// A phone's width (player.html's one-column layout, under 700 px): the controls wrap, nothing
+// is wider than the screen but the frame, which is drawn wide enough for its smallest text to
+// read at 10 CSS px, in a box that scrolls sideways; the step list goes under it.
 const narrow = () => window.matchMedia('(max-width: 700px)').matches;
 
 // The scale (CSS pixels a frame pixel) at which frame f's smallest text reads as a 10.5-px font:
@@ -127,7 +129,6 @@ function canvasDrawer(pm, plan, cfg, canvas, stepper) {
           readable = needs;
           drawer.fit();
         }
-        canvas.setAttribute('aria-label', `the frame of ${document.getElementById('announce').textContent || 'the step'}`);
         const dpr = window.devicePixelRatio || 1;
         canvas.width = Math.round(cfg.width * scale * dpr);
         canvas.height = Math.round(cfg.height * scale * dpr);

@@ -15,18 +15,13 @@ import fs from 'node:fs';
 import path from 'node:path';
 
 import { checker, launch, until, watchProblems } from './cdp.mjs';
-import { cutOff as cutOffIn, frameTextSize, kReadable, overflowing as overflowingIn, screenshot as screenshotIn, smallestPageFont } from './layout_checks.mjs';
+import { cutOff as cutOffIn, frameTextSize, kReadable, overflowing as overflowingIn, screenshot as screenshotIn, sizes, smallestPageFont } from './layout_checks.mjs';
 
 const [explorer, work] = process.argv.slice(2);
 const shots = path.join(work, 'screenshots');
 fs.mkdirSync(shots, { recursive: true });
 // A scanline step of the course triangle whose frame has both zoom insets.
 const address = `file://${path.resolve(explorer)}#triangle=20,20;250,80;300,400&step=38`;
-const sizes = [
-  { name: '1366x768', width: 1366, height: 768, mobile: false },
-  { name: '1920x1080', width: 1920, height: 1080, mobile: false },
-  { name: '390x844', width: 390, height: 844, mobile: true },
-];
 const b = await launch();
 const problems = watchProblems(b);
 const checks = checker();

@@ -21,7 +21,7 @@ import { pathToFileURL } from 'node:url';
 import zlib from 'node:zlib';
 
 import { checker, launch, until, watchProblems } from './cdp.mjs';
-import { cutOff, frameTextSize, kReadable, overflowing, screenshot, smallestPageFont, unnamedControls } from './layout_checks.mjs';
+import { cutOff, frameTextSize, kReadable, overflowing, screenshot, sizes, smallestPageFont, unnamedControls } from './layout_checks.mjs';
 
 const [scantraceArg, work, webDir] = process.argv.slice(2);
 const shots = path.join(work, 'screenshots');
@@ -38,11 +38,6 @@ const full = await load();
 
 // A scanline step of the course triangle's 47, its frame with a zoom inset.
 const courseStep = 30;
-const sizes = [
-  { name: '1366x768', width: 1366, height: 768, mobile: false },
-  { name: '1920x1080', width: 1920, height: 1080, mobile: false },
-  { name: '390x844', width: 390, height: 844, mobile: true },
-];
 
 const b = await launch();
 const problems = watchProblems(b);

@@ -8,6 +8,13 @@ import path from 'node:path';
 export const kCapitals = 0.7;
 export const kReadable = 10;
 
+// A laptop on a projector, a desktop, a phone held upright (touch, mobile).
+export const sizes = [
+  { name: '1366x768', width: 1366, height: 768, mobile: false },
+  { name: '1920x1080', width: 1920, height: 1080, mobile: false },
+  { name: '390x844', width: 390, height: 844, mobile: true },
+];
+
 // A screenshot as DIR/NAME.png: the window, or (`whole`) the whole page.
 export async function screenshot(b, dir, name, whole = false) {
   const params = { format: 'png' };

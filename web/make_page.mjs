@@ -25,8 +25,10 @@ const unmodule = (text) =>
 
 // The trace page's own scripts without their whole-line comments and indentation, which are for
 // their readers (a tenth of the course triangle's page, whose goal is 400 KB); none of these
-// files has a string running over lines.
-const uncommented = (text) => text.replace(/^[ \t]*\/\/.*\n/gm, '').replace(/^[ \t]+/gm, '');
+// files has a string running over lines, nor ' // ' inside a string.
+// A comment after code goes too where no quote comes before it; blank lines go.
+const uncommented = (text) => text.replace(/^[ \t]*\/\/.*\n/gm, '').replace(/^[ \t]+/gm, '')
+  .replace(/^([^'"`\n]*?[;,{}()\]])[ \t]+\/\/ .*$/gm, '$1').replace(/\n\n+/g, '\n');
 
 // A module's .wasm as the page holds it: gzip, base64.
 const inlined = (name) => zlib.gzipSync(fs.readFileSync(path.join(dir, name)), { level: 9 }).toString('base64');
@@ -53,7 +55,12 @@ const explorerModules = ['state.js', 'answers.js', 'controls.js', 'view.js', 'co
 // The player core's modules, each after those it imports.
 const playerCore = ['keys.mjs', 'controller.mjs', 'bind.mjs'];
 // The players' key table (player/keys.json) as the script's SCANTRACE_KEYS, without its note.
-const keyTable = `const SCANTRACE_KEYS = ${JSON.stringify(JSON.parse(read(path.join(here, 'player', 'keys.json'))), (k, v) => (k === 'about' ? undefined : v))};`;
+// The trace page's holds only its own actions (a few hundred bytes of its 400 KB goal).
+const keyTableOf = (page) => {
+  const table = JSON.parse(read(path.join(here, 'player', 'keys.json')));
+  if (page) table.actions = table.actions.filter((a) => a.in.includes(page)).map((a) => ({ ...a, in: [page] }));
+  return `const SCANTRACE_KEYS = ${JSON.stringify(table, (k, v) => (k === 'about' ? undefined : v))};`;
+};
 let script;
 if (kind === 'explorer') {
   // The full module (scantrace_wasm) and the JavaScript API.
@@ -63,7 +70,7 @@ if (kind === 'explorer') {
     helpers,
     // The key table and its reader (player/keys.mjs), shared with every player, then the
     // explorer's modules, each after those it imports.
-    keyTable,
+    keyTableOf(null),
     unmodule(read(path.join(here, 'player', 'keys.mjs'))),
     ...explorerModules.map((m) => unmodule(read(path.join(here, 'explorer', m)))),
     `openMark('script');
@@ -77,12 +84,12 @@ gunzipBase64('${inlined('scantrace_wasm.wasm')}')
   // full one's size, gzipped (docs/performance.md).
   script = [
     unmodule(read(path.join(dir, 'scantrace_player.mjs'))),
-    unmodule(read(path.join(here, 'player', 'player_api.mjs'))),
-    helpers,
+    uncommented(unmodule(read(path.join(here, 'player', 'player_api.mjs')))),
+    uncommented(helpers),
     // The canvas drawer and the player core (keys.json, keys.mjs, controller.mjs, bind.mjs) the
     // step page embeds too (cmake/web_player.cmake), then the trace page's own script.
     uncommented(read(path.join(here, 'player', 'frame_draw.js'))),
-    keyTable,
+    keyTableOf('trace'),
     ...[...playerCore, 'player.js'].map((m) => uncommented(unmodule(read(path.join(here, 'player', m))))),
     'const page = /*SCANTRACE_PAGE_DATA*/null;',
     `Promise.all([gunzipBase64('${inlined('scantrace_player.wasm')}'), gunzipBase64(page.trace)])
@@ -94,7 +101,9 @@ gunzipBase64('${inlined('scantrace_wasm.wasm')}')
   process.exit(2);
 }
 // The head both pages share (doctype, charset, viewport), then the page's own template.
-const template = read(path.join(here, 'page_head.html')) + read(path.join(here, kind, `${kind}.html`)).replace(/^<!--.*-->\n/, '');
+// The trace page's template without its indentation (it holds no <pre>).
+const own = read(path.join(here, kind, `${kind}.html`)).replace(/^<!--.*-->\n/, '');
+const template = read(path.join(here, 'page_head.html')) + (kind === 'player' ? own.replace(/^[ \t]+/gm, '') : own);
 const page = template.replace('/*SCANTRACE_SCRIPT*/', () => script.join('\n'));
 // Written whole under another name, then renamed: never half a page.
 fs.writeFileSync(out + '.tmp', page);

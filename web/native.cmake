@@ -112,4 +112,12 @@ if(SCANTRACE_BUILD_TESTS AND SCANTRACE_CHROMIUM)
                    ${CMAKE_BINARY_DIR}/web-tests/trace_page ${web_dir})
   set_tests_properties("web: trace page in headless Chromium" PROPERTIES LABELS "web;browser"
                        TIMEOUT 300)
+  # The trace page at lecture and phone sizes, its screenshots kept in
+  # web-tests/trace-page-sizes/screenshots/ (web/tests/chromium_trace_page_sizes.mjs).
+  add_test(NAME "web: trace page at lecture sizes in headless Chromium"
+           COMMAND ${SCANTRACE_NODE} --experimental-websocket --no-warnings
+                   ${PROJECT_SOURCE_DIR}/web/tests/chromium_trace_page_sizes.mjs $<TARGET_FILE:scantrace>
+                   ${CMAKE_BINARY_DIR}/web-tests/trace-page-sizes ${web_dir})
+  set_tests_properties("web: trace page at lecture sizes in headless Chromium" PROPERTIES
+                       LABELS "web;browser" TIMEOUT 300)
 endif()

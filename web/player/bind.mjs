@@ -7,7 +7,9 @@ import { controlsKey, helpTable } from './keys.mjs';
 
 // o: {scope, keys (playerKeys), first (the number of step index 0, from 1), slider?, counter?
 // (element) and counterText?(s), list? (element of one child per step), playButton?, speed?
-// (<select>), help? (overlay element: the key table goes into its .keys element), hash? (the address follows), say?(text), actions?
+// (<select>), help? (overlay element: the key table goes into its .keys element), hash? (the address follows), say?(text),
+// announce? (a live region: each step's sentence, sentence?(s) or the counter's text, said by a
+// screen reader), actions?
 // ({name: () => ...}: the page's own, e.g. save, toggle_rows)}.
 export function bindPlayer(s, o) {
   const first = o.first ?? 1, say = o.say || (() => {});
@@ -36,8 +38,12 @@ export function bindPlayer(s, o) {
     e.stopPropagation();
   }, true);
   for (const b of o.scope.querySelectorAll('[data-act]')) {
-    // Its title from the key table, so a button names the keys that do the same.
-    if (o.keys.tip(b.dataset.act)) b.title = o.keys.tip(b.dataset.act);
+    // Its title and name from the key table: a button names what it does and the keys that do
+    // the same (its text is an arrow).
+    if (o.keys.tip(b.dataset.act)) {
+      b.title = o.keys.tip(b.dataset.act);
+      b.setAttribute('aria-label', b.title);
+    }
     b.addEventListener('click', () => { act(b.dataset.act); b.blur(); });
   }
   if (o.slider) {
@@ -82,12 +88,22 @@ function update(s, o, first, doc) {
     o.slider.max = String(first + s.count - 1);
     o.slider.value = String(n);
   }
-  if (o.counter) o.counter.textContent = o.counterText ? o.counterText(s) : `step ${n} / ${first + s.count - 1}`;
+  const sentence = o.counterText ? o.counterText(s) : `step ${n} / ${first + s.count - 1}`;
+  if (o.counter) o.counter.textContent = sentence;
+  // Said once a step (play and speed changes leave it).
+  if (o.announce && o.announce.dataset.step !== String(n)) {
+    o.announce.dataset.step = String(n);
+    o.announce.textContent = o.sentence ? o.sentence(s) : sentence;
+  }
   if (o.list) {
-    for (const el of o.list.querySelectorAll('.current')) el.classList.remove('current');
+    for (const el of o.list.querySelectorAll('.current')) {
+      el.classList.remove('current');
+      el.removeAttribute('aria-current');
+    }
     const li = o.list.children[s.index];
     if (li) {
       li.classList.add('current');
+      li.setAttribute('aria-current', 'step');
       li.scrollIntoView({ block: 'nearest' });
     }
   }

@@ -25,10 +25,11 @@ export function createStepper(o) {
   const timers = o.timers || globalThis;
   const say = o.say || (() => {});
   const listeners = [];
-  let index = 0, timer = null, rowEntry = null;
+  let index = 0, timer = null;
   let speed = PLAY_SPEEDS.indexOf(o.speed) >= 0 ? PLAY_SPEEDS.indexOf(o.speed) : 2;
   const changed = () => listeners.forEach((f) => f(s));
   const clamp = (i) => Math.max(0, Math.min(s.count - 1, i));
+  const typed = rowTyping(() => s, go, say);
 
   function go(i) {
     index = clamp(i);
@@ -56,40 +57,18 @@ export function createStepper(o) {
     say(`${PLAY_SPEEDS[speed]} steps a second`);
     changed();
   }
-  // The step showing scanline `text` (the first one that does), or a message saying none does.
-  function goToRow(text) {
-    const row = Number.parseInt(text, 10);
-    const i = s.rows.findIndex((r) => r && r[0] <= row && row <= r[1]);
-    if (!Number.isFinite(row) || i < 0) return say(`no step shows scanline ${text}`);
-    go(i);
-    say(`scanline ${row}`);
-  }
-  // A key while a row is typed after g: digits and '-', Backspace, Enter goes, Esc cancels.
-  function typeRow(key) {
-    if (/^[0-9-]$/.test(key)) rowEntry += key;
-    else if (key === 'Backspace') rowEntry = rowEntry.slice(0, -1);
-    else if (key === 'Enter' || key === 'Escape') {
-      const text = rowEntry;
-      rowEntry = null;
-      if (key === 'Enter' && text) goToRow(text);
-      else say('');
-      return true;
-    } else return false;
-    say(`go to scanline: ${rowEntry}_`);
-    return true;
-  }
   const s = {
     count: o.count,
     rows: o.rows || [], // [first, last] scanline of each step, or null
     get index() { return index; },
     get playing() { return timer !== null; },
     get speed() { return PLAY_SPEEDS[speed]; },
-    get typingRow() { return rowEntry !== null; },
-    go, play, goToRow, typeRow,
+    get typingRow() { return typed.typing; },
+    go, play, goToRow: typed.goTo, typeRow: typed.type,
     faster: () => setSpeed(speed + 1),
     slower: () => setSpeed(speed - 1),
     setSpeed: (stepsPerSecond) => setSpeed(PLAY_SPEEDS.indexOf(stepsPerSecond)),
-    startRow: () => { play(false); rowEntry = ''; say('go to scanline: _'); },
+    startRow: () => { play(false); typed.start(); },
     // A new count (the steps planned again): the index kept within it.
     resize: (count, i = index) => { s.count = count; go(i); },
     onChange: (f) => listeners.push(f),
@@ -101,4 +80,37 @@ export function createStepper(o) {
     },
   };
   return s;
+}
+
+// g and a row: the row typed (`start`, then a key at a time: `type`), and the step showing it
+// (`goTo`). `stepper()`: the stepper, whose `rows` may be planned again meanwhile.
+function rowTyping(stepper, go, say) {
+  let entry = null;
+  // The step showing scanline `text` (the first one that does), or a message saying none does.
+  function goTo(text) {
+    const row = Number.parseInt(text, 10);
+    const i = stepper().rows.findIndex((r) => r && r[0] <= row && row <= r[1]);
+    if (!Number.isFinite(row) || i < 0) return say(`no step shows scanline ${text}`);
+    go(i);
+    say(`scanline ${row}`);
+  }
+  // A key while a row is typed after g: digits and '-', Backspace, Enter goes, Esc cancels.
+  function type(key) {
+    if (/^[0-9-]$/.test(key)) entry += key;
+    else if (key === 'Backspace') entry = entry.slice(0, -1);
+    else if (key === 'Enter' || key === 'Escape') {
+      const text = entry;
+      entry = null;
+      if (key === 'Enter' && text) goTo(text);
+      else say('');
+      return true;
+    } else return false;
+    say(`go to scanline: ${entry}_`);
+    return true;
+  }
+  return {
+    get typing() { return entry !== null; },
+    start: () => { entry = ''; say('go to scanline: _'); },
+    goTo, type,
+  };
 }

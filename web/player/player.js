@@ -50,7 +50,7 @@ export async function startPlayer(pm, cfg, traceText) {
     scope: document, keys, first: 1, slider: $('slider'),
     counter: $('step-no'), counterText: () => `step ${s.index + 1} / ${s.count}: ${label(steps[s.index])}`,
     list: $('list'), playButton: $('play'), speed: $('speed'), help: $('help'), hash: true, say,
-    actions: { toggle_rows: toggleRows },
+    announce: $('announce'), actions: { toggle_rows: toggleRows },
   });
   canvas.addEventListener('click', (e) => {
     $('info').textContent = pixelStory(e, canvas, cfg, steps[s.index], events, $('info')) || $('info').textContent;
@@ -71,12 +71,36 @@ export async function startPlayer(pm, cfg, traceText) {
   document.body.dataset.ready = '1';
 }
 
+// A phone's width (player.html's one-column layout, under 700 px): the controls wrap, nothing
+// is wider than the screen but the frame, which is drawn wide enough for its smallest text to
+// read at 10 CSS px, in a box that scrolls sideways; the step list goes under it.
+const narrow = () => window.matchMedia('(max-width: 700px)').matches;
+
+// The scale (CSS pixels a frame pixel) at which frame f's smallest text reads as a 10.5-px font:
+// of its texts holding a capital or a digit, the shortest one's tallest glyph (its strokes'
+// extent) as a sans-serif's capitals, 0.7 of its font size.
+function readableScale(f) {
+  let smallest = Infinity;
+  for (const op of f.ops) {
+    if (op[0] !== 'G' || !/[A-Z0-9]/.test(op[3])) continue;
+    let most = 0;
+    for (let k = 0; k < op[6].length; k += 3) {
+      const ys = f.glyphs[op[6][k]].flatMap((stroke) => stroke.filter((v, i) => i % 2 === 1));
+      if (ys.length) most = Math.max(most, Math.max(...ys) - Math.min(...ys));
+    }
+    if (most > 0) smallest = Math.min(smallest, most);
+  }
+  return smallest < Infinity ? (10.5 * 0.7) / smallest : 0;
+}
+
 // The canvas's drawing: fit() sizes it to the stage, show(i) draws step i when it is still the
 // stepper's (`stepper()`), forget() drops the frame composed ahead (the steps planned again).
-// The frame is drawn at the size it is shown, in device pixels: sharp at any zoom.
+// The frame is drawn at the size it is shown, in device pixels: sharp at any zoom. On a phone
+// it is as wide as the stage or as its smallest text needs (the most any step shown needed, so
+// the frame does not change size back and forth), the stage scrolling sideways.
 function canvasDrawer(pm, plan, cfg, canvas, stepper) {
   const ctx = canvas.getContext('2d');
-  let drawing = Promise.resolve(), scale = 1;
+  let drawing = Promise.resolve(), scale = 1, readable = 0;
   // The next step's frame is composed ahead, once the shown one is drawn: stepping on, the
   // common case, then only draws (composing a course triangle's frame is most of a step's time).
   let ahead = null; // {index, frame}
@@ -85,20 +109,26 @@ function canvasDrawer(pm, plan, cfg, canvas, stepper) {
     const s = stepper();
     if (s.index === i - 1 && i < s.count && !(ahead && ahead.index === i)) ahead = { index: i, frame: pm.frame(plan.first + i) };
   }, 0);
-  return {
+  const drawer = {
     fit() {
       const stage = document.getElementById('stage');
-      scale = Math.min(stage.clientWidth / cfg.width, stage.clientHeight / cfg.height);
+      scale = narrow() ? Math.max(stage.clientWidth / cfg.width, readable)
+        : Math.min(stage.clientWidth / cfg.width, stage.clientHeight / cfg.height);
       canvas.style.width = `${Math.floor(cfg.width * scale)}px`;
       canvas.style.height = `${Math.floor(cfg.height * scale)}px`;
     },
     forget: () => { ahead = null; },
-    show: (wanted) => {
+    show(wanted) {
       drawing = drawing.then(async () => {
         if (wanted !== stepper().index) return;
         const t0 = performance.now();
         const f = frameOf(wanted);
         const t1 = performance.now();
+        const needs = narrow() ? readableScale(f) * cfg.width / f.w : 0;
+        if (needs > readable) {
+          readable = needs;
+          drawer.fit();
+        }
         const dpr = window.devicePixelRatio || 1;
         canvas.width = Math.round(cfg.width * scale * dpr);
         canvas.height = Math.round(cfg.height * scale * dpr);
@@ -112,6 +142,7 @@ function canvasDrawer(pm, plan, cfg, canvas, stepper) {
       });
     },
   };
+  return drawer;
 }
 
 // The trace opened with `rows_per_step` (0: as planned), its steps cfg.first..cfg.last when

@@ -24,6 +24,7 @@ export function startStepPage() {
       frameUrl(i).then((url) => { if (s.index === i) img.src = url; },
         (e) => say(`cannot show step ${base + i}: ${e}`));
       document.title = `${DATA.title} - step ${base + i}`;
+      img.alt = `the frame of step ${base + i}: ${DATA.labels[i]}`;
     },
   });
   DATA.labels.forEach((label, i) => {
@@ -39,6 +40,7 @@ export function startStepPage() {
     scope: document, keys, first: base, slider: $('slider'),
     counter: $('counter'), counterText: () => `step ${base + s.index} / ${DATA.total}`, list,
     playButton: $('play'), speed: $('speed'), help: $('help'), hash: true, say,
+    announce: $('announce'), sentence: () => `step ${base + s.index} / ${DATA.total}: ${DATA.labels[s.index]}`,
     actions: { save: () => save(frameUrl, base + s.index, s.index, say) },
   });
   s.go(s.initialIndex);

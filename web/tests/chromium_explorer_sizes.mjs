@@ -15,22 +15,13 @@ import fs from 'node:fs';
 import path from 'node:path';
 
 import { checker, launch, until, watchProblems } from './cdp.mjs';
+import { cutOff as cutOffIn, frameTextSize, kReadable, overflowing as overflowingIn, screenshot as screenshotIn, sizes, smallestPageFont } from './layout_checks.mjs';
 
 const [explorer, work] = process.argv.slice(2);
 const shots = path.join(work, 'screenshots');
 fs.mkdirSync(shots, { recursive: true });
 // A scanline step of the course triangle whose frame has both zoom insets.
 const address = `file://${path.resolve(explorer)}#triangle=20,20;250,80;300,400&step=38`;
-const sizes = [
-  { name: '1366x768', width: 1366, height: 768, mobile: false },
-  { name: '1920x1080', width: 1920, height: 1080, mobile: false },
-  { name: '390x844', width: 390, height: 844, mobile: true },
-];
-// A text's size as a CSS font size: the height of its capitals and digits over 0.7, the share of
-// the font size a sans-serif's capitals take (system-ui's, the page's font: about 0.7).
-const kCapitals = 0.7;
-const kReadable = 10;
-
 const b = await launch();
 const problems = watchProblems(b);
 const checks = checker();
@@ -56,80 +47,21 @@ async function framed() {
   })()`));
 }
 
-async function screenshot(name, whole = false) {
-  const params = { format: 'png' };
-  if (whole) {
-    const [w, h] = await b.evaluate('[document.documentElement.scrollWidth, document.documentElement.scrollHeight]');
-    Object.assign(params, { captureBeyondViewport: true, clip: { x: 0, y: 0, width: w, height: h, scale: 1 } });
-  }
-  const { data } = await b.page('Page.captureScreenshot', params);
-  fs.writeFileSync(path.join(shots, `explorer-${name}.png`), Buffer.from(data, 'base64'));
+const screenshot = (name, whole = false) => screenshotIn(b, shots, `explorer-${name}`, whole);
+const cutOff = (width) => cutOffIn(b, width);
+const overflowing = () => overflowingIn(b);
+
+// The frame's smallest text as a font size in CSS pixels (the step's frame at the canvas's CSS
+// scale), and the page's smallest font size among the texts seen.
+async function smallestText() {
+  const [css, f] = await b.evaluate(`(() => {
+    const canvas = document.getElementById('frame');
+    return [canvas.getBoundingClientRect().width / canvas.width,
+      explorer.module().frames(null, { first: explorer.state().step, count: 1, ...explorer.frameSize() }).frames[0]];
+  })()`);
+  const t = frameTextSize(f, css), p = await smallestPageFont(b);
+  return { frame: t.size, which: t.which, page: p.page, where: p.where };
 }
-
-// The controls (and labels) seen, any part of them outside the screen's width; and how wide the
-// page is. One inside a box that scrolls sideways (the phone's frame) is reached by scrolling
-// it: the box is checked instead. (A phone's window grows to a page wider than the screen, so
-// the screen's width is the emulated one, not innerWidth.)
-const cutOff = (width) => b.evaluate(`((innerWidth) => {
-  const seen = (el) => { const r = el.getBoundingClientRect(); return r.width > 1 && r.height > 1 && getComputedStyle(el).visibility !== 'hidden'; };
-  const scrolls = (el) => ['auto', 'scroll'].includes(getComputedStyle(el).overflowX);
-  const shown = (el) => { for (let a = el.parentElement; a && a !== document.body; a = a.parentElement) if (scrolls(a)) return a; return el; };
-  const out = [...document.querySelectorAll('button, select, input, label, summary, a, [tabindex]')]
-    .filter(seen).map(shown).filter((el) => { const r = el.getBoundingClientRect(); return r.left < -0.5 || r.right > innerWidth + 0.5; })
-    .map((el) => el.id || el.textContent.trim().slice(0, 30) || el.tagName);
-  return { out, scroll: document.documentElement.scrollWidth, width: innerWidth };
-})(${width})`);
-
-// Each element holding text: the lines of its own text outside its box (more than half a pixel),
-// or, for a box that clips without scrolling, its content wider or taller than the box. A select
-// draws its option itself; a box of 1 px is the live region, said and never seen.
-const overflowing = () => b.evaluate(`(() => {
-  const bad = [];
-  for (const el of document.querySelectorAll('body *')) {
-    const r = el.getBoundingClientRect(), style = getComputedStyle(el);
-    if (r.width <= 1 || r.height <= 1 || style.visibility === 'hidden' || el.closest('select')) continue;
-    for (const node of el.childNodes) {
-      if (node.nodeType !== Node.TEXT_NODE || !node.textContent.trim()) continue;
-      const range = document.createRange();
-      range.selectNodeContents(node);
-      for (const line of range.getClientRects())
-        if (line.left < r.left - 0.5 || line.right > r.right + 0.5 || line.top < r.top - 0.5 || line.bottom > r.bottom + 0.5)
-          bad.push(\`"\${node.textContent.trim().slice(0, 40)}" in \${el.id || el.tagName} (\${Math.round(line.left)}..\${Math.round(line.right)} of \${Math.round(r.left)}..\${Math.round(r.right)})\`);
-    }
-    const clips = (v) => v === 'hidden' || v === 'clip';
-    if ((clips(style.overflowX) && el.scrollWidth > el.clientWidth + 1) || (clips(style.overflowY) && el.scrollHeight > el.clientHeight + 1))
-      bad.push(\`\${el.id || el.tagName} clips its content (\${el.scrollWidth}x\${el.scrollHeight} in \${el.clientWidth}x\${el.clientHeight})\`);
-  }
-  return bad;
-})()`);
-
-// The frame's smallest text as a font size in CSS pixels: of each text op holding a capital or a
-// digit, the tallest glyph (its strokes' extent, in frame pixels) scaled by the frame's CSS width
-// over its pixel width, over kCapitals; and the page's smallest font size among the texts seen.
-const smallestText = () => b.evaluate(`(() => {
-  const canvas = document.getElementById('frame');
-  const css = canvas.getBoundingClientRect().width / canvas.width;
-  const f = explorer.module().frames(null, { first: explorer.state().step, count: 1, ...explorer.frameSize() }).frames[0];
-  let frame = Infinity, which = '';
-  for (const op of f.ops) {
-    if (op[0] !== 'G' || !/[A-Z0-9]/.test(op[3])) continue;
-    let most = 0;
-    for (let k = 0; k < op[6].length; k += 3) {
-      const ys = f.glyphs[op[6][k]].flatMap((s) => s.filter((v, i) => i % 2 === 1));
-      if (ys.length) most = Math.max(most, Math.max(...ys) - Math.min(...ys));
-    }
-    if (most * css / ${kCapitals} < frame) [frame, which] = [most * css / ${kCapitals}, op[3]];
-  }
-  let page = Infinity, where = '';
-  for (const el of document.querySelectorAll('body *')) {
-    const r = el.getBoundingClientRect();
-    if (r.width <= 1 || r.height <= 1 || el.closest('select')) continue;
-    if (![...el.childNodes].some((n) => n.nodeType === Node.TEXT_NODE && n.textContent.trim())) continue;
-    const size = parseFloat(getComputedStyle(el).fontSize);
-    if (size < page) [page, where] = [size, el.id || el.tagName];
-  }
-  return { frame, which, page, where };
-})()`);
 
 const median = (v) => [...v].sort((a, c) => a - c)[v.length >> 1];
 const quartiles = (v) => { const s = [...v].sort((a, c) => a - c); return [s[s.length >> 2], s[(3 * s.length) >> 2]]; };

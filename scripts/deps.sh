@@ -11,7 +11,7 @@ set -euo pipefail
 # development packages alone are 316 more (docs/performance.md, "Building").
 # (pkg-config finds libdeflate-dev, the compressor of the PNG writer of `scantrace render`,
 # io/png_writer.hpp, which has no CMake package.) (libhwy-dev: Google Highway, the core's SIMD
-# Gouraud spans, src/shade_bytes.hpp.) (libsimdjson-dev: the scene file's fast path,
+# Gouraud spans, src/fast/shade_bytes.hpp.) (libsimdjson-dev: the scene file's fast path,
 # io/scene_json_fast.hpp.)
 # (ccache: scripts/build.sh compiles through it when it is installed; the demo installs it too, so
 # that the demo's build and the full one use the same compiler launcher and the full build reuses

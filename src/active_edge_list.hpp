@@ -98,7 +98,7 @@ class ActiveEdgeList {
   }
 
   // Holds just the two edges `left` and `right`, in that order, already started at the current
-  // row: the triangle sweep (triangle_sweep.hpp) knows which of its edges is on which side without
+  // row: the triangle sweep (fast/triangle_sweep.hpp) knows which of its edges is on which side without
   // comparing crossings, and has no edge table to take them from.
   void hold(const Edge& left, const Stepper& l, const Edge& right, const Stepper& r) {
     edges_ = nullptr;

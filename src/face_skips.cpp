@@ -10,8 +10,8 @@ namespace scantrace {
 
 namespace {
 
-// skip_before_fill with the grid made and checked once, and one vector for every face: the pass
-// over a scene cost 550 instructions a face with a grid and a vector each (callgrind, course scene).
+// skip_before_fill with the grid made and checked once, and one vector for every face: a grid and
+// a vector per face cost more than the test itself.
 SkipReason skip_on_grid(const Scene& scene, int f, const FillOptions& opt, const SubpixelGrid& grid,
                         std::vector<FixedPoint>& snapped) {
   const FaceCorners c = corners_of(scene, scene.faces[static_cast<std::size_t>(f)]);

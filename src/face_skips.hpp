@@ -1,10 +1,10 @@
 #pragma once
 // What a render of a scene skips, decided from each face's geometry alone: the same on every way
 // the render can run (far to near, near to far, bands on several threads), where the counts of
-// RenderStats depend on the way. The near-to-far render rejects a face whose box nearer faces
-// cover before its set-up, so a zero-area face there was counted hidden, and the bands trade such
-// faces too: the report of `scantrace render` said "316 skipped, 6344 hidden" for a scene of 550
-// zero-area faces, "550 skipped" with --no-occlusion and "315 skipped" with --threads 0 (issue 36).
+// RenderStats depend on the way. A render's own counts cannot say it: the near-to-far render
+// rejects a face whose box nearer faces cover before its set-up, so a zero-area face there counts
+// as hidden, and the bands each meet some faces and not others; a report built from them would
+// give one scene different numbers of skipped faces on each way.
 #include "fill_options.hpp"
 #include "fill_result.hpp"
 #include "painter.hpp"

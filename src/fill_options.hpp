@@ -43,14 +43,14 @@ enum class Visibility { painter, zbuffer };
 // How an untraced painter's render draws (read by render(); docs/performance.md measures both):
 // near_to_far: the painter's order reversed, each pixel written once, by the face the painter
 // would paint last, spans clipped to what nearer faces left and faces whose box is all covered
-// rejected before their set-up, the background written last (occlusion_canvas.hpp): the same
+// rejected before their set-up, the background written last (fast/occlusion_canvas.hpp): the same
 // image, bit for bit, without the overdraw; far_to_near: the course's algorithm as it is taught,
 // every face painted over the farther ones. A traced render is always far_to_near: the trace
 // shows the algorithm the course asks students to understand. The z-buffered render reads it too
 // (one thread, untraced): near_to_far draws its faces in that same order, an exact depth tie still
 // going to the face first in the scene, and rejects before set-up a face whose box a coarse view
-// of the depth buffer shows all nearer (depth_tiles.hpp); far_to_near is its scene order.
-// automatic (the default): one of the two, chosen from the scene (occlusion_choice.hpp says how),
+// of the depth buffer shows all nearer (fast/depth_tiles.hpp); far_to_near is its scene order.
+// automatic (the default): one of the two, chosen from the scene (fast/occlusion_choice.hpp says how),
 // which RenderStats::path reports.
 enum class Occlusion { near_to_far, far_to_near, automatic };
 

@@ -8,7 +8,7 @@
 #include "edge_stepper.hpp"
 #include "edge_table.hpp"
 #include "fixed_point.hpp"
-#include "flat_span.hpp"
+#include "fast/flat_span.hpp"
 #include "row_trace.hpp"
 
 namespace scantrace {

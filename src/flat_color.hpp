@@ -36,8 +36,8 @@ namespace detail {
 
 // The mean of `colors`, summed in a canonical order of the (snapped) vertices `p`, so that listing
 // the same polygon's vertices in another order cannot change the last bit of the result. `order`
-// is working storage. Inline for a triangle, whose faces are most of every scene (called out of
-// line it cost the course scene's render about 70 instructions a face, callgrind).
+// is working storage. Inline for a triangle, whose faces are most of every scene: the call would
+// cost more than the sum.
 inline Color flat_color(std::span<const FixedPoint> p, std::span<const Color> colors,
                         std::vector<int>& order) {
   if (p.size() != 3) return detail::flat_color_sorted(p, colors, order);

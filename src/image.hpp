@@ -120,10 +120,9 @@ class Image {
   //
   // Any other pixel is written, and copied onto the rest of a block in doubling steps, and that
   // block is copied over the image. The block is small enough to stay in the L1 cache; doubling
-  // over the whole image would read its first half back from memory to write the second (a 4096²
-  // 8-bit clear took 2.9 ms that way). Stores of a 48-byte pattern from SSE registers were tried
-  // instead: 2.4× faster at 4096², but 1.3-1.5× slower at 512² and 1200², where glibc's copy uses
-  // wider vectors.
+  // over the whole image would read its first half back from memory to write the second. Glibc's
+  // copy beats stores of the pattern from SSE registers at the sizes scenes have
+  // (docs/performance.md, "Why the fast code looks as it does").
   void fill_all(P value) {
     if (size_ == 0) return;
     if (const auto byte = repeated_byte(value)) {

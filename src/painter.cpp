@@ -42,11 +42,10 @@ std::uint32_t farthest_first_key(float d) {
 void painter_order(std::span<const double> d, std::vector<int>& order, PainterSortBuffers& buf) {
   // A least-significant-digit radix sort, 11 bits per pass: it is stable, so faces of equal depth
   // keep their order with no tie-break, and unlike a comparison sort it has no data-dependent
-  // branches (on the course scene std::sort's mispredictions made the sort an eighth of the
-  // render). Passes whose digit is the same for every key are skipped.
+  // branches, which std::sort mispredicts on depths. Passes whose digit is the same for every key are skipped.
   //
-  // The keys are the depths rounded to float: three passes where the doubles' 64 bits took six
-  // (the course scene's sort: 1.29 M → 0.96 M instructions). Rounding is monotonic, so faces come
+  // The keys are the depths rounded to float: three passes where the doubles' 64 bits take six.
+  // Rounding is monotonic, so faces come
   // out in the painter's order except within a run of equal floats, where the sort keeps scene
   // order; a run whose doubles are not all equal (depths closer than a float's precision, or
   // beyond its range) is then sorted again on the doubles themselves. The order is exactly the

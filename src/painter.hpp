@@ -9,13 +9,13 @@
 #include <type_traits>
 #include <vector>
 
-#include "coverage_mask.hpp"
-#include "depth_tiles.hpp"
-#include "occlusion_canvas.hpp"
-#include "occlusion_choice.hpp"
+#include "fast/coverage_mask.hpp"
+#include "fast/depth_tiles.hpp"
+#include "fast/occlusion_canvas.hpp"
+#include "fast/occlusion_choice.hpp"
 #include "scanline_fill.hpp"
 #include "scene.hpp"
-#include "small_triangle_batch.hpp"
+#include "fast/small_triangle_batch.hpp"
 #include "zbuffer_canvas.hpp"
 
 namespace scantrace {
@@ -116,7 +116,7 @@ concept DepthBufferedCanvas = requires(C& c, std::span<const Vec2> v, std::span<
 
 namespace detail {
 
-// Whether fill_faces may set faces up kTriangleBatch at a time (small_triangle_batch.hpp): an
+// Whether fill_faces may set faces up kTriangleBatch at a time (fast/small_triangle_batch.hpp): an
 // untraced (kUntraced) flat fill of the exact method under the top-left rule (batchable), onto
 // any canvas.
 template <class Tracer>
@@ -270,41 +270,20 @@ void fill_near_to_far(OcclusionCanvas<P>& canvas, const Scene& scene, std::span<
   canvas.finish(P::from(scene.background));
 }
 
-// Fills the faces of `scene` onto `canvas` (which the caller has cleared to the background).
-// The scene must be valid (see validate()).
-template <Canvas C, FillTracer Tracer = NoTracer>
-RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt,
-                        RenderScratch& scratch, Tracer& tracer) {
-  drawing_order(scene, Visibility::painter, scratch);
+namespace detail {
+
+// Fills the faces of `scene` onto `canvas` (which the caller has cleared to the background) in
+// the order `visibility` draws them: the painter's, or scene order through the depth buffer of a
+// ZBufferCanvas (no sort; the order matters only for exact depth ties, where the first face drawn
+// keeps the pixel). The scene must be valid (see validate()).
+template <Canvas C, FillTracer Tracer>
+RenderStats render_into(C& canvas, const Scene& scene, Visibility visibility,
+                        const FillOptions& opt, RenderScratch& scratch, Tracer& tracer) {
+  drawing_order(scene, visibility, scratch);
   RenderStats stats;
   fill_faces(canvas, scene, scratch.order, scratch.depth, opt, scratch.fill, tracer,
              [&](int, const FillResult& r) { stats.count(r); });
   return stats;
-}
-
-template <Canvas C, FillTracer Tracer = NoTracer>
-RenderStats render_into(C& canvas, const Scene& scene, const FillOptions& opt, Tracer& tracer) {
-  RenderScratch scratch;
-  return render_into(canvas, scene, opt, scratch, tracer);
-}
-
-// The faces in scene order through the depth buffer of `canvas`: no sort, and the order does not
-// matter except for exact depth ties (the first face drawn keeps the pixel).
-template <class P, FillTracer Tracer = NoTracer>
-RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
-                                const FillOptions& opt, RenderScratch& scratch, Tracer& tracer) {
-  drawing_order(scene, Visibility::zbuffer, scratch);
-  RenderStats stats;
-  fill_faces(canvas, scene, scratch.order, scratch.depth, opt, scratch.fill, tracer,
-             [&](int, const FillResult& r) { stats.count(r); });
-  return stats;
-}
-
-template <class P, FillTracer Tracer = NoTracer>
-RenderStats render_zbuffer_into(ZBufferCanvas<P>& canvas, const Scene& scene,
-                                const FillOptions& opt, Tracer& tracer) {
-  RenderScratch scratch;
-  return render_zbuffer_into(canvas, scene, opt, scratch, tracer);
 }
 
 // The z-buffered render of `scene` into `image` (cleared to the background), the faces nearest
@@ -328,6 +307,8 @@ RenderStats render_zbuffer_near_to_far(Image<P>& image, const Scene& scene, cons
              [&](int, const FillResult& r) { stats.count(r); });
   return stats;
 }
+
+}  // namespace detail
 
 // The scene into the caller's `image`, which becomes the scene's size and is cleared to its
 // background, keeping its storage when the size is unchanged (Image::reset). With the same
@@ -353,17 +334,17 @@ RenderStats render(Image<P>& image, const Scene& scene, const FillOptions& opt,
   }
   image.reset(scene.width, scene.height, P::from(scene.background));
   if (opt.visibility == Visibility::zbuffer && way == Occlusion::near_to_far)
-    return render_zbuffer_near_to_far(image, scene, opt, scratch);
+    return detail::render_zbuffer_near_to_far(image, scene, opt, scratch);
   if (opt.visibility == Visibility::zbuffer) {
     scratch.zbuffer.assign(static_cast<std::size_t>(scene.width) * scene.height,
                            std::numeric_limits<double>::infinity());
     // Only a pixel-level trace reads the per-pixel outcomes of the depth test.
     ZBufferCanvas<P> canvas(image, scratch.zbuffer, {0, scene.height},
                             kTraceHooks && Tracer::max_level >= TraceLevel::pixel);
-    return render_zbuffer_into(canvas, scene, opt, scratch, tracer);
+    return detail::render_into(canvas, scene, Visibility::zbuffer, opt, scratch, tracer);
   }
   ImageCanvas<P> canvas(image);
-  return render_into(canvas, scene, opt, scratch, tracer);
+  return detail::render_into(canvas, scene, Visibility::painter, opt, scratch, tracer);
 }
 
 template <class P>

@@ -21,6 +21,20 @@ struct RowTraceScratch {
   std::vector<Span> spans;
 };
 
+// The colour the trace reports at each active point: the edge's colour at the row (Gouraud) or the
+// polygon's one colour (flat).
+struct PointColors {
+  std::span<const Color> colors;  // one per vertex
+  const SubpixelGrid& grid;
+  bool gouraud;
+  Color flat;
+
+  template <class Stepper>
+  Color at(const ActiveEdge<Stepper>& a, i64 y) const {
+    return gouraud ? a.at.color(a.edge, y, colors, grid) : flat;
+  }
+};
+
 template <class Tracer>
 class RowTrace {
  public:
@@ -70,40 +84,48 @@ class RowTrace {
     }
   }
 
-  // The row is written: show the tracer its active edge list and spans. `gouraud` decides what the
-  // active points' colours are; `windings` whether the edges' windings are reported (general
-  // polygons); `spans`: the general polygon's spans (then `span` is their first) or, for a convex
-  // polygon, none (then `span` is the row's span when has_span).
+  // The row of a convex polygon is written: show the tracer its active edge list and its span
+  // (`span` null when the row has none).
   template <class Stepper>
-  void end_row(i64 y, const ActiveEdgeList<Stepper>& active, std::span<const Color> colors,
-               const SubpixelGrid& grid, bool gouraud, Color flat, bool windings, bool has_span,
-               const Span& span, bool has_intervals) {
-    if constexpr (kRows) {
-      if (!row_) return;
-      s_.active_states.clear();
-      s_.active_points.clear();
-      for (const ActiveEdge<Stepper>& a : active) {
-        s_.active_states.push_back(
-            {a.edge.id, a.at.x(), a.at.ceil_x(), windings ? a.edge.winding() : 0});
-        s_.active_points.push_back(
-            {a.at.x(), a.edge.id, gouraud ? a.at.color(a.edge, y, colors, grid) : flat});
-      }
-      ScanlineStep step;
-      step.face = face_;
-      step.y = y;
-      step.entered = s_.entered;
-      step.retired = s_.retired;
-      step.active_edges = s_.active_states;
-      step.active_points = s_.active_points;
-      step.has_intervals = has_intervals;
-      step.intervals = s_.spans;
-      step.has_span = has_intervals ? !s_.spans.empty() : has_span;
-      if (step.has_span) step.span = has_intervals ? s_.spans.front() : span;
-      tracer_.scanline(step);
-    }
+  void end_convex_row(i64 y, const ActiveEdgeList<Stepper>& active, const PointColors& points,
+                      const Span* span) {
+    if constexpr (kRows)
+      if (row_) end_row(y, active, points, /*windings=*/false, span);
+  }
+
+  // The row of a general polygon is written: its active edges with their windings, and the spans
+  // kept by span() (its intervals).
+  template <class Stepper>
+  void end_winding_row(i64 y, const ActiveEdgeList<Stepper>& active, const PointColors& points) {
+    if constexpr (kRows)
+      if (row_) end_row(y, active, points, /*windings=*/true, nullptr);
   }
 
  private:
+  template <class Stepper>
+  void end_row(i64 y, const ActiveEdgeList<Stepper>& active, const PointColors& points,
+               bool windings, const Span* span) {
+    s_.active_states.clear();
+    s_.active_points.clear();
+    for (const ActiveEdge<Stepper>& a : active) {
+      s_.active_states.push_back(
+          {a.edge.id, a.at.x(), a.at.ceil_x(), windings ? a.edge.winding() : 0});
+      s_.active_points.push_back({a.at.x(), a.edge.id, points.at(a, y)});
+    }
+    ScanlineStep step;
+    step.face = face_;
+    step.y = y;
+    step.entered = s_.entered;
+    step.retired = s_.retired;
+    step.active_edges = s_.active_states;
+    step.active_points = s_.active_points;
+    step.has_intervals = windings;
+    step.intervals = s_.spans;
+    step.has_span = windings ? !s_.spans.empty() : span != nullptr;
+    if (step.has_span) step.span = windings ? s_.spans.front() : *span;
+    tracer_.scanline(step);
+  }
+
   Tracer& tracer_;
   RowTraceScratch& s_;
   int face_;

@@ -8,7 +8,7 @@
 //   3. sweep the scanlines that are on the canvas (scanline_sweep.hpp) with the convex rule: a
 //      convex polygon meets a row in one span, from the leftmost active crossing to the rightmost.
 // An untraced triangle of the exact method under the top-left rule skips the table: its two runs
-// and their edges follow from its vertices sorted by y (triangle_sweep.hpp), and the same convex
+// and their edges follow from its vertices sorted by y (fast/triangle_sweep.hpp), and the same convex
 // rule draws them, bit for bit as the general sweep would.
 #include <algorithm>
 #include <array>
@@ -25,17 +25,17 @@
 #include "fill_scratch.hpp"
 #include "fill_setup.hpp"
 #include "flat_color.hpp"
-#include "flat_span.hpp"
+#include "fast/flat_span.hpp"
 #include "halfspace_fill.hpp"
-#include "occlusion_canvas.hpp"
-#include "row_cursor.hpp"
+#include "fast/occlusion_canvas.hpp"
+#include "fast/row_cursor.hpp"
 #include "row_rule.hpp"
 #include "row_trace.hpp"
 #include "scanline_sweep.hpp"
-#include "small_triangle.hpp"
+#include "fast/small_triangle.hpp"
 #include "span.hpp"
 #include "tracer.hpp"
-#include "triangle_sweep.hpp"
+#include "fast/triangle_sweep.hpp"
 #include "vector_interp.hpp"
 
 namespace scantrace {
@@ -57,8 +57,8 @@ namespace detail {
 
 // Twice the signed area, exactly.
 inline i128 twice_area(std::span<const FixedPoint> p) {
-  // A triangle's is one cross product of two edges: two 64×64 → 128-bit multiplies, where the
-  // shoelace sum below takes six and the loop (~64 instructions a face on the course scene).
+  // A triangle's is one cross product of two edges: two 128-bit multiplies where the shoelace
+  // sum below takes six and a loop.
   if (p.size() == 3)
     return static_cast<i128>(p[1].x - p[0].x) * (p[2].y - p[0].y) -
            static_cast<i128>(p[1].y - p[0].y) * (p[2].x - p[0].x);
@@ -77,9 +77,8 @@ struct SpanShader {
   // span, not per pixel) and one increment per pixel in double: the colour is linear along the
   // row, and 16,384 increments drift by ~1e-12, far inside the 1e-4 budget.
   Color c, step;
-  // Inlined: called, its colours went by value on the stack, stored 8 bytes at a time and loaded
-  // 16 at a time, which the store buffer cannot forward (perf: a fifth of the Gouraud sweep's
-  // samples on that load once the sweep had grown enough for GCC to stop inlining this).
+  // Inlined: called, its colours pass through the stack in stores the next loads cannot be
+  // forwarded from (docs/performance.md, "Why the fast code looks as it does").
   [[gnu::always_inline]] SpanShader(Color left, Color right, double xl, double xr, i64 x_begin) {
     if (!(xr > xl)) {  // a span of one point: vector_interp's symmetric mean
       c = (left + right) * 0.5;
@@ -158,11 +157,6 @@ struct RunEdgeColor<ExactStepper> {
 
 // The convex rule of the sweep (scanline_sweep.hpp): on each row one span, from the leftmost
 // active crossing to the rightmost, written to the canvas and narrated to the tracer.
-//
-// Within a run the outermost edges' steppers live in local variables: the canvas is written
-// through byte pointers, which may alias anything, so steppers kept in the list would be reloaded
-// and stored around every span. Every row of a run is then the same few steps: two ceilings, one
-// span and two increments.
 template <class Stepper, Canvas C, FillTracer Tracer>
 struct ConvexRows : RowRule<C, Tracer> {
   using RowRule<C, Tracer>::canvas, RowRule<C, Tracer>::colors, RowRule<C, Tracer>::grid,
@@ -175,6 +169,15 @@ struct ConvexRows : RowRule<C, Tracer> {
   // The flat colour in the canvas's pixel format, converted once per polygon (DirectCanvas only).
   DirectPixel<C> flat_pixel{};
 
+  // What every row of a run reads, copied into locals: the canvas is written through byte
+  // pointers, which may alias the rule's members, so a member read per row is reloaded per row.
+  struct RunConstants {
+    bool closed;   // the closed fill rule (else top-left)
+    bool gouraud;  // the spans report colours
+    bool shade;    // the spans are written in interpolated colours (Gouraud, not uniform)
+    int width;
+  };
+
   // Inlined into the sweep (scanline_sweep.hpp says why): the list's outermost steppers, copied
   // out for the run and back after it.
   [[gnu::always_inline]] void run(i64 y, const i64 run_last, ActiveEdgeList<Stepper>& active) {
@@ -185,109 +188,50 @@ struct ConvexRows : RowRule<C, Tracer> {
     if (two) active.front().at = l, active.back().at = r;
   }
 
-  // A run whose outermost steppers the caller holds (the list's first and last edges, at row y):
-  // they come back stepped past run_last, and the list's copies are written only on traced rows,
-  // for the tracer. The triangle sweep holds its two so. Why: it read its long edge's stepper
-  // back from the list, where the run had just stored it, and that copy loaded 16 bytes at a time
-  // what the run had stored 8 bytes at a time, which the store buffer cannot forward: perf put
-  // 13% of a Gouraud float64 render's sweep samples on that load (the course scene).
+  // The rows y … run_last, during which the active edges do not change: on each row the span
+  // between the outermost crossings, its colours, the canvas, the tracer; then every crossing
+  // one row down. The caller holds the outermost steppers (the list's first and last edges, at
+  // row y) and gets them back stepped past run_last: kept in locals rather than in the list, they
+  // are not reloaded and stored around every span (docs/performance.md, "Why the fast code looks
+  // as it does").
   [[gnu::always_inline]] void run(i64 y, const i64 run_last, ActiveEdgeList<Stepper>& active,
                                   Stepper& l_held, Stepper& r_held) {
-    const bool closed = opt.fill_rule == FillRule::closed;
-    const bool gouraud = opt.shading == Shading::gouraud;
-    const bool shade = gouraud && !uniform;
-    const int width = canvas.width();
-    RowCursor<C> at(canvas, y);
+    const RunConstants k{opt.fill_rule == FillRule::closed, opt.shading == Shading::gouraud,
+                         opt.shading == Shading::gouraud && !uniform, canvas.width()};
     const std::size_t n_active = active.size();
     const Edge* left = n_active >= 2 ? &active.front().edge : nullptr;
     const Edge* right = n_active >= 2 ? &active.back().edge : nullptr;
     Stepper l = l_held, r = r_held;
     RunEdgeColor<Stepper> l_color, r_color;
-    if (shade && left) {
+    if (k.shade && left) {
       l_color.start(*left, colors, grid);
       r_color.start(*right, colors, grid);
     }
+    RowCursor<C> at(canvas, y);
     rows += run_last - y + 1;
     i64 written = 0;  // a local, not `pixels`: a member would be reloaded after each byte store
     for (;; ++y) {
       const bool trace_row = trace.row();
-      if (trace_row && n_active >= 2) active.front().at = l, active.back().at = r;
-      // Under the top-left rule exactly two edges are active; the closed rule can add the two
-      // edges meeting at a vertex that lies exactly on the row.
-      Span span;
-      if (left) {
-        span.x_begin = std::max<i64>(l.ceil_x(), 0);
-        // Half-open span [ceil(xl), ceil(xr)): a centre exactly on the right edge belongs to the
-        // neighbour on the right. The closed rule includes it: [ceil(xl), floor(xr)].
-        span.x_end = std::min<i64>(closed ? r.floor_x() + 1 : r.ceil_x(), width);
+      if (trace_row && left) active.front().at = l, active.back().at = r;  // what the tracer reads
+      Span span = left ? row_span(l, r, k) : Span{};
+      Color c_left = flat, c_right = flat;
+      if (left && (k.shade || trace_row)) span.x_left = l.x(), span.x_right = r.x();
+      if (left && k.shade) {
+        c_left = l_color.at(l, *left, y, colors, grid);
+        c_right = r_color.at(r, *right, y, colors, grid);
       }
       const bool has_span = !span.empty();
-      Color c_left = flat, c_right = flat;
-      if (left && (shade || trace_row)) {
-        span.x_left = l.x();
-        span.x_right = r.x();
-        if (shade) {
-          c_left = l_color.at(l, *left, y, colors, grid);
-          c_right = r_color.at(r, *right, y, colors, grid);
-        }
-      }
       span.begin = span.end = flat;
-      const int yi = static_cast<int>(y), xb = static_cast<int>(span.x_begin),
-                xe = static_cast<int>(span.x_end);
-      // The near-to-far render (occlusion_canvas.hpp): a Gouraud span all covered by nearer faces
-      // costs neither its colours nor a store (a flat one is clipped by claim() alone). It still
-      // counts in `written`, the pixels the face owns.
-      bool hidden = false;
-      if constexpr (CoverageCanvas<C>)
-        hidden = shade && has_span && at.clip && CoverageMask::covered(at.cover, xb, xe);
-      if (has_span && !hidden) {
-        const bool trace_pixels = trace.pixels(y);
-        if (!shade) {
-          at.fill_flat(canvas, flat_row, flat_pixel, flat, yi, xb, xe);
-          if (trace_pixels)
-            for (int x = xb; x < xe; ++x) trace.pixel(canvas, x, y, flat, span.weight(x));
-        } else {
-          SpanShader<Stepper> shader(c_left, c_right, span.x_left, span.x_right, span.x_begin);
-          // The exact method's span is linear from its first pixel's colour, so an image canvas
-          // writes it in its pixel format's fastest way (whether the row is traced or not, so that
-          // tracing never changes a pixel); the loop below then only narrates.
-          constexpr bool kCanvasShades = DirectCanvas<C> && std::is_same_v<Stepper, ExactStepper>;
-          if constexpr (kCanvasShades && CoverageCanvas<C>) {
-            if (at.clip) {
-              ShadedSpan<DirectPixel<C>> part(xb, xe, shader.c, shader.step);
-              // Inlined as the flat run writer is (RowCursor::fill_flat): called, it was a
-              // fifth of the Gouraud sweep's samples once the sweep had grown.
-              const auto run = [&](int a, int b) __attribute__((always_inline)) {
-                part.write(at.row, a, b);
-              };
-              at.claimed += CoverageMask::claim(at.cover, xb, xe, run);
-            } else {
-              CoverageMask::mark(at.cover, xb, xe);
-              at.claimed += xe - xb;
-              shade_pixels(at.row, xb, xe, shader.c, shader.step);
-            }
-          } else if constexpr (kCanvasShades) {
-            shade_pixels(at.row, xb, xe, shader.c, shader.step);
-          }
-          if (trace_row) span.begin = shader.color();
-          if (!kCanvasShades || trace_row) {
-            for (int x = xb; x < xe; ++x) {
-              const Color c = shader.color();
-              if constexpr (!kCanvasShades) canvas.set(x, yi, c);
-              if (trace_pixels) trace.pixel(canvas, x, y, c, span.weight(x));
-              if (trace_row) span.end = c;
-              shader.next();
-            }
-          }
-        }
+      if (has_span) {
+        write_span(at, span, c_left, c_right, y, trace_row, k);
+        written += span.size();
       }
-      if (has_span) written += span.size();
-      span.has_colors = has_span && gouraud;
-      trace.end_row(y, active, colors, grid, gouraud, flat, false, has_span, span, false);
+      span.has_colors = has_span && k.gouraud;
+      trace.end_convex_row(y, active, PointColors{colors, grid, k.gouraud, flat},
+                           has_span ? &span : nullptr);
       l.advance();
       r.advance();
-      for (std::size_t i = n_active >= 2 ? 1 : 0; i + 1 < n_active; ++i) active[i].at.advance();
-      if (n_active == 1) active[0].at.advance();
+      advance_inner(active, n_active);
       if (y == run_last) break;
       at.next_row();
       trace.begin_row(y + 1);
@@ -296,40 +240,143 @@ struct ConvexRows : RowRule<C, Tracer> {
     pixels += written;
     at.finish(canvas);
   }
+
+  // Row y's pixels between the crossings, clipped to the canvas. Half-open [ceil(xl), ceil(xr))
+  // under the top-left rule: a centre exactly on the right edge belongs to the neighbour on the
+  // right. The closed rule includes it: [ceil(xl), floor(xr)].
+  [[gnu::always_inline]] static Span row_span(const Stepper& l, const Stepper& r,
+                                              const RunConstants& k) {
+    Span span;
+    span.x_begin = std::max<i64>(l.ceil_x(), 0);
+    span.x_end = std::min<i64>(k.closed ? r.floor_x() + 1 : r.ceil_x(), k.width);
+    return span;
+  }
+
+  // The span's pixels to the canvas, and to the tracer on a traced row (with the span's first
+  // and last colours, which the row's step reports).
+  [[gnu::always_inline]] void write_span(RowCursor<C>& at, Span& span, Color c_left,
+                                         Color c_right, i64 y, bool trace_row,
+                                         const RunConstants& k) {
+    const int yi = static_cast<int>(y), xb = static_cast<int>(span.x_begin),
+              xe = static_cast<int>(span.x_end);
+    const bool trace_pixels = trace.pixels(y);
+    if (!k.shade) {
+      at.fill_flat(canvas, flat_row, flat_pixel, flat, yi, xb, xe);
+      if (trace_pixels)
+        for (int x = xb; x < xe; ++x) trace.pixel(canvas, x, y, flat, span.weight(x));
+      return;
+    }
+    if (at.hidden(xb, xe)) return;  // near to far: nearer faces cover it all
+    SpanShader<Stepper> shader(c_left, c_right, span.x_left, span.x_right, span.x_begin);
+    // The exact method's span is linear from its first pixel's colour, so a canvas with a pixel
+    // format writes it the fastest way it can, traced or not (tracing never changes a pixel); the
+    // loop below then only narrates. Other canvases and methods take a colour per pixel here.
+    constexpr bool kCanvasShades = DirectCanvas<C> && std::is_same_v<Stepper, ExactStepper>;
+    if constexpr (kCanvasShades) {
+      at.shade(xb, xe, shader.c, shader.step);
+      if (!trace_row) return;
+    }
+    if (trace_row) span.begin = shader.color();
+    for (int x = xb; x < xe; ++x) {
+      const Color c = shader.color();
+      if constexpr (!kCanvasShades) canvas.set(x, yi, c);
+      if (trace_pixels) trace.pixel(canvas, x, y, c, span.weight(x));
+      if (trace_row) span.end = c;
+      shader.next();
+    }
+  }
+
+  // The list's crossings other than the outermost two (held by the run) one row down. Under the
+  // top-left rule there are none; the closed rule can add the two edges meeting at a vertex that
+  // lies exactly on the row.
+  [[gnu::always_inline]] static void advance_inner(ActiveEdgeList<Stepper>& active,
+                                                   std::size_t n_active) {
+    for (std::size_t i = n_active >= 2 ? 1 : 0; i + 1 < n_active; ++i) active[i].at.advance();
+    if (n_active == 1) active[0].at.advance();
+  }
 };
 
-// A small triangle of one colour (small_triangle.hpp): its rows' spans from the SIMD kernel,
-// written as the convex rule writes a flat span, and the same counts.
+// Which way a polygon is drawn. The edge table is the course's fill, and the only way a trace
+// narrates; the other two draw the same pixels, bit for bit, with less work where they can
+// (src/fast/): a triangle's two runs without a table, a small one-colour triangle by SIMD edge
+// functions. The halfspace method is the other classic algorithm, for comparison.
+enum class FillPath { edge_table, triangle_sweep, small_triangle, halfspace };
+
+// A polygon past its set-up (fill_setup.hpp): snapped, with an interior, facing the way the
+// options keep, and with a pixel centre on the canvas.
+struct PreparedPolygon {
+  SubpixelGrid grid;
+  std::span<const FixedPoint> pts;  // snapped, in grid units
+  i128 area2 = 0;                   // twice the signed area
+  GridBox box{};
+};
+
+// Set-up: snap the vertices, then reject what cannot fill a pixel (docs/design.md §3).
 template <Canvas C>
-FillResult fill_small_triangle(C& canvas, const SmallTriangle& t, Color color, FlatRow& flat_row) {
-  // The pixel first, the spans after: the rows read the pixel from memory (RowCursor::fill_flat
-  // takes it by reference), and the kernel's call between its stores and their first load lets
-  // them reach the cache. Made after the kernel, the pixel was stored a few instructions before
-  // the first row loaded it, in wider loads than its stores, which the store buffer cannot
-  // forward: a stall on every face, half of a near-to-far float64 render's samples in this
-  // function (perf, the course scene).
-  DirectPixel<C> pixel{};
-  if constexpr (DirectCanvas<C>) pixel = C::convert(color);
-  std::array<RowSpan, kSmallTriangleRows> spans;  // only rows [0, t.rows) are written and read
-  small_triangle_spans(t, spans.data());
-  RowCursor<C> at(canvas, t.row0);
-  i64 pixels = 0;
-  for (int r = 0;;) {
-    const RowSpan span = spans[r];
-    if (span.begin < span.end) {
-      at.fill_flat(canvas, flat_row, pixel, color, t.row0 + r, span.begin, span.end);
-      pixels += span.end - span.begin;
-    }
-    if (++r == t.rows) break;
-    at.next_row();
-  }
-  at.finish(canvas);
-  return {SkipReason::none, t.rows, pixels};
+SkipReason prepare(const C& canvas, const PolygonInput& in, const FillOptions& opt,
+                   std::vector<FixedPoint>& snapped, PreparedPolygon& p) {
+  p.grid = SubpixelGrid(opt.subpixel_bits);
+  require_valid(p.grid);
+  if (const SkipReason r = snap_vertices(in.points, in.colors, p.grid, snapped);
+      r != SkipReason::none)
+    return r;
+  p.pts = snapped;
+  // A zero-area polygon has no interior; under the top-left rule it owns no pixel, and the closed
+  // rule is defined here for polygons with an interior too, so both skip it.
+  p.area2 = twice_area(p.pts);
+  if (p.area2 == 0) return SkipReason::degenerate;
+  // Culling on the exact sign: a front face has negative twice_area on the y-down canvas
+  // (fill_options.hpp, Cull).
+  if (opt.cull != Cull::none && (opt.cull == Cull::back ? p.area2 > 0 : p.area2 < 0))
+    return SkipReason::culled;
+  p.box = grid_box(p.pts, p.grid, opt.fill_rule);
+  return covers_pixels(p.box, canvas.width(), canvas_rows(canvas));
+}
+
+// The path for a prepared polygon; `small` is set when it is FillPath::small_triangle. Only an
+// untraced triangle of the exact method under the top-left rule leaves the edge table.
+template <Canvas C>
+FillPath choose_path(const C& canvas, const PreparedPolygon& p, const FillOptions& opt,
+                     bool one_colour, bool traced, SmallTriangle& small) {
+  if (opt.method == Method::halfspace) return FillPath::halfspace;
+  if (p.pts.size() != 3 || opt.method != Method::exact || opt.fill_rule != FillRule::top_left ||
+      traced)
+    return FillPath::edge_table;
+  if (one_colour && small_triangle(p.pts, p.box, p.area2 > 0, p.grid, canvas.width(),
+                                   canvas_rows(canvas), small))
+    return FillPath::small_triangle;
+  return FillPath::triangle_sweep;
+}
+
+// The rows of a polygon by the scanline sweep: from its edge table, or (FillPath::triangle_sweep)
+// from its vertices sorted by y, each row by the convex rule.
+template <Canvas C, class Tracer>
+FillResult sweep_polygon(C& canvas, const PolygonInput& in, const PreparedPolygon& p,
+                         const FillOptions& opt, FillScratch& s, Tracer& tracer, FillPath path,
+                         Color colour, bool uniform, bool traced) {
+  if (path == FillPath::edge_table) s.table.build(p.pts, p.grid, opt.fill_rule);
+  if constexpr (kTraceHooks && Tracer::max_level >= TraceLevel::triangle)
+    if (traced) tracer.edge_table(EdgeTableView{in.face, &s.table, p.pts, p.grid});
+  RowTrace<Tracer> trace(tracer, s.trace, in.face, traced);
+  return with_stepper(opt.method, [&]<class Stepper>() {
+    ConvexRows<Stepper, C, Tracer> rule{
+        {canvas, in.colors, p.grid, opt, colour, trace}, uniform, s.flat_row};
+    if constexpr (DirectCanvas<C>)
+      if (opt.shading == Shading::flat || uniform) rule.flat_pixel = C::convert(colour);
+    if constexpr (std::is_same_v<Stepper, ExactStepper>)
+      if (path == FillPath::triangle_sweep) {
+        sweep_triangle(p.pts, canvas_rows(canvas), p.grid, in.colors, s.active_exact, rule);
+        return rule.result();
+      }
+    sweep_scanlines(s.table, canvas_rows(canvas), p.grid, in.colors, s.active<Stepper>(), rule);
+    return rule.result();
+  });
 }
 
 }  // namespace detail
 
-// Fills one convex polygon (a triangle being the common case) with the method of `opt`.
+// Fills one convex polygon (a triangle being the common case) with the method of `opt`: set-up,
+// then its rows by the path chosen for it, narrated to `tracer` when it wants the polygon.
 template <Canvas C, FillTracer Tracer = NoTracer>
 FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& opt, FillScratch& s,
                         Tracer& tracer) {
@@ -337,84 +384,42 @@ FillResult fill_polygon(C& canvas, const PolygonInput& in, const FillOptions& op
   [[maybe_unused]] bool traced = false;
   if constexpr (kTriangleLevel) traced = tracer.wants_triangle(in.face);
 
-  auto skip = [&](SkipReason reason) {
+  detail::PreparedPolygon p;
+  if (const SkipReason r = detail::prepare(canvas, in, opt, s.snapped, p); r != SkipReason::none) {
     if constexpr (kTriangleLevel)
-      if (traced) tracer.triangle_skipped(in.face, reason);
-    return FillResult{reason, 0, 0};
-  };
-
-  const SubpixelGrid grid(opt.subpixel_bits);
-  require_valid(grid);
-  if (const SkipReason r = snap_vertices(in.points, in.colors, grid, s.snapped);
-      r != SkipReason::none)
-    return skip(r);
-  const std::span<const FixedPoint> pts(s.snapped);
-  // A zero-area polygon has no interior; under the top-left rule it owns no pixel, and the closed
-  // rule is defined here for polygons with an interior too, so both skip it.
-  const i128 area2 = detail::twice_area(pts);
-  if (area2 == 0) return skip(SkipReason::degenerate);
-  // Culling on the exact sign: a front face has negative twice_area on the y-down canvas
-  // (fill_options.hpp, Cull).
-  if (opt.cull != Cull::none && (opt.cull == Cull::back ? area2 > 0 : area2 < 0))
-    return skip(SkipReason::culled);
-
-  const GridBox box = grid_box(pts, grid, opt.fill_rule);
-  if (const SkipReason r = covers_pixels(box, canvas.width(), canvas_rows(canvas));
-      r != SkipReason::none)
-    return skip(r);
-
+      if (traced) tracer.triangle_skipped(in.face, r);
+    return FillResult{r, 0, 0};
+  }
   // The flat colour is needed to fill flat, and to narrate (triangle_begin reports it); an
   // untraced Gouraud fill never reads it, so it does not pay for it.
   const Color flat =
-      opt.shading == Shading::flat || traced ? flat_color(pts, in.colors, s.order) : Color{};
+      opt.shading == Shading::flat || traced ? flat_color(p.pts, in.colors, s.order) : Color{};
   if constexpr (kTriangleLevel)
     if (traced)
       tracer.triangle_begin(PolygonSetup{.face = in.face,
                                          .vertices = in.points,
-                                         .snapped = pts,
+                                         .snapped = p.pts,
                                          .colors = in.colors,
                                          .depth = in.depth,
                                          .flat_color = flat,
                                          .options = &opt,
-                                         .grid = grid,
+                                         .grid = p.grid,
                                          .vertex_depths = in.vertex_depths});
 
-  // An untraced triangle of the exact method under the top-left rule needs no edge table
-  // (triangle_sweep.hpp), and a small one of one colour not even its edges (small_triangle.hpp);
-  // everything else is swept from its table.
-  const bool triangle = pts.size() == 3 && opt.method == Method::exact &&
-                        opt.fill_rule == FillRule::top_left && !traced;
   const bool uniform =
       opt.shading == Shading::gouraud && std::all_of(in.colors.begin() + 1, in.colors.end(),
                                                      [&](Color c) { return c == in.colors[0]; });
-  const Color fill_color = uniform ? in.colors[0] : flat;
-  FillResult result;
+  const Color colour = uniform ? in.colors[0] : flat;
   SmallTriangle small;
-  if (opt.method == Method::halfspace) {
-    result = fill_halfspace(canvas, pts, in.colors, opt, flat);
-  } else if (triangle && (opt.shading == Shading::flat || uniform) &&
-             small_triangle(pts, box, area2 > 0, grid, canvas.width(), canvas_rows(canvas),
-                            small)) {
-    result = detail::fill_small_triangle(canvas, small, fill_color, s.flat_row);
-  } else {
-    if (!triangle) s.table.build(pts, grid, opt.fill_rule);
-    if constexpr (kTriangleLevel)
-      if (traced) tracer.edge_table(EdgeTableView{in.face, &s.table, pts, grid});
-    RowTrace<Tracer> trace(tracer, s.trace, in.face, traced);
-    result = with_stepper(opt.method, [&]<class Stepper>() {
-      detail::ConvexRows<Stepper, C, Tracer> rule{
-          {canvas, in.colors, grid, opt, fill_color, trace}, uniform, s.flat_row};
-      if constexpr (DirectCanvas<C>)
-        if (opt.shading == Shading::flat || uniform) rule.flat_pixel = C::convert(fill_color);
-      if constexpr (std::is_same_v<Stepper, ExactStepper>)
-        if (triangle) {
-          sweep_triangle(pts, canvas_rows(canvas), grid, in.colors, s.active_exact, rule);
-          return rule.result();
-        }
-      sweep_scanlines(s.table, canvas_rows(canvas), grid, in.colors, s.active<Stepper>(), rule);
-      return rule.result();
-    });
-  }
+  const detail::FillPath path = detail::choose_path(
+      canvas, p, opt, opt.shading == Shading::flat || uniform, traced, small);
+  FillResult result;
+  if (path == detail::FillPath::halfspace)
+    result = fill_halfspace(canvas, p.pts, in.colors, opt, flat);
+  else if (path == detail::FillPath::small_triangle)
+    result = fill_small_triangle(canvas, small, colour, s.flat_row);
+  else
+    result = detail::sweep_polygon(canvas, in, p, opt, s, tracer, path, colour, uniform, traced);
   if constexpr (kTriangleLevel)
     if (traced) tracer.triangle_end(in.face, result.rows, result.pixels);
   return result;

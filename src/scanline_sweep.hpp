@@ -42,8 +42,8 @@
 namespace scantrace {
 
 // Always inlined into its caller, together with the rule's run (scanline_fill.hpp): a small
-// triangle is one or two runs of a few rows, and as separate functions the sweep and the run cost
-// about 10 % of its fill in calls, spills and reloads (bench_kernels small_flat).
+// triangle is one or two runs of a few rows, and calls, spills and reloads between the sweep and
+// the run would cost a noticeable share of its fill (docs/performance.md, "Why the fast code looks as it does").
 template <class Stepper, class RowRule>
 [[gnu::always_inline]] inline void sweep_scanlines(const EdgeTable& table, RowBand band,
                                                    const SubpixelGrid& grid,

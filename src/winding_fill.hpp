@@ -70,7 +70,7 @@ struct WindingRows : RowRule<C, Tracer> {
       active.sort_by_x();
       ++rows;
       spans(y, active);
-      trace.end_row(y, active, colors, grid, gouraud, flat, true, false, Span{}, true);
+      trace.end_winding_row(y, active, PointColors{colors, grid, gouraud, flat});
       active.advance();
       if (y == last) return;
       trace.begin_row(y + 1);

@@ -18,7 +18,7 @@
 #include "canvas.hpp"
 #include "depth_plane.hpp"
 #include "depth_test.hpp"
-#include "depth_tiles.hpp"
+#include "fast/depth_tiles.hpp"
 #include "fixed_point.hpp"
 #include "vec2.hpp"
 

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstring>
 
-#include "src/flat_span.hpp"
+#include "src/fast/flat_span.hpp"
 #include "web/bindings.hpp"
 
 namespace scantrace::web {
@@ -18,7 +18,7 @@ Rgba8 bytes_of(const Rgb32f& p) { return {to_byte(p.r), to_byte(p.g), to_byte(p.
 
 // A span put back to the background: a few pixels stored, then copied after themselves in
 // doubling blocks. The copies are this file's own (internal linkage, compiled with -mbulk-memory:
-// memory.copy, web/CMakeLists.txt): src/flat_span.hpp's fill_pixels does the same, but the linker
+// memory.copy, web/CMakeLists.txt): src/fast/flat_span.hpp's fill_pixels does the same, but the linker
 // kept src/'s instance of that inline template, whose copies are calls to emscripten's __memcpy, a
 // loop in WebAssembly (0.4 ms of a drag's move in Chromium for the course triangle's 35,000
 // pixels, twice); a plain store loop was slower still there (0.5 ms).
@@ -66,7 +66,7 @@ RgbImage& TracedImage::canvas_for(int width, int height, const Color& background
     });
   } else {
     canvas_.reset(width, height, bg);
-    // The background by fill_pixels (src/flat_span.hpp): a few pixels, then copied onto the rest
+    // The background by fill_pixels (src/fast/flat_span.hpp): a few pixels, then copied onto the rest
     // in doubling blocks, which emscripten hands to the engine's own copy.
     rgba_.resize(w * static_cast<std::size_t>(height) * 4);
     auto* pixels = reinterpret_cast<Rgba8*>(rgba_.data());

@@ -9,6 +9,7 @@
 #endif
 
 #include "src/canvas.hpp"
+#include "src/fast/shaded_span.hpp"
 #include "src/image.hpp"
 
 namespace scantrace::python {

@@ -24,7 +24,7 @@
 #include "io/obj_loader.hpp"
 #include "io/png_writer.hpp"
 #include "io/scene_json.hpp"
-#include "src/occlusion_choice.hpp"
+#include "src/fast/occlusion_choice.hpp"
 #include "src/painter.hpp"
 #include "src/shade_mesh.hpp"
 #include "src/vector_interp.hpp"

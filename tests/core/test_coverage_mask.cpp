@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "src/coverage_mask.hpp"
+#include "src/fast/coverage_mask.hpp"
 #include "src/splitmix64.hpp"
 
 using scantrace::CoverageMask;

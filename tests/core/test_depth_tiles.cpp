@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "src/depth_plane.hpp"
-#include "src/depth_tiles.hpp"
+#include "src/fast/depth_tiles.hpp"
 #include "src/splitmix64.hpp"
 
 using namespace scantrace;

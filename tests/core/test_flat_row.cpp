@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "src/flat_span.hpp"
+#include "src/fast/flat_span.hpp"
 #include "src/splitmix64.hpp"
 
 using namespace scantrace;

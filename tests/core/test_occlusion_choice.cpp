@@ -6,7 +6,7 @@
 #include <tuple>
 #include <vector>
 
-#include "src/occlusion_choice.hpp"
+#include "src/fast/occlusion_choice.hpp"
 #include "src/painter.hpp"
 #include "src/splitmix64.hpp"
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "random.hpp"
-#include "src/flat_span.hpp"
-#include "src/occlusion_canvas.hpp"
+#include "src/fast/flat_span.hpp"
+#include "src/fast/occlusion_canvas.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The Gouraud span of 8-bit pixels: its SIMD kernel (src/shade_bytes_simd.cpp) gives exactly the
+// The Gouraud span of 8-bit pixels: its SIMD kernel (src/fast/shade_bytes_simd.cpp) gives exactly the
 // bytes of the fixed-point formula, computed here in 128-bit integers, with every Highway target's
 // kernel this CPU can run; and shade_bytes, whichever path a length takes, stays
 // within a rounding of the exact colours c + k·step.
@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "src/canvas.hpp"
+#include "src/fast/shade_bytes.hpp"
 
 using namespace scantrace;
 

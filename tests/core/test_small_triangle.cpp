@@ -1,4 +1,4 @@
-// The small-triangle spans (src/small_triangle.hpp): the half-space test in 32-bit SIMD lanes must
+// The small-triangle spans (src/fast/small_triangle.hpp): the half-space test in 32-bit SIMD lanes must
 // give every row exactly the pixels the exact reference covers, with every Highway target's
 // kernel this CPU can run, on every grid the fill supports — including boxes whose edge functions
 // come close to the 32-bit limit, where a set-up that let a larger triangle in would wrap around.
@@ -17,8 +17,8 @@
 #include "src/band_render.hpp"
 #include "src/fill_setup.hpp"
 #include "src/flat_color.hpp"
-#include "src/small_triangle.hpp"
-#include "src/small_triangle_batch.hpp"
+#include "src/fast/small_triangle.hpp"
+#include "src/fast/small_triangle_batch.hpp"
 
 using namespace scantrace;
 
@@ -216,7 +216,7 @@ bool scalar_takes(const std::array<Vec2, 3>& v, const SubpixelGrid& grid, const 
 
 }  // namespace
 
-// The batched set-up (src/small_triangle_batch.hpp) against the scalar one it stands in for, face
+// The batched set-up (src/fast/small_triangle_batch.hpp) against the scalar one it stands in for, face
 // by face: the same decision (fill_polygon's checks in its order: representable, a non-zero area,
 // not culled, a pixel of the canvas and band, small_triangle's limits), and for a face it takes
 // the same edge functions, box and flat colour, bit for bit, with every Highway target's kernel.

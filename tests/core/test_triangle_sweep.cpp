@@ -1,4 +1,4 @@
-// The triangle sweep (src/triangle_sweep.hpp) sets a triangle's two runs up without an edge
+// The triangle sweep (src/fast/triangle_sweep.hpp) sets a triangle's two runs up without an edge
 // table; the general sweep (src/scanline_sweep.hpp) builds the table and orders the active edges
 // by their exact crossings. The fill takes the triangle sweep for an untraced triangle and the
 // general one for a traced triangle, so a tracer that only asks for triangles makes the same fill

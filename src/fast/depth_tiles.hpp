@@ -7,7 +7,7 @@
 //
 // The bound is the largest depth ever written into the tile, not the largest stored now: a pixel
 // written again is written nearer, so the old bound still holds, and keeping it costs one max per
-// write where an exact maximum would rescan the tile. Drawing near to far (painter.hpp's
+// write where an exact maximum would rescan the tile. Drawing near to far (src/painter.hpp's
 // render_zbuffer_near_to_far) makes the first depth written to a pixel nearly always its last, so
 // the bound is tight where it matters.
 #include <algorithm>

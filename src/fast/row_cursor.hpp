@@ -3,16 +3,17 @@
 // far, the coverage mask's row (occlusion_canvas.hpp), each reached by stepping a pointer held in
 // a register. After a store through a byte pointer, canvas.row(y) would reload the image's address
 // and width, and fields of the canvas would be reloaded the same way, so a sweep keeps its cursor
-// in a local variable. The sweeps of scanline_fill.hpp (edge steppers, small triangles) share it.
+// in a local variable. The sweeps of src/scanline_fill.hpp (edge steppers, small triangles) share it.
 #include <cstddef>
 #include <cstdint>
 
-#include "canvas.hpp"
-#include "color.hpp"
+#include "src/canvas.hpp"
+#include "src/color.hpp"
 #include "coverage_mask.hpp"
-#include "fixed_point.hpp"
+#include "src/fixed_point.hpp"
 #include "flat_span.hpp"
 #include "occlusion_canvas.hpp"
+#include "shaded_span.hpp"
 
 namespace scantrace {
 
@@ -48,11 +49,9 @@ struct RowCursor {
                                         Color flat, int y, int xb, int xe) {
     if constexpr (CoverageCanvas<C>) {
       if (clip) {
-        // The run writer is inlined into claim()'s common case (a span in one word, all new).
-        // Called, it read the row's copy of the pixel just stored on the stack, in loads wider
-        // than the stores that wrote it (16 bytes over three 8-byte ones for a float64 pixel, 8
-        // over 4-byte ones for a float pixel), which the store buffer cannot forward: perf put
-        // 58% (float canvas) and 78% (float64) of the runs' samples on that load.
+        // The run writer is inlined into claim()'s common case (a span in one word, all new):
+        // called, it reads the pixel back from the stack in loads wider than the stores that
+        // wrote it, which cannot be forwarded (docs/performance.md, "Why the fast code looks as it does").
         const auto run = [&](int a, int b) __attribute__((always_inline)) {
           fill(flat_row, pixel, a, b);
         };
@@ -67,6 +66,34 @@ struct RowCursor {
     } else {
       canvas.fill_span(y, xb, xe, flat);
     }
+  }
+
+  // Pixels [xb, xe) of the current row := the exact method's Gouraud colours c, c + step, … in
+  // the canvas's pixel format (shaded_span.hpp); near to far only where no nearer face drew.
+  [[gnu::always_inline]] void shade(int xb, int xe, Color c, Color step) {
+    if constexpr (CoverageCanvas<C>) {
+      if (clip) {
+        ShadedSpan<DirectPixel<C>> part(xb, xe, c, step);
+        // Inlined as fill_flat's run writer is, for the same reason.
+        const auto run = [&](int a, int b) __attribute__((always_inline)) {
+          part.write(row, a, b);
+        };
+        claimed += CoverageMask::claim(cover, xb, xe, run);
+      } else {
+        CoverageMask::mark(cover, xb, xe);
+        claimed += xe - xb;
+        shade_pixels(row, xb, xe, c, step);
+      }
+    } else {
+      shade_pixels(row, xb, xe, c, step);
+    }
+  }
+
+  // Near to far: whether nearer faces already cover all of [xb, xe) of the current row, so that
+  // a Gouraud span there costs neither its colours nor a store. Never so on other canvases.
+  [[gnu::always_inline]] bool hidden(int xb, int xe) const {
+    if constexpr (CoverageCanvas<C>) return clip && CoverageMask::covered(cover, xb, xe);
+    return false;
   }
 
   // Pixels [xb, xe) of the row: most spans of a small triangle are a few pixels, stored here

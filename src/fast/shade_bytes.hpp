@@ -13,8 +13,8 @@
 #include <cstdint>
 #include <span>
 
-#include "color.hpp"
-#include "image.hpp"
+#include "src/color.hpp"
+#include "src/image.hpp"
 #include "simd_targets.hpp"
 
 namespace scantrace {
@@ -29,7 +29,7 @@ struct ByteRamp {
     return {a, n > 1 ? (b - a) / (n - 1) : 0};
   }
   // The same ramp begun k pixels later: pixel j of it is pixel k + j of this one, bit for bit
-  // (a span drawn in parts, canvas.hpp's ShadedSpan).
+  // (a span drawn in parts, src/canvas.hpp's ShadedSpan).
   ByteRamp skip(int k) const { return {start + k * step, step}; }
   std::uint8_t at(int k) const {
     return static_cast<std::uint8_t>((start + k * step + (std::int64_t{1} << 31)) >> 32);

@@ -37,7 +37,7 @@ class CoverageMask {
   // Visits the runs of pixels [x_begin, x_end) of `row` that are not covered yet, left to right,
   // as visit(a, b) for pixels [a, b), and marks the whole span covered. Returns the pixels
   // visited. The span must be non-empty and lie on the image. Inlined into the sweep: a call per
-  // span cost the 1200² mesh a third of its claims' instructions in saved registers alone.
+  // span would save and restore the sweep's registers around every claim.
   template <class Visit>
   [[gnu::always_inline]] static int claim(std::uint64_t* row, int x_begin, int x_end,
                                           Visit&& visit) {

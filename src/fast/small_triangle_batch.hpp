@@ -14,11 +14,11 @@
 #include <cstdint>
 #include <span>
 
-#include "color.hpp"
-#include "fill_options.hpp"
+#include "src/color.hpp"
+#include "src/fill_options.hpp"
 #include "simd_targets.hpp"
 #include "small_triangle.hpp"
-#include "vec2.hpp"
+#include "src/vec2.hpp"
 
 namespace scantrace {
 

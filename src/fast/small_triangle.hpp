@@ -6,7 +6,7 @@
 // pixels. Inside a small box the three edge functions of the half-space test are exact in 32 bits,
 // so a row's pixel centres can be tested all at once, one lane each: a centre is inside when the
 // three edge functions are positive there, or zero on an edge that owns its ties under the
-// top-left rule. That is the sweep's rule (halfspace_fill.hpp derives it), so each row gets the
+// top-left rule. That is the sweep's rule (src/halfspace_fill.hpp derives it), so each row gets the
 // same span, bit for bit: a convex triangle meets a row in one run, from its first inside lane to
 // its last. Only coverage comes from here; a Gouraud colour is the sweep's function of its edges'
 // crossings, so shaded triangles stay with the sweep.
@@ -18,10 +18,12 @@
 #include <cstdint>
 #include <span>
 
-#include "canvas.hpp"
-#include "fill_setup.hpp"
-#include "fixed_point.hpp"
+#include "row_cursor.hpp"
 #include "simd_targets.hpp"
+#include "src/canvas.hpp"
+#include "src/fill_result.hpp"
+#include "src/fill_setup.hpp"
+#include "src/fixed_point.hpp"
 
 namespace scantrace {
 
@@ -90,5 +92,32 @@ void small_triangle_spans(const SmallTriangle& t, RowSpan* out);
 using SmallTriangleFunction = void (*)(const SmallTriangle&, RowSpan*);
 // The kernels this CPU can run, best first (the first is small_triangle_spans's); tests run each.
 std::span<const SimdKernelOf<SmallTriangleFunction>> small_triangle_kernels();
+
+// A small triangle of one colour: its rows' spans from the SIMD kernel,
+// written as the convex rule writes a flat span, and the same counts.
+template <Canvas C>
+FillResult fill_small_triangle(C& canvas, const SmallTriangle& t, Color color, FlatRow& flat_row) {
+  // The pixel first, the spans after: the rows read the pixel from memory (RowCursor::fill_flat
+  // takes it by reference), and the kernel's call between its stores and their first load lets
+  // them reach the cache. Made after the kernel, the pixel would be loaded right after its
+  // stores in wider loads, which cannot be forwarded: a stall on every face (docs/performance.md, "Why the fast code looks as it does").
+  DirectPixel<C> pixel{};
+  if constexpr (DirectCanvas<C>) pixel = C::convert(color);
+  std::array<RowSpan, kSmallTriangleRows> spans;  // only rows [0, t.rows) are written and read
+  small_triangle_spans(t, spans.data());
+  RowCursor<C> at(canvas, t.row0);
+  i64 pixels = 0;
+  for (int r = 0;;) {
+    const RowSpan span = spans[r];
+    if (span.begin < span.end) {
+      at.fill_flat(canvas, flat_row, pixel, color, t.row0 + r, span.begin, span.end);
+      pixels += span.end - span.begin;
+    }
+    if (++r == t.rows) break;
+    at.next_row();
+  }
+  at.finish(canvas);
+  return {SkipReason::none, t.rows, pixels};
+}
 
 }  // namespace scantrace

@@ -5,12 +5,12 @@
 // bottom; the long edge runs from top to bottom down one side, and the other side is the edge
 // top → middle for the rows above the middle vertex and middle → bottom for the rows from it on.
 // Which side the long edge is on is the sign of one exact cross product. So the sweep of
-// scanline_sweep.hpp, which builds the table, lets edges enter and retire and orders them by
+// src/scanline_sweep.hpp, which builds the table, lets edges enter and retire and orders them by
 // their exact crossings on each row where the list changes, reaches the same two runs with the
 // same two edges on the same sides; here they are set up directly, which is most of the per-face
 // work of a small triangle (docs/performance.md, "A sweep for triangles").
 //
-// The rows and spans are the convex rule's (scanline_fill.hpp, ConvexRows::run), fed the same
+// The rows and spans are the convex rule's (src/scanline_fill.hpp, ConvexRows::run), fed the same
 // edges started at the same rows, so every pixel and colour is the general sweep's, bit for bit.
 // Only the exact method under the top-left rule takes this path: there each row has exactly two
 // active edges, whose order a cross product decides (the closed rule can add a third edge on a
@@ -19,12 +19,12 @@
 #include <span>
 #include <utility>
 
-#include "active_edge_list.hpp"
-#include "canvas.hpp"
-#include "color.hpp"
-#include "edge.hpp"
-#include "edge_stepper.hpp"
-#include "fixed_point.hpp"
+#include "src/active_edge_list.hpp"
+#include "src/canvas.hpp"
+#include "src/color.hpp"
+#include "src/edge.hpp"
+#include "src/edge_stepper.hpp"
+#include "src/fixed_point.hpp"
 
 namespace scantrace {
 

@@ -17,8 +17,7 @@ inline constexpr std::ptrdiff_t kShortSpan = 32;
 // both ends cover any length from 1 to 4 (0, n−1, n/2 and (n−1)/2 are inside the span and
 // between them every pixel), eight any length from 4 to 8. The length of a small triangle's
 // spans changes from row to row, so a store loop's exit is mispredicted on a large share of
-// rows (callgrind --branch-sim: 0.4 a row on the course scene), and a misprediction costs more
-// than the few stores written twice here. False, writing nothing, for a longer span.
+// rows, and a misprediction costs more than the few stores written twice here (docs/performance.md, "Why the fast code looks as it does"). False, writing nothing, for a longer span.
 template <class P>
 [[gnu::always_inline]] inline bool fill_few(P* first, P* last, P value) {
   const std::ptrdiff_t n = last - first;
@@ -67,8 +66,7 @@ class FlatRow {
     static_assert(std::is_trivially_copyable_v<P>);
     if (fill_few(first, last, value)) return;
     const std::ptrdiff_t n = last - first;
-    // fill_pixels's store loop, written out again: called from here it is not inlined, and a
-    // small flat triangle then costs 3,694 instructions instead of 3,512 (callgrind).
+    // fill_pixels's store loop, written out again: called from here it is not inlined.
     if (n <= kShortSpan) {
       for (; first != last; ++first) *first = value;
       return;

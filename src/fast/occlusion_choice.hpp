@@ -17,8 +17,8 @@
 // image, bit for bit.
 #include <vector>
 
-#include "fill_options.hpp"
-#include "scene.hpp"
+#include "src/fill_options.hpp"
+#include "src/scene.hpp"
 
 namespace scantrace {
 

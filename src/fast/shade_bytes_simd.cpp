@@ -11,12 +11,12 @@
 #include <vector>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "src/shade_bytes_simd.cpp"
+#define HWY_TARGET_INCLUDE "src/fast/shade_bytes_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "src/shade_bytes.hpp"
-#include "src/simd_targets.hpp"
+#include "src/fast/shade_bytes.hpp"
+#include "src/fast/simd_targets.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace scantrace {

@@ -14,12 +14,12 @@
 #include <vector>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "src/small_triangle_simd.cpp"
+#define HWY_TARGET_INCLUDE "src/fast/small_triangle_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "src/simd_targets.hpp"
-#include "src/small_triangle.hpp"
+#include "src/fast/simd_targets.hpp"
+#include "src/fast/small_triangle.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace scantrace {

@@ -1,8 +1,8 @@
 // The SIMD kernel of small_triangle_batch.hpp, compiled once per Highway target (foreach_target.h)
 // and chosen at run time for the CPU (simd_targets.hpp).
 //
-// Each step is the scalar set-up's (fill_setup.hpp, fixed_point.hpp, small_triangle.hpp,
-// flat_color.hpp) on a vector of faces, in doubles: snapping is floor(v) plus one where
+// Each step is the scalar set-up's (src/fill_setup.hpp, src/fixed_point.hpp, small_triangle.hpp,
+// src/flat_color.hpp) on a vector of faces, in doubles: snapping is floor(v) plus one where
 // v − floor(v) ≥ 1/2, a pixel bound is a power-of-two division rounded up, and the products of
 // the area, the bound and the edge functions stay below 2^53 on every lane that is kept. A lane
 // is kept only when every check of the scalar path passes; any other lane's values are not read.
@@ -12,13 +12,13 @@
 #include <vector>
 
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "src/small_triangle_batch_simd.cpp"
+#define HWY_TARGET_INCLUDE "src/fast/small_triangle_batch_simd.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
 #include "src/fixed_point.hpp"
-#include "src/simd_targets.hpp"
-#include "src/small_triangle_batch.hpp"
+#include "src/fast/simd_targets.hpp"
+#include "src/fast/small_triangle_batch.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace scantrace {
@@ -162,7 +162,7 @@ void SmallTriangleBatch(const TriangleBatch& in, const BatchTarget& bt, BatchSet
     V x[3], y[3];
     const M in_range = SnapVertices(in, j, t, x, y);
     const Box box = PixelBox(x, y, t);
-    // twice_area, non-zero, and culling on its sign (fill_options.hpp, Cull).
+    // twice_area, non-zero, and culling on its sign (src/fill_options.hpp, Cull).
     const auto area2 = hn::Sub(hn::Mul(hn::Sub(x[1], x[0]), hn::Sub(y[2], y[0])),
                                hn::Mul(hn::Sub(x[2], x[0]), hn::Sub(y[1], y[0])));
     const auto positive = hn::Gt(area2, zero);

@@ -1,5 +1,5 @@
 #pragma once
-// The canvas of the near-to-far render (painter.hpp): faces come nearest first, and each pixel
+// The canvas of the near-to-far render (src/painter.hpp): faces come nearest first, and each pixel
 // keeps the first colour written to it. That is the painter's image, without its overdraw: the
 // painter's order reversed (ties included, so equal depths keep the same winner) makes the face
 // that the painter would paint last the first one here.
@@ -15,13 +15,13 @@
 #include <cstdint>
 #include <span>
 
-#include "canvas.hpp"
+#include "src/canvas.hpp"
 #include "coverage_mask.hpp"
 
 namespace scantrace {
 
 // A canvas that writes a pixel only the first time: the fill clips its spans against it
-// (scanline_fill.hpp) and the render loop asks it to reject hidden faces (painter.hpp).
+// (src/scanline_fill.hpp) and the render loop asks it to reject hidden faces (src/painter.hpp).
 template <class C>
 concept CoverageCanvas = DirectCanvas<C> &&
     requires(C& c, int y, long long n, std::span<const Vec2> v) {
@@ -42,7 +42,7 @@ class OcclusionCanvas : public BandCanvas<P> {
   OcclusionCanvas(Image<P>& image, CoverageMask& mask, RowBand band)
       : BandCanvas<P>(image, band), mask_(mask) {}
 
-  // The sweep (scanline_fill.hpp) clips its spans against the mask's rows itself, with the
+  // The sweep (src/scanline_fill.hpp) clips its spans against the mask's rows itself, with the
   // CoverageMask's static functions, and reports the pixels it wrote.
   std::uint64_t* coverage_row(int y) { return mask_.row(y); }
   std::ptrdiff_t coverage_stride() const { return mask_.stride(); }
@@ -74,7 +74,7 @@ class OcclusionCanvas : public BandCanvas<P> {
   }
 
   // Decides how the next face is drawn from its vertices (before snapping): false when every
-  // pixel it could own in this band (face_pixels, canvas.hpp) is covered already, and it is not
+  // pixel it could own in this band (face_pixels, src/canvas.hpp) is covered already, and it is not
   // drawn at all; otherwise, whether its spans must be clipped (clipping()): a face whose box
   // nothing covers yet writes its spans whole and only marks them, which is all a scene that hides
   // nothing pays for the bookkeeping (a convex face owns each pixel once, so its own spans never

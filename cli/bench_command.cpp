@@ -532,8 +532,8 @@ std::vector<Workload> occlusion_scenes(const BenchRun& run) {
 void occlusion(BenchRun& run) {
   const std::vector<Workload> scenes = occlusion_scenes(run);
   std::printf(
-      "\n## Skipping what the scene hides (issue 19): near to far ÷ far to near, and the "
-      "default's choice\n\n"
+      "\n## Skipping what the scene hides (near to far, what nearer faces cover is never "
+      "drawn): near to far ÷ far to near, and the default's choice\n\n"
       "| workload | shading | image | far to near ms | near to far ms | ratio | default ms | "
       "default ÷ far to near | default chose | faces hidden | rejected before set-up | "
       "pixel writes clipped | identical |\n"

@@ -132,6 +132,24 @@ std::string key_hint(PlayerKey key) {
   throw std::logic_error("keys.json: the window has no key for its hint");
 }
 
+// A key's part while a row is typed after g (keys.json's row_entry, as every player reads it).
+enum class RowKey { none, character, go, erase, cancel };
+
+RowKey row_key(const std::string& name) {
+  static const std::map<std::string, RowKey> keys = [] {
+    const nlohmann::json table = nlohmann::json::parse(viz::web_player::keys_json)["row_entry"];
+    std::map<std::string, RowKey> out;
+    for (const auto& [part, key] : {std::pair{"characters", RowKey::character},
+                                    {"go", RowKey::go},
+                                    {"erase", RowKey::erase},
+                                    {"cancel", RowKey::cancel}})
+      for (const nlohmann::json& k : table.at(part)) out.emplace(k.get<std::string>(), key);
+    return out;
+  }();
+  const auto k = keys.find(name);
+  return k == keys.end() ? RowKey::none : k->second;
+}
+
 }  // namespace
 
 std::vector<std::string> key_help_lines() {
@@ -155,11 +173,7 @@ std::vector<std::string> key_help_lines() {
 PlayerKey decode_key(int code) {
   if (code < 0) return PlayerKey::none;
   const std::string name = key_name(code);
-  if (name == "Enter") return PlayerKey::enter;
-  if (name == "Backspace") return PlayerKey::backspace;
   if (const auto k = window_keys().find(name); k != window_keys().end()) return k->second;
-  if (name == "-") return PlayerKey::minus;
-  if (name.size() == 1 && name[0] >= '0' && name[0] <= '9') return PlayerKey::digit;
   return PlayerKey::none;
 }
 
@@ -192,30 +206,33 @@ void StepPlayer::show(std::size_t index) {
   index_ = std::min(index, steps() - 1);
 }
 
-// A key while a row number is typed after `g`: digits, '-', Backspace, then Enter goes to the
-// row (Esc cancels).
-void StepPlayer::row_entry_key(PlayerKey k, int code) {
-  switch (k) {
-    case PlayerKey::digit:
-      row_entry_->push_back(static_cast<char>(code & 0xff));
+// A key while a row number is typed after `g`: its part in keys.json's row_entry. A sign only
+// leads the number (from_chars reads no other), and the window's quit keys (q) cancel the row as
+// Esc does: they never quit mid-row.
+void StepPlayer::row_entry_key(int code) {
+  const std::string name = key_name(code);
+  switch (row_key(name)) {
+    case RowKey::character:
+      if (name != "-" || row_entry_->empty()) row_entry_->append(name);
       break;
-    case PlayerKey::minus:
-      if (row_entry_->empty()) row_entry_->push_back('-');
-      break;
-    case PlayerKey::backspace:
+    case RowKey::erase:
       if (!row_entry_->empty()) row_entry_->pop_back();
       break;
-    case PlayerKey::enter: {
+    case RowKey::go: {
       const std::string text = *row_entry_;
       row_entry_.reset();
       go_to_row(text);
       break;
     }
-    case PlayerKey::quit:
+    case RowKey::cancel:
       row_entry_.reset();
       message_.clear();
       break;
-    default:
+    case RowKey::none:
+      if (decode_key(code) == PlayerKey::quit) {
+        row_entry_.reset();
+        message_.clear();
+      }
       break;
   }
 }
@@ -257,11 +274,11 @@ void StepPlayer::toggle_rows() {
 }
 
 bool StepPlayer::key(int code) {
-  const PlayerKey k = decode_key(code);
   if (row_entry_) {
-    row_entry_key(k, code);
+    row_entry_key(code);
     return true;
   }
+  const PlayerKey k = decode_key(code);
   switch (k) {
     case PlayerKey::next:
       show(index_ + 1);

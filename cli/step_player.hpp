@@ -26,11 +26,7 @@ enum class PlayerKey {
   back10,
   first,
   last,
-  go_to_row,  // g: then digits and Enter
-  digit,
-  minus,
-  enter,
-  backspace,
+  go_to_row,  // g: then a row typed with keys.json's row_entry keys
   play,
   toggle_rows,
   save,
@@ -78,7 +74,7 @@ class StepPlayer {
   std::filesystem::path save();
 
  private:
-  void row_entry_key(PlayerKey k, int code);
+  void row_entry_key(int code);
   void go_to_row(const std::string& text);
   void toggle_rows();
   void rebuild(bool per_row);

@@ -18,6 +18,7 @@
 #include "src/option_table.hpp"
 #include "src/painter.hpp"
 #include "src/shade_mesh.hpp"
+#include "src/tracer.hpp"
 #include "web/call_status.hpp"
 
 namespace scantrace::web {
@@ -151,6 +152,12 @@ int subpixel_bits_option(const nlohmann::json& o) {
   return o["subpixel_bits"].get<int>();
 }
 
+template <class E>
+void add_table(nlohmann::json& out) {
+  const OptionTable<E>& t = option_table<E>();
+  out[t.key] = {{"names", t.names()}, {"default", t.default_name()}};
+}
+
 }  // namespace
 
 FillOptions fill_options(const nlohmann::json& o, bool model) {
@@ -195,6 +202,25 @@ EMSCRIPTEN_KEEPALIVE const std::uint8_t* st_result_bytes() { return web::result(
 EMSCRIPTEN_KEEPALIVE std::size_t st_result_bytes_size() { return web::result().bytes_out().size(); }
 EMSCRIPTEN_KEEPALIVE const char* st_error() { return web::result().error.c_str(); }
 EMSCRIPTEN_KEEPALIVE const char* st_warning() { return web::result().warning.c_str(); }
+
+// Every option table of src/option_table.hpp as JSON, by the table's key (as a trace header and
+// Python's option_names() key them): {"method": {"names": ["exact", ...], "default": "exact"},
+// ...}, so a page takes its choices and defaults from the tables the module parses them with.
+EMSCRIPTEN_KEEPALIVE const char* st_option_table() {
+  static const std::string text = [] {
+    nlohmann::json j = nlohmann::json::object();
+    web::add_table<Shading>(j);
+    web::add_table<FillRule>(j);
+    web::add_table<Method>(j);
+    web::add_table<WindingRule>(j);
+    web::add_table<Cull>(j);
+    web::add_table<Visibility>(j);
+    web::add_table<Occlusion>(j);
+    web::add_table<TraceLevel>(j);
+    return j.dump();
+  }();
+  return text.c_str();
+}
 
 // The scene file at `path` rendered as `scantrace render` renders it (one thread): the result's
 // bytes are RGBA, 8 bits a channel, converted by to_byte as the PNG writer converts; its text

@@ -69,7 +69,9 @@ std::optional<grade::DiffReport> precheck_against_scene(const char* path, const 
 
 extern "C" {
 
-// Why pixel (x, y) of the scene file at `path` has its colour: `scantrace why --json`'s document.
+// Why pixel (x, y) of the scene file at `path` has its colour: `scantrace why --json`'s document,
+// and as the result's bytes the command's text of the same story (PixelStory::to_text, UTF-8),
+// so a page shows the command's words without writing them again.
 // x and y come as doubles, so nothing is truncated on the way: 2^32 + 100, NaN or 100.9 are the
 // command's usage error, a pixel off the canvas its bad input.
 EMSCRIPTEN_KEEPALIVE int st_why(const char* path, double x_in, double y_in, const char* options_json) {
@@ -85,6 +87,8 @@ EMSCRIPTEN_KEEPALIVE int st_why(const char* path, double x_in, double y_in, cons
     const grade::PixelStory story =
         grade::why(scene, web::fill_options(o, is_obj_file(path)), x, y);
     web::result().text = story.to_json().dump(2) + "\n";
+    const std::string prose = story.to_text();
+    web::result().bytes.assign(prose.begin(), prose.end());
   });
 }
 

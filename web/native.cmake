@@ -55,8 +55,8 @@ if(SCANTRACE_BUILD_TESTS)
   # image against the scene's canvas (web/tests/node_arguments.mjs).
   add_node_command_test("web: node API checks its arguments as the command does" node_arguments
                         300 arguments)
-  # The API's option names: scantrace.d.ts's are the command's, and the module takes exactly them
-  # (web/tests/node_options.mjs).
+  # The API's option names: optionTable()'s are the command's, and the module and the explorer's
+  # address take exactly them (web/tests/node_options.mjs).
   add_node_command_test("web: node API takes exactly the option tables' names" node_options 120
                         options)
   # The trace page's module against the full one: its exports, its steps and frames
@@ -65,11 +65,11 @@ if(SCANTRACE_BUILD_TESTS)
            COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/node_player.mjs ${web_dir})
   set_tests_properties("web: node player module composes the full module's frames" PROPERTIES
                        LABELS "web" TIMEOUT 300)
-  # The explorer's answers in the command's words and number formats (web/tests/node_answers.mjs;
-  # plain JavaScript: no module needed).
-  add_test(NAME "web: explorer answers in the command's number formats"
+  # The explorer's answers in the command's words (web/tests/node_answers.mjs; plain JavaScript:
+  # no module needed).
+  add_test(NAME "web: explorer answers in the command's words"
            COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/node_answers.mjs)
-  set_tests_properties("web: explorer answers in the command's number formats" PROPERTIES
+  set_tests_properties("web: explorer answers in the command's words" PROPERTIES
                        LABELS "web" TIMEOUT 60)
 endif()
 

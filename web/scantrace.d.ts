@@ -3,21 +3,26 @@
 /** JSON text of a scene file, a parsed scene object, or a named file (".obj": a model). */
 export type SceneInput = string | object | { name: string; data: string | Uint8Array };
 
-/** The CLI's fill flags, same names and values (missing: the CLI's defaults). The names are the
- * option tables' (src/option_table.hpp); web/tests/node_options.mjs holds these lists to them. */
+/** The CLI's fill flags, same names and values (missing: the CLI's defaults). Each option's
+ * names are those of its table in src/option_table.hpp, which the module parses them with; read
+ * them, and the defaults, at run time from Scantrace.optionTable() (winding: winding_rule's
+ * names, depth: visibility's). They are typed as strings rather than a union of names written
+ * here, so a name is spelled only in that table; web/tests/node_options.mjs holds
+ * optionTable() to the command's choices. */
 export interface FillOptions {
-  shading?: 'flat' | 'gouraud';
-  fill_rule?: 'top-left' | 'closed';
+  shading?: string;
+  fill_rule?: string;
   subpixel_bits?: number;
-  method?: 'exact' | 'float' | 'double' | 'halfspace';
-  winding?: 'even-odd' | 'non-zero';
-  cull?: 'none' | 'back' | 'front';
-  depth?: 'painter' | 'zbuffer';
+  method?: string;
+  winding?: string;
+  cull?: string;
+  depth?: string;
   clamp_colors?: boolean;
 }
 
 export interface TraceOptions extends FillOptions {
-  level?: 'triangle' | 'scanline' | 'pixel';
+  /** One of optionTable().level.names. */
+  level?: string;
   triangles?: number[];
   max_events?: number;
   /** Record the trace in memory and keep it for frames(null, …) (the same events and text). */
@@ -29,7 +34,12 @@ export interface TraceOptions extends FillOptions {
   max_bytes?: number;
 }
 
-/** What keptStep gives of one step of the kept trace. */
+/** One option's table (src/option_table.hpp): its names, in the command's order, and its default. */
+export interface OptionTableEntry {
+  names: string[];
+  default: string;
+}
+
 export interface KeptStep {
   /** The kept trace's event count. */
   events: number;
@@ -144,6 +154,11 @@ export class Scantrace {
   /** `scantrace why SCENE X Y --json`'s document (trace/why_schema.json). */
   /** x, y: integers on the canvas (checked as `scantrace why` checks X and Y). */
   why(scene: SceneInput, x: number, y: number, options?: FillOptions): Record<string, unknown>;
+  /** After why: `scantrace why`'s text (without --json) of the same story, made by the module. */
+  lastWhyText: string | null;
+  /** Each option's table by its key: shading, fill_rule, method, winding_rule, cull, visibility,
+   * occlusion, level. */
+  optionTable(): Record<string, OptionTableEntry>;
   /** drawScantraceFrame's JavaScript source (viz/frame_json.hpp). */
   canvasScript(): string;
   /** The built-in demo scene (`scantrace demo`'s demo_scene.json) as scene JSON text. */

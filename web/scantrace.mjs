@@ -162,6 +162,9 @@ export class Scantrace {
     this.printErr = printErr;
     // The warning of the last call (a trace its byte cap cut: the command's line), or null.
     this.lastWarning = null;
+    // The command's text of the last why's story (why()), or null.
+    this.lastWhyText = null;
+    this._options = null; // optionTable()'s JSON, read once
     // Inputs are written to /in and named relative to it, so a message names the file as the
     // caller named it ("scene.json: …"), as the CLI names a file given relative to its directory.
     this.m.FS.mkdirTree('/in');
@@ -306,11 +309,23 @@ export class Scantrace {
     return out;
   }
 
-  // `scantrace why SCENE X Y --json`'s document.
+  // `scantrace why SCENE X Y --json`'s document; lastWhyText the command's text of it (without
+  // --json), made by the module from the same story.
   why(scene, x, y, options = {}) {
     // Doubles to the module (no `| 0`), checked here and there as the command checks them.
     const px = pixelCoordinate(x, 'X'), py = pixelCoordinate(y, 'Y');
-    return JSON.parse(this._call('why', [this._sceneFile(scene), px, py, checkOptions(options)]).text());
+    this.lastWhyText = null;
+    const r = this._call('why', [this._sceneFile(scene), px, py, checkOptions(options)]);
+    this.lastWhyText = decoder.decode(r.bytes());
+    return JSON.parse(r.text());
+  }
+
+  // Each option's names and default, by the key of its table (src/option_table.hpp: shading,
+  // fill_rule, method, winding_rule, cull, visibility, occlusion, level): the names the calls'
+  // options take (`winding` takes winding_rule's, `depth` visibility's).
+  optionTable() {
+    if (!this._options) this._options = JSON.parse(this.m.UTF8ToString(this.m._st_option_table()));
+    return structuredClone(this._options);
   }
 
   // drawScantraceFrame's JavaScript source (viz/frame_json.hpp).
@@ -376,7 +391,7 @@ export class Scantrace {
 }
 
 // Every call of the API throws ScantraceError and nothing else (asScantraceError).
-for (const name of ['render', 'traceText', 'trace', 'keptStep', 'frames', 'why', 'canvasScript', 'demoScene', 'checkImage', 'diff']) {
+for (const name of ['render', 'traceText', 'trace', 'keptStep', 'frames', 'why', 'optionTable', 'canvasScript', 'demoScene', 'checkImage', 'diff']) {
   const call = Scantrace.prototype[name];
   Scantrace.prototype[name] = function (...args) {
     try {

@@ -66,8 +66,8 @@ def render_img(faces, vertices, vcolors, depth, shading):
 
     faces: K x 3 vertex indices (0-based). vertices: L x 2 ``[x, y]``. vcolors: L x 3 RGB in
     [0, 1]. depth: L (or L x 1), one depth per vertex. shading: ``'f'`` (flat) or ``'g'``
-    (Gouraud); ``'flat'`` and ``'gouraud'`` are accepted too, in any case (``'F'``,
-    ``'Flat'``). Note the course's order, faces first; :func:`render` takes vertices first (a
+    (Gouraud); the long names, ``flat`` and ``gouraud`` (the C++ option table's), are accepted
+    too, in any case (``'F'``, ``'Flat'``). Note the course's order, faces first; :func:`render` takes vertices first (a
     swap is named in the error).
 
     Painter's order: a face's depth is the mean of its vertex depths; the deepest is drawn
@@ -85,8 +85,8 @@ def render(vertices, faces, vcolors, depth, *, shading=SHADING, fill_rule=FILL_R
     """Renders a scene in painter's order and returns the image.
 
     vertices (L x 2), faces (K x 3), vcolors (L x 3), depth (L): as :func:`render_img`.
-    shading: ``'gouraud'``/``'g'`` or ``'flat'``/``'f'``. fill_rule: ``'top-left'`` (each pixel
-    of a mesh written once) or ``'closed'`` (every centre on the boundary too, as the course and
+    shading: the string ``gouraud``/``g`` or ``flat``/``f``. fill_rule: ``top-left`` (each pixel
+    of a mesh written once) or ``closed`` (every centre on the boundary too, as the course and
     OpenCV). size: ``(width, height)``; the image has shape ``(height, width, 3)``.
     background: RGB in [0, 1]. dtype: ``np.float64`` (default), ``np.float32`` (the C++ float
     canvas itself) or ``np.uint8`` (``round(255 c)``: the bytes of the command's PNG).

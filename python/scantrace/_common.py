@@ -10,6 +10,8 @@ from . import _scantrace
 # command line, the trace header and the JavaScript API also read there, spelled in one place.
 DEFAULT = _scantrace.option_defaults()
 SHADING, FILL_RULE = DEFAULT["shading"], DEFAULT["fill_rule"]
+# Each option's names by key, in the tables' order (the shadings: flat, then Gouraud).
+NAMES = _scantrace.option_names()
 
 
 def load_scene_file(path, shading):

@@ -321,6 +321,17 @@ def main():
                                          ((("Prior", 1),), 1, "PgUp"),
                                          ((("space", 2), ("n", 3)), 3, "space n"),
                                          ((("p", 2),), 2, "p"),
+                                         # The row's keys are keys.json's row_entry: Backspace
+                                         # erases, Esc cancels, and q cancels the row too
+                                         # (the window quits on it only when no row is typed).
+                                         ((("g", None), ("2", None), ("9", None),
+                                           ("BackSpace", None), ("7", None),
+                                           ("Return", 6 + 27 - 2)), 6 + 27 - 2,
+                                          "g 29 Backspace 7 Enter"),
+                                         ((("g", None), ("3", None), ("Escape", None),
+                                           ("g", None), ("4", None), ("q", None),
+                                           ("Left", 6 + 26 - 2)), 6 + 26 - 2,
+                                          "g 3 Esc, g 4 q, Left"),
                                          ((("g", None), ("1", None), ("5", None),
                                            ("Return", 6 + 15 - 2)), 6 + 15 - 2, "g 15 Enter")):
                 for key, step in keys:

@@ -1,98 +1,15 @@
 // The explorer's answers in prose (docs/web.md): a pixel's `why` as `scantrace why`'s own text
-// (grade/pixel_story.cpp's PixelStory::to_text, rebuilt here from the module's JSON, which is all
-// the module hands over), and a diff as its summary (grade/diff_report.cpp's to_markdown: the
+// (grade/pixel_story.cpp's PixelStory::to_text, which the module hands over with the story's JSON),
+// with its answer in front, and a diff as its summary (grade/diff_report.cpp's to_markdown: the
 // verdict, the counts, the patterns) with the legend of the diff picture's colours
 // (grade/diff_picture.cpp's kCategoryColours). Names here are unique across the explorer's
 // modules: make_page.mjs puts them all in one scope.
 
-// fmt's {:.4f} and {:.6g} (printf's %.4f and %.6g), as the command writes its numbers: rounded
-// from the double's exact decimal digits, a tie to even (254.0625 is 254.062; JavaScript's
-// toFixed and toPrecision round a tie up).
-function roundedDigits(a, p) {
-  // a > 0: its first p significant digits, rounded, and the exponent of the first.
-  const [m, power] = a.toExponential(Math.min(100, p + 25)).split('e');
-  const all = m.replace('.', '');
-  const d = all.slice(0, p).split('').map(Number);
-  const rest = all.slice(p);
-  let e = Number(power);
-  if (rest[0] > '5' || (rest[0] === '5' && (/[1-9]/.test(rest.slice(1)) || d[p - 1] % 2 === 1))) {
-    let i = p - 1;
-    while (i >= 0 && d[i] === 9) d[i--] = 0;
-    if (i < 0) {
-      d.unshift(1);
-      d.pop();
-      ++e;
-    } else ++d[i];
-  }
-  return [d.join(''), e];
-}
-const signOf = (v) => (v < 0 || Object.is(v, -0) ? '-' : '');
-function fixed4(v) {
-  const a = Math.abs(v);
-  const e0 = a === 0 ? -99 : Number(a.toExponential(25).split('e')[1]);
-  // The digits of a x 10^4 rounded to an integer (below 10^-5 it has none: 0, or 1 from 5e-5).
-  let n = a >= 5e-5 ? '1' : '0';
-  if (e0 >= -4) {
-    const [ds, e] = roundedDigits(a, e0 + 5);
-    n = ds + '0'.repeat(e - e0);
-  }
-  n = n.padStart(5, '0');
-  return `${signOf(v)}${n.slice(0, -4)}.${n.slice(-4)}`;
-}
-export function general6(v) {
-  const a = Math.abs(v);
-  if (a === 0) return `${signOf(v)}0`;
-  const [ds, e] = roundedDigits(a, 6);
-  const trim = (f) => f.replace(/0+$/, '');
-  let body;
-  if (e < -4 || e >= 6) {
-    const frac = trim(ds.slice(1));
-    body = `${ds[0]}${frac ? '.' + frac : ''}e${e < 0 ? '-' : '+'}${String(Math.abs(e)).padStart(2, '0')}`;
-  } else {
-    const whole = e >= 0 ? ds.slice(0, e + 1) : '0';
-    const frac = trim(e >= 0 ? ds.slice(e + 1) : '0'.repeat(-e - 1) + ds);
-    body = frac ? `${whole}.${frac}` : whole;
-  }
-  return signOf(v) + body;
-}
-const rgbText = (c) => `(${c.map(fixed4).join(', ')})`;
-
-// The sentence of one face: what the fill did about pixel (x, y) (face_sentence).
-function whyFaceSentence(f, x, y, gouraud) {
-  const out = `face ${f.face} (depth ${general6(f.depth)}): `;
-  if (f.outcome === 'skipped') return `${out}skipped by the fill (${f.reason})`;
-  const [first, last] = f.rows || [0, -1];
-  if (f.outcome === 'row_outside')
-    return `${out}does not cover it: row ${y} is not among its scanlines ${first}..${last} (ceil(y_min) .. ceil(y_max) - 1)`;
-  const pts = f.active_points || [];
-  const l = pts[0], r = pts[pts.length - 1];
-  const row = pts.length >= 2 ? `row ${y} has active points x_L = ${general6(l.x)} (edge ${l.edge}) and x_R = ${general6(r.x)} (edge ${r.edge})` : '';
-  const span = f.span ? `span ${f.span.x_begin}..${f.span.x_end - 1}` : 'an empty span';
-  if (f.outcome === 'left_of_span' || f.outcome === 'right_of_span')
-    return `${out}does not cover it: ${row}, ${span} (ceil(x_L) .. ceil(x_R) - 1); x = ${x} is ${f.outcome === 'left_of_span' ? 'left' : 'right'} of it`;
-  if (f.outcome !== 'written' && f.outcome !== 'depth_rejected') return out;
-  let text = `${out}covers it: ${row}, ${span}; `;
-  text += gouraud && pts.length >= 2
-    ? `Gouraud: edge colours ${rgbText(l.color)} and ${rgbText(r.color)}, t = ${general6(f.t)} along the span gives ${rgbText(f.color)}`
-    : `flat colour (the mean of the vertex colours) ${rgbText(f.color)}`;
-  const d = f.depth_test;
-  if (!d) return `${text}; written`;
-  const stored = d.stored === undefined ? 'empty' : general6(d.stored);
-  return `${text}; depth test: depth ${general6(d.depth)} vs stored ${stored}: ${d.passed ? 'passes, written' : 'fails, not written'}`;
-}
-
-// The answer first (the final colour and who wrote it), then `scantrace why`'s text.
-export function whyProse(story) {
+// The answer first (the final colour and who wrote it, the text's last line), then the text:
+// `scantrace why`'s own words, which the module made of the same story (lastWhyText).
+export function whyProse(story, text) {
   const [x, y] = story.pixel;
-  const fin = story.final;
-  const final = `final colour ${rgbText(fin.color)}${fin.face === null ? ', the background (no face wrote it)' : `, written by face ${fin.face}`}`;
-  let text = `pixel (${x}, ${y}) of the ${story.canvas.width}x${story.canvas.height} canvas (${story.shading}, ${story.fill_rule} rule, ${story.visibility}):\n`;
-  if (!story.faces.length) text += "  no face's bounding box holds its centre\n";
-  story.faces.forEach((f, i) => {
-    text += `  ${i + 1}. ${whyFaceSentence(f, x, y, story.shading === 'gouraud')}\n`;
-  });
-  for (const n of story.notes) text += `  note: ${n}\n`;
-  text += `  ${final}\n`;
+  const final = text.trimEnd().split('\n').pop().trim();
   return { answer: `Pixel (${x}, ${y}): ${final}.`, text };
 }
 

@@ -3,19 +3,19 @@
 // dropped), the address and presentation mode change the state (state.js) and run the model;
 // the player's keys are controls.js's. The explorer's modules share one scope in the page
 // (make_page.mjs): names are unique across them.
-import { ex, fillOptions, frameSize, fromHash, fromHex, recompute, setStep, toHash, toHex, triangleScene, vertices } from './state.js';
+import { ex, fillOptions, frameSize, fromHash, fromHex, namedOptions, recompute, setStep, toHash, toHex, triangleScene, vertices } from './state.js';
 import { $, canvasPerCss, drawGrid, fitView, pixelAt, placeFill, redraw, showDiff, showError, showWhy, toCanvas, toScreen } from './view.js';
 import { bindPlayer } from './controls.js';
 
 export function why(x, y) {
   ex.marked = [x, y];
   if (ex.s.mode === 'polygon') {
-    showWhy(null, '(why answers for a triangle or a scene: the pixel\u2019s spans are in the trace)');
+    showWhy(null, '', '(why answers for a triangle or a scene: the pixel\u2019s spans are in the trace)');
     return redraw();
   }
   try {
     const story = ex.st.why(ex.s.mode === 'triangle' ? ex.sceneObj : ex.scene, x, y, fillOptions());
-    showWhy(story);
+    showWhy(story, ex.st.lastWhyText);
     $('why').dataset.pixel = `${x},${y}`;
   } catch (e) {
     showError(e);
@@ -126,6 +126,8 @@ export function bindPointer() {
 
 export function bindOption(id, key, parse = (v) => v) {
   const el = $(id);
+  // A named option's choices are its table's names, as the module gives them (state.js).
+  if (key in namedOptions) el.replaceChildren(...ex.st.optionTable()[namedOptions[key]].names.map((n) => new Option(n)));
   el.value = String(ex.s[key]);
   el.addEventListener('change', () => {
     ex.s[key] = parse(el.value);

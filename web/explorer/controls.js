@@ -124,7 +124,7 @@ function bindGoto(p) {
     else byId('link-status').textContent = `no step of row ${input.value}`;
   });
   input.addEventListener('keydown', (e) => {
-    if (explorerKeys.action(e) === 'close') close();
+    if (explorerKeys.rowKey(e.key) === 'cancel') close();
   });
 }
 

@@ -6,22 +6,23 @@
 // explorer's modules share one scope in the page (make_page.mjs): names are unique across them.
 import { putFill, redraw, show, showError } from './view.js';
 
+// The state's defaults; the fill options' (namedOptions) are the module's option tables'.
 export const defaults = {
   mode: 'triangle',
   triangle: [[20, 20], [250, 80], [300, 400]],
   // Polygon mode: one closed contour (a star: it crosses itself, so the winding rule shows).
   polygon: [[256, 40], [380, 440], [60, 190], [450, 190], [130, 440]],
-  winding: 'even-odd',
   colors: [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
   size: [512, 512],
-  shading: 'gouraud',
-  fill_rule: 'top-left',
   subpixel_bits: 8,
-  method: 'exact',
   // Scanlines a step: 0 lets the composer choose (at most 40 scanline steps a triangle).
   rows_per_step: 0,
   step: 0,
 };
+
+// The state's named fill options, each the key of its table (src/option_table.hpp) as the
+// module's optionTable() gives it: their names and defaults are the tables', spelled only there.
+export const namedOptions = { shading: 'shading', fill_rule: 'fill_rule', method: 'method', winding: 'winding_rule' };
 
 const hex = (c) => '#' + c.map((v) => Math.round(v * 255).toString(16).padStart(2, '0')).join('');
 export const toHex = hex;
@@ -43,9 +44,14 @@ export function toHash(s) {
 }
 
 // The state in `hash`, each value checked; what is missing or malformed keeps its default.
-export function fromHash(hash) {
+// `table`: the module's optionTable(), the named options' names and defaults.
+export function fromHash(hash, table = ex.st.optionTable()) {
   const s = structuredClone(defaults);
   const p = new URLSearchParams(hash.replace(/^#/, ''));
+  for (const [key, tableKey] of Object.entries(namedOptions)) {
+    const { names, default: fallback } = table[tableKey];
+    s[key] = names.includes(p.get(key)) ? p.get(key) : fallback;
+  }
   const num = (t) => (/^-?\d+(\.\d+)?(e-?\d+)?$/i.test(t) ? Number(t) : NaN);
   if (p.has('triangle')) {
     const v = p.get('triangle').split(';').map((xy) => xy.split(',').map(num));
@@ -58,7 +64,6 @@ export function fromHash(hash) {
       s.mode = 'polygon';
     }
   }
-  if (['even-odd', 'non-zero'].includes(p.get('winding'))) s.winding = p.get('winding');
   if (p.has('scene')) {
     s.mode = 'scene';
     s.sceneName = p.get('scene');
@@ -71,9 +76,6 @@ export function fromHash(hash) {
     const m = /^(\d+)x(\d+)$/.exec(p.get('size'));
     if (m && +m[1] > 0 && +m[2] > 0 && +m[1] <= 4096 && +m[2] <= 4096) s.size = [+m[1], +m[2]];
   }
-  if (['flat', 'gouraud'].includes(p.get('shading'))) s.shading = p.get('shading');
-  if (['top-left', 'closed'].includes(p.get('fill_rule'))) s.fill_rule = p.get('fill_rule');
-  if (['exact', 'float', 'double', 'halfspace'].includes(p.get('method'))) s.method = p.get('method');
   const bits = num(p.get('subpixel_bits') || '');
   if (Number.isInteger(bits) && bits >= 0 && bits <= 12) s.subpixel_bits = bits;
   const rows = num(p.get('rows') || '');

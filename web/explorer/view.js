@@ -216,8 +216,9 @@ export function gridLabel() {
   return `the pixel grid: ${what}, ${size.join(' by ')} pixels${ex.marked ? `, pixel (${ex.marked.join(', ')}) marked` : ''}`;
 }
 
-export function showWhy(story, note = '') {
-  const prose = story ? whyProse(story) : { answer: note, text: '' };
+// story: the module's why document, text its lastWhyText; none: `note` alone.
+export function showWhy(story, text = '', note = '') {
+  const prose = story ? whyProse(story, text) : { answer: note, text: '' };
   $('why-answer').textContent = prose.answer;
   $('why').textContent = prose.text;
   $('why').hidden = !story;

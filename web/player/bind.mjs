@@ -33,7 +33,7 @@ export function bindPlayer(s, o) {
   o.scope.addEventListener('keydown', (e) => {
     if (controlsKey(e)) return;
     const typing = s.typingRow;
-    if (typing ? !s.typeRow(e.key) : !act(o.keys.action(e))) return;
+    if (typing ? !s.typeRow(o.keys.rowKey(e.key), e.key) : !act(o.keys.action(e))) return;
     e.preventDefault();
     e.stopPropagation();
   }, true);

@@ -94,14 +94,16 @@ function rowTyping(stepper, go, say) {
     go(i);
     say(`scanline ${row}`);
   }
-  // A key while a row is typed after g: digits and '-', Backspace, Enter goes, Esc cancels.
-  function type(key) {
-    if (/^[0-9-]$/.test(key)) entry += key;
-    else if (key === 'Backspace') entry = entry.slice(0, -1);
-    else if (key === 'Enter' || key === 'Escape') {
+  // A key while a row is typed after g, and its part there (keys.json's row_entry, as the
+  // player's keys give it: rowKey): a character is added, erase drops the last, go goes, cancel
+  // leaves the row; false for a key of no part.
+  function type(role, key) {
+    if (role === 'characters') entry += key;
+    else if (role === 'erase') entry = entry.slice(0, -1);
+    else if (role === 'go' || role === 'cancel') {
       const text = entry;
       entry = null;
-      if (key === 'Enter' && text) goTo(text);
+      if (role === 'go' && text) goTo(text);
       else say('');
       return true;
     } else return false;

@@ -12,7 +12,11 @@ export function playerKeys(table, player) {
   const actions = table.actions.filter((a) => a.in.includes(player));
   const byKey = new Map();
   for (const a of actions) for (const k of a.keys) if (!byKey.has(k)) byKey.set(k, a.action);
+  // A key's part in typing a row after g: 'characters', 'go', 'erase', 'cancel' (table.row_entry).
+  const rowRoles = new Map(Object.entries(table.row_entry).flatMap(([role, keys]) => keys.map((k) => [k, role])));
   return {
+    // The part of key name `key` while a row is typed, or null: the key does nothing then.
+    rowKey: (key) => rowRoles.get(key) || null,
     // The action of a keydown event, or null: keys with Ctrl, Alt or Meta are the browser's.
     action: (e) => (e.ctrlKey || e.altKey || e.metaKey ? null : byKey.get(e.key) || null),
     help: () => actions.filter((a) => a.action !== 'close').map((a) => [a.label, a.help]),

@@ -301,12 +301,14 @@ for (const [name, file] of scenes.filter(([n]) => n !== 'many_faces'))
     assert.deepStrictEqual(st.trace({ scene: { name: path.basename(file), data: fs.readFileSync(file) } }, some), readJsonl(out));
   });
 
-// why: pixels of each scene (an edge, the middle, a corner).
+// why: pixels of each scene (an edge, the middle, a corner), as a document and as text.
 for (const [name, file] of scenes.filter(([n]) => n !== 'many_faces'))
   for (const [x, y] of [[0, 0], [200, 200], [256, 300], [511, 511]])
     check(`why ${name} ${x} ${y}`, () => {
       const want = JSON.parse(native(['why', file, String(x), String(y), '--json']));
       assert.deepStrictEqual(st.why({ name: path.basename(file), data: fs.readFileSync(file) }, x, y), want);
+      // The text the explorer shows: the command's own, without --json.
+      assert.strictEqual(st.lastWhyText, native(['why', file, String(x), String(y)]));
     });
 
 // diff: a student-style image of each scene (the render with the closed rule and whole pixels,

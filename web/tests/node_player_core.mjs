@@ -91,19 +91,27 @@ check('steps are clamped; ten at a time; first and last', () => {
 
 check('g, a row, Enter: the step of that scanline; Backspace, Esc; a row no step shows', () => {
   const { s, said } = stepper();
+  // A key as the page's keydown hands it over: with its part in the row from the key table.
+  const keys = playerKeys(table, 'trace');
+  const type = (k) => s.typeRow(keys.rowKey(k), k);
+  // The row's keys, as `scantrace step`'s are (written out here by hand).
+  for (const k of '0123456789-') assert.strictEqual(keys.rowKey(k), 'characters', k);
+  const parts = { Enter: 'go', Backspace: 'erase', Escape: 'cancel', x: null, q: null, '+': null, g: null };
+  for (const [k, part] of Object.entries(parts)) assert.strictEqual(keys.rowKey(k), part, k);
   s.act('go_to_row');
   assert.ok(s.typingRow);
-  for (const k of ['1', '9', 'Backspace', '7', 'Enter']) assert.ok(s.typeRow(k), k);
+  for (const k of ['1', '9', 'Backspace', '7', 'Enter']) assert.ok(type(k), k);
   assert.strictEqual(s.index, 4); // 17 is in 15..19
   assert.ok(!s.typingRow);
   assert.ok(said.includes('go to scanline: 17_'), JSON.stringify(said));
   s.act('go_to_row');
-  assert.ok(!s.typeRow('x'), 'a letter is not a row');
-  s.typeRow('3');
-  s.typeRow('Escape');
+  assert.ok(!type('x'), 'a letter is not a row');
+  type('3');
+  type('Escape');
+  assert.ok(!s.typingRow);
   assert.strictEqual(s.index, 4);
   s.act('go_to_row');
-  for (const k of ['4', '0', 'Enter']) s.typeRow(k);
+  for (const k of ['4', '0', 'Enter']) type(k);
   assert.strictEqual(s.index, 4);
   assert.strictEqual(said.at(-1), 'no step shows scanline 40');
   s.goToRow('5');

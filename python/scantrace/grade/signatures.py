@@ -6,12 +6,15 @@ harness (harness._adapted), described by the JSON-able dict built here.
 The 2024 course: vector_interp(p1, p2, V1, V2, coord, dim), f_shading(img, vertices, vcolors),
 g_shading(img, vertices, vcolors), render_img(faces, vertices, vcolors, depth, shading) with
 shading 'f' / 'g'. Earlier years asked for interpolate_vectors(p1, p2, V1, V2, xy, dim),
-shade_triangle(img, verts2d, vcolors, shade_t) with shade_t 'flat' / 'gouraud', and
+shade_triangle(img, verts2d, vcolors, shade_t) with shade_t the shadings' long names (flat,
+Gouraud: the names of the C++ option table, SHADING_NAMES), and
 render(verts2d, faces, vcolors, depth, shade_t); students also add a canvas parameter to
 render_img, or name the flat fill `flats`.
 """
 
 import ast
+
+from .._common import NAMES
 
 COURSE = {
     "vector_interp": ("p1", "p2", "V1", "V2", "coord", "dim"),
@@ -47,12 +50,15 @@ ROLE_NAMES = {
     "dim": {"dim", "dimension", "axis", "d"},
 }
 CANVAS = [512, 512, 3]
+# The shadings' names by the course's letter ('f', 'g'), the first of each name: the names are the
+# C++ option table's (src/option_table.hpp), which the package's shading argument also takes.
+SHADING_NAMES = {name[0]: name for name in NAMES["shading"]}
 
 
 def compared_strings(tree):
-    """The string constants a module compares with (`shading == 'flat'`, `in ('f', 'F')`) or
-    looks up by (dict keys: `{'flat': f_shading, 'gouraud': g_shading}[shading]`), in lower
-    case: which shading values the submission expects."""
+    """The string constants a module compares with (`shading == 'f'`, `in ('f', 'F')`) or looks
+    up by (dict keys: `{'f': f_shading, 'g': g_shading}[shading]`), in lower case: which shading
+    values the submission expects."""
     found = set()
     for node in ast.walk(tree):
         if isinstance(node, ast.Compare):
@@ -70,10 +76,10 @@ def compared_strings(tree):
 
 
 def shading_values(strings):
-    """{'f': 'flat', 'g': 'gouraud'} when the submission compares with the long names and never
-    with the course's 'f' / 'g'; else None (the course's values)."""
-    if {"flat", "gouraud"} & strings and not {"f", "g"} & strings:
-        return {"f": "flat", "g": "gouraud"}
+    """SHADING_NAMES (each course letter's long name) when the submission compares with the long
+    names and never with the course's letters; else None (the course's values)."""
+    if set(SHADING_NAMES.values()) & strings and not set(SHADING_NAMES) & strings:
+        return dict(SHADING_NAMES)
     return None
 
 

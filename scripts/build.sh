@@ -30,8 +30,12 @@ if [ "$demo" = web ]; then
   # The compiler launcher comes from the environment (above). Debian's emscripten runs its tools
   # with node and Debian's node-acorn, which NodeSource's node does not look for (web/native.cmake).
   export NODE_PATH=/usr/share/nodejs
+  # The explorer's build, then the trace page's (-Oz), which writes into build/web/ too
+  # (web/CMakeLists.txt says why there are two).
   cmake --preset web
   cmake --build build/web -j"$(nproc)"
+  cmake --preset web-player
+  cmake --build --preset web-player -j"$(nproc)"
   exit 0
 fi
 # The options are always given: build/ is shared by both forms, and a demo build must not leave

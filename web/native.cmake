@@ -20,12 +20,22 @@ set(web_env NODE_PATH=/usr/share/nodejs)
 set(web_dir ${CMAKE_BINARY_DIR}/web)
 # Its own make, which does not share the outer one's job slots: as many jobs as cores.
 cmake_host_system_information(RESULT web_jobs QUERY NUMBER_OF_LOGICAL_CORES)
+# Two builds (web/CMakeLists.txt says why): the explorer's, then the trace page's, which writes
+# its module and page into the explorer's folder. The same settings as the presets `web` and
+# `web-player` (CMakePresets.json), which scripts/build.sh --web uses.
 add_custom_target(scantrace_web ALL
   COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} -S ${PROJECT_SOURCE_DIR} -B ${web_dir}
           -DCMAKE_TOOLCHAIN_FILE=${SCANTRACE_EMSCRIPTEN_TOOLCHAIN} -DCMAKE_BUILD_TYPE=Release
           -G "Unix Makefiles" --log-level=WARNING
   COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} --build ${web_dir} --parallel ${web_jobs}
-  COMMENT "WebAssembly build (emscripten) into ${web_dir}"
+  COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} -S ${PROJECT_SOURCE_DIR}
+          -B ${web_dir}-player -DCMAKE_TOOLCHAIN_FILE=${SCANTRACE_EMSCRIPTEN_TOOLCHAIN}
+          -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-Oz -DNDEBUG"
+          -DSCANTRACE_WEB_PLAYER_BUILD=ON -DSCANTRACE_WEB_OUTPUT_DIR=${web_dir}
+          -G "Unix Makefiles" --log-level=WARNING
+  COMMAND ${CMAKE_COMMAND} -E env ${web_env} ${CMAKE_COMMAND} --build ${web_dir}-player
+          --target scantrace_player_page --parallel ${web_jobs}
+  COMMENT "WebAssembly builds (emscripten) into ${web_dir} and ${web_dir}-player"
   USES_TERMINAL)
 
 if(SCANTRACE_BUILD_TESTS)
@@ -39,6 +49,13 @@ if(SCANTRACE_BUILD_TESTS)
                    -DCMAKE_BUILD_TYPE=Release -G "Unix Makefiles" --log-level=WARNING)
   set_tests_properties("web: every library source is built for the web or refused by a named option"
                        PROPERTIES LABELS "web" TIMEOUT 300)
+  # Each of the two WebAssembly builds compiles each file once (web/CMakeLists.txt), read from
+  # their compile_commands.json (web/tests/node_compile_once.mjs).
+  add_test(NAME "web: each WebAssembly build compiles each file once"
+           COMMAND ${SCANTRACE_NODE} ${PROJECT_SOURCE_DIR}/web/tests/node_compile_once.mjs
+                   ${web_dir} ${web_dir}-player)
+  set_tests_properties("web: each WebAssembly build compiles each file once"
+                       PROPERTIES LABELS "web" TIMEOUT 60)
   # A Node test of the module against the native command (its binary, a work folder and the demo
   # scene as arguments).
   function(add_node_command_test name script timeout)
